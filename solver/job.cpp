@@ -1,0 +1,37 @@
+// From a ModelConfig to a result: ground motion, model, run options, analysis.
+// Keeps parsing out of the physics: it only reads the plain config structs.
+#include "solver/job.h"
+
+#include "solver/building2d.h"
+
+namespace isopound {
+
+GroundMotion load_ground_motion(const GroundMotionConfig& config) {
+  if (config.use_pulse) {
+    GroundMotion pulse = make_pulse(config.pulse);
+    for (double& a : pulse.acceleration) a *= config.read.scale;
+    return pulse;
+  }
+  return read_record(config.record_path, config.read);
+}
+
+Model build_model(const ModelConfig& config) { return make_model(config.building); }
+
+RunOptions run_options(const ModelConfig& config) {
+  RunOptions options;
+  options.analysis = config.analysis;
+  options.output = config.output;
+  options.extra_time = config.ground_motion.extra_time;
+  return options;
+}
+
+JobResult run_job(const ModelConfig& config) {
+  JobResult job;
+  job.motion = load_ground_motion(config.ground_motion);
+  job.motion_peaks = peaks_of(job.motion);
+  job.model = build_model(config);
+  job.analysis = run_analysis(job.model, job.motion, run_options(config));
+  return job;
+}
+
+}  // namespace isopound

@@ -1,0 +1,19 @@
+// Output of a run: summary.json (peaks, energy, settings, statistics; SI, unit in each key),
+// histories.csv (one row per output time), and a short human-readable summary for the console.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include "solver/config.h"
+#include "solver/job.h"
+
+namespace isopound {
+
+nlohmann::json summary_json(const ModelConfig& config, const JobResult& job);
+void write_summary(const std::string& path, const ModelConfig& config, const JobResult& job);
+void write_histories(const std::string& path, const History& history);
+void print_summary(std::ostream& out, const ModelConfig& config, const JobResult& job);
+
+}  // namespace isopound

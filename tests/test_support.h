@@ -1,0 +1,39 @@
+// Test helpers shared by the suite: where ../shared lives, and skip-or-fail when it is absent.
+// Convention: ISOPOUND_SHARED overrides the location; ISOPOUND_REQUIRE_SHARED=1 (set by .ci/run)
+// turns a missing ../shared into a test failure instead of a skip.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace isopound::test {
+
+inline std::filesystem::path shared_dir() {
+  if (const char* env = std::getenv("ISOPOUND_SHARED")) return env;
+  return std::filesystem::path(ISOPOUND_SOURCE_DIR) / ".." / "shared";
+}
+
+inline std::filesystem::path records_dir() { return shared_dir() / "records"; }
+
+inline bool shared_required() {
+  const char* env = std::getenv("ISOPOUND_REQUIRE_SHARED");
+  return env != nullptr && std::string(env) != "" && std::string(env) != "0";
+}
+
+inline std::filesystem::path source_dir() { return ISOPOUND_SOURCE_DIR; }
+
+}  // namespace isopound::test
+
+// Use at the top of a test that needs ../shared/records.
+#define ISOPOUND_REQUIRE_RECORDS()                                                     \
+  do {                                                                                 \
+    if (!std::filesystem::exists(::isopound::test::records_dir())) {                   \
+      if (::isopound::test::shared_required())                                         \
+        FAIL() << "../shared/records is required (ISOPOUND_REQUIRE_SHARED) but absent: " \
+               << ::isopound::test::records_dir();                                     \
+      GTEST_SKIP() << "../shared/records absent: " << ::isopound::test::records_dir(); \
+    }                                                                                  \
+  } while (0)
