@@ -39,16 +39,15 @@ void update(Peak& peak, double value, double t) {
   }
 }
 
-// Ground acceleration on the refined grid: interval i, position pos out of `units`.
+// Ground acceleration at a fraction `frac` in [0, 1] of analysis interval `interval`.
 struct GroundSampler {
   const GroundMotion& motion;
   int per_sample;  // analysis intervals per record interval
-  long units;      // finest positions per analysis interval
 
-  double operator()(long interval, long pos) const {
+  double operator()(long interval, double frac_of_interval) const {
     long k = interval / per_sample;
-    long j = interval % per_sample;
-    double frac = (static_cast<double>(j) + static_cast<double>(pos) / units) / per_sample;
+    const long j = interval % per_sample;
+    double frac = (static_cast<double>(j) + frac_of_interval) / per_sample;
     if (frac >= 1.0) {
       ++k;
       frac = 0.0;
@@ -136,9 +135,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   const double H = motion.dt / per_sample;
   const double total = motion.duration() + options.extra_time;
   const long intervals = static_cast<long>(std::ceil(total / H - 1e-9));
-  const int max_level = adaptive ? cfg.max_halvings : 0;
-  const long units = 1L << max_level;
-  const GroundSampler ground{motion, per_sample, units};
+  const int max_level = cfg.max_halvings;
+  const GroundSampler ground{motion, per_sample};
 
   // Error scale per DOF: the weight of the DOF's mass times the tolerance (see newmark.h).
   Eigen::VectorXd force_scale(n);
@@ -156,7 +154,9 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     for (const auto& e : model.elements)
       for (int k = 0; k < e->output_count(); ++k)
         c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");
-    res.history.values.reserve(c.size() * static_cast<std::size_t>(total / out_interval + 2));
+    // Rows at most every output interval (and at most one per step); reserve a bounded guess.
+    const double rows = std::min(total / out_interval + 2.0, 2e6);
+    res.history.values.reserve(c.size() * static_cast<std::size_t>(rows));
   }
   double next_output = 0.0;
 
@@ -165,6 +165,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   const Eigen::VectorXd m_iota = model.mass * model.influence;
   double p_in_prev = 0.0, p_visc_prev = 0.0, p_elem_prev = 0.0;
   double e_in = 0.0, e_visc = 0.0, w_elem = 0.0, max_in = 0.0, max_err = 0.0;
+  double initial_energy = -1.0;  // kinetic + recoverable energy of the initial conditions
+  double stored_at_start = 0.0;  // element work is counted from 0, their energy from here
 
   auto record = [&](double t, double ag, double h) {
     const Eigen::VectorXd& u = stepper.u();
@@ -210,8 +212,12 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     en.elastic = strain + stored;
     en.viscous = e_visc;
     en.hysteretic = w_elem - stored;
-    en.error = e_in - (kinetic + strain + e_visc + w_elem);
-    max_in = std::max(max_in, std::abs(e_in));
+    if (initial_energy < 0) {
+      initial_energy = kinetic + strain + stored;
+      stored_at_start = stored;
+    }
+    en.error = e_in + initial_energy - (kinetic + strain + e_visc + w_elem) - stored_at_start;
+    max_in = std::max(max_in, std::abs(e_in) + initial_energy);
     max_err = std::max(max_err, std::abs(en.error));
 
     if (options.output.histories && t >= next_output - 1e-9 * out_interval) {
@@ -228,41 +234,121 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
   };
 
-  stepper.start(ground(0, 0));
-  record(0.0, ground(0, 0), 0.0);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  const auto initial = [&](const Eigen::VectorXd& x, const char* what) -> const Eigen::VectorXd& {
+    if (x.size() == 0) return zero;
+    if (x.size() != n)
+      throw std::invalid_argument(std::string("initial ") + what + " has " + std::to_string(x.size()) +
+                                  " entries for " + std::to_string(n) + " DOFs");
+    return x;
+  };
+  stepper.start(initial(options.initial_displacement, "displacement"),
+                initial(options.initial_velocity, "velocity"), ground(0, 0.0));
+  for (auto& e : model.elements) e->begin_step(0.0, false);
+  record(0.0, ground(0, 0.0), 0.0);
 
+  // Pseudocode of the stepping inside analysis interval i (position pos in [0, 1]):
+  //   h = H / 2^level, clipped to the interval end; try the step
+  //   not converged or local error > 1  -> halve (level + 1) and retry
+  //   an element reports an event at fraction theta of the step -> retry with theta h
+  //     (uncached K_hat), so that contact onset/separation falls on a step end
+  //   accept; refine while h exceeds an element's step limit; coarsen when the error is small
   RunStatistics& st = res.stats;
   st.min_step = H;
   int level = 0;
+  int settles_here = 0;
+  const auto restart_power = [&]() {
+    p_elem_prev = 0.0;
+    for (const auto& el : model.elements) p_elem_prev += el->power(stepper.v());
+  };
+  const double min_fraction = std::ldexp(1.0, -max_level);
+  const auto level_step = [&](int l) { return H * std::ldexp(1.0, -l); };
+  // Raises the level until the step respects every element's limit; returns the limit.
+  const auto refine_to_limit = [&]() {
+    double limit = 1e300;
+    for (const auto& e : model.elements) limit = std::min(limit, e->step_limit());
+    if (adaptive)
+      while (level < max_level && level_step(level) > limit) ++level;
+    return limit;
+  };
+  std::vector<double> event_theta(model.elements.size(), 1.0);
+  std::vector<char> settling(model.elements.size(), 0);
   for (long i = 0; i < intervals; ++i) {
-    long pos = 0;
-    while (pos < units) {
-      const long step_units = units >> level;
-      const double h = H / static_cast<double>(1L << level);
-      const double ag1 = ground(i, pos + step_units);
-      const StepOutcome out = stepper.try_step(h, ag1);
+    double pos = 0.0;
+    double forced = 0.0;  // > 0: the fraction of H of a step cut at an event
+    while (pos < 1.0) {
+      double frac = forced > 0 ? forced : std::ldexp(1.0, -level);
+      bool regular = forced == 0.0;
+      if (pos + frac > 1.0 - 1e-12 * frac) {
+        regular = regular && pos + frac == 1.0;
+        frac = 1.0 - pos;
+      }
+      const double h = frac * H;
+      const double ag1 = ground(i, pos + frac);
+      const bool at_event = forced > 0;
+      const StepOutcome out = stepper.try_step(h, ag1, regular, at_event);
       st.newton_iterations += out.iterations;
       const double err = adaptive && out.converged ? stepper.error_norm(force_scale) : 0.0;
       if (!out.converged || err > 1.0) {
-        if (level < max_level) {
+        // Error-based halving only when adaptive; a Newton failure (e.g. a contact switching
+        // inside the step) is retried with half the step in fixed stepping too.
+        const bool can_halve = frac > min_fraction * (1 + 1e-9);
+        if (can_halve && (adaptive || !out.converged)) {
           stepper.reject();
-          ++level;
+          if (forced > 0) forced *= 0.5; else ++level;
+          level = std::min(level, max_level);
           ++st.rejected_steps;
           continue;
         }
         if (!out.converged) {
           int dof = 0;
-          const double t = (static_cast<double>(i) + static_cast<double>(pos) / units) * H;
+          const double t = (static_cast<double>(i) + pos) * H;
           const std::string msg = divergence_message(model, stepper, t, h, out.iterations, dof);
           throw AnalysisError(t, model.dofs[dof].label, msg);
         }
       }
+      if (cfg.locate_events && !at_event) {
+        // Status changes of contacts (onset, separation) are made to fall on a step boundary,
+        // where the element switches and the stepper restarts from equilibrium:
+        //   event at the start (theta ~ 0): switch now, redo the step;
+        //   inside: redo the step cut to end there (status frozen), then switch;
+        //   at the end (theta ~ 1): redo the same step with the status frozen, then switch.
+        double theta = 1.0;
+        for (std::size_t k = 0; k < model.elements.size(); ++k) {
+          event_theta[k] = model.elements[k]->event_fraction();
+          theta = std::min(theta, event_theta[k]);
+        }
+        if (theta < 1.0) {
+          stepper.reject();
+          ++st.rejected_steps;
+          const double tol = 1e-4;
+          for (std::size_t k = 0; k < model.elements.size(); ++k)
+            settling[k] = event_theta[k] <= std::max(theta * (1.0 + 1e-12), theta < tol ? tol : 0.0);
+          if (theta < tol) {
+            bool jumped = false;
+            for (std::size_t k = 0; k < model.elements.size(); ++k)
+              if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
+            if (jumped) {
+              stepper.restart(ground(i, pos));
+              ++st.restarts;
+              restart_power();
+            }
+            refine_to_limit();
+            if (++settles_here > 4) throw AnalysisError((static_cast<double>(i) + pos) * H, "", "event loop: contact status does not settle");
+            continue;
+          }
+          forced = std::min(theta, 1.0) * frac;
+          continue;
+        }
+      }
+      settles_here = 0;
       stepper.accept();
-      pos += step_units;
+      forced = 0.0;
+      pos = pos + frac >= 1.0 - 1e-12 ? 1.0 : pos + frac;
       ++st.steps;
       st.min_step = std::min(st.min_step, h);
       st.max_step = std::max(st.max_step, h);
-      const double t = (static_cast<double>(i) + static_cast<double>(pos) / units) * H;
+      const double t = (static_cast<double>(i) + pos) * H;
       if (stepper.u().cwiseAbs().maxCoeff() > 1e3) {
         int dof = 0;
         stepper.u().cwiseAbs().maxCoeff(&dof);
@@ -272,13 +358,32 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
                                 "': displacement exceeds 1000 m. Hint: check the units of "
                                 "stiffnesses and masses, and the record's unit and scale.");
       }
-      record(t, ag1, h);
-      if (adaptive && level > 0 && err < 0.1 && pos % (2 * step_units) == 0) --level;
+      record(t, ag1, h);  // the step just taken, with the forces before any switch
+      if (at_event) {
+        // The step ended at an event: the elements switch status now; if a force jumped the
+        // stepper restarts from equilibrium and the power integrand restarts too.
+        bool jumped = false;
+        for (std::size_t k = 0; k < model.elements.size(); ++k)
+          if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
+        if (jumped) {
+          stepper.restart(ag1);
+          ++st.restarts;
+          restart_power();
+        }
+        refine_to_limit();  // a contact that just started wants its own step from the start
+      }
+      if (adaptive) {
+        const double limit = refine_to_limit();
+        if (level > 0 && err < 0.1 && level_step(level - 1) <= limit) --level;
+      } else {
+        level = 0;  // fixed stepping: back to the fixed step after a Newton-failure halving
+      }
     }
   }
 
   EnergyBalance& en = res.energy;
-  en.relative_error = en.input != 0 ? std::abs(en.error) / std::abs(en.input) : 0.0;
+  const double supplied = std::abs(en.input) + std::max(initial_energy, 0.0);
+  en.relative_error = supplied > 0 ? std::abs(en.error) / supplied : 0.0;
   en.max_relative_error = max_in > 0 ? max_err / max_in : 0.0;
   st.duration = static_cast<double>(intervals) * H;
   st.wall_seconds =

@@ -54,6 +54,7 @@ struct RunStatistics {
   long steps = 0;           // accepted steps
   long rejected_steps = 0;  // steps redone with half the size
   long newton_iterations = 0;
+  long restarts = 0;        // restarts from equilibrium after a force jump at an event
   double min_step = 0.0, max_step = 0.0;  // s
   double wall_seconds = 0.0;
   double duration = 0.0;  // s of analysed time
@@ -82,6 +83,9 @@ struct RunOptions {
   AnalysisConfig analysis;
   OutputConfig output;
   double extra_time = 0.0;  // s of free vibration after the record
+  // Initial displacements and velocities (relative to the ground); empty = at rest.
+  Eigen::VectorXd initial_displacement;
+  Eigen::VectorXd initial_velocity;
 };
 
 // Stories of every structure in the model, in order.
@@ -91,7 +95,7 @@ std::vector<Story> stories_of(const Model& model);
 // 0 if the model is a mechanism at rest.
 double shortest_period(Model& model);
 
-// Runs the analysis from rest. Throws AnalysisError if it diverges.
+// Runs the analysis (from rest unless initial conditions are given). Throws AnalysisError if it diverges.
 AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunOptions& options);
 
 }  // namespace isopound

@@ -18,9 +18,9 @@ struct BoucWenParameters {
 // increment dd it is an ODE in x = d/u_y. Each increment is split where z crosses 0 (the
 // branch of sgn(dd z) changes there) and integrated with the trapezoidal rule in x (second
 // order, implicit, solved by a safeguarded local Newton). Sub-increments keep
-// h |dPhi/dz| <= 1, which makes the trapezoidal map monotone, so |z| never overshoots its
-// saturation value (A/(beta+gamma))^(1/n) even for n = 100. The consistent tangent dz/dd is
-// propagated through the sub-increments by the chain rule.
+// h |dPhi/dz| <= 1/4, which makes the trapezoidal map monotone, so |z| never overshoots its
+// saturation value (A/(beta+gamma))^(1/n) even for n = 100. Sub-increments have a fixed size
+// plus a remainder, so z is continuous in dd; the consistent tangent is that of the remainder.
 class BoucWenMaterial final : public UniaxialMaterial {
  public:
   explicit BoucWenMaterial(const BoucWenParameters& p);
@@ -48,13 +48,18 @@ class BoucWenMaterial final : public UniaxialMaterial {
   double abs_pow_n(double z) const;  // |z|^n
   // Signed-length integration of dz/dx = A - c |z|^n from z_start over `length`.
   ZUpdate integrate_branch(double z_start, double length, double c) const;
-  double distance_to_zero(double abs_z) const;  // x to unload from |z| to 0
+  double distance_to_zero(double z0) const;  // x to unload from z0 to 0
+  // One trapezoidal sub-increment of signed size h on the branch c, from z with phi(z) known.
+  double trapezoid_step(double z, double phi_z, double h, double c, double bound_pow_n) const;
+  // Sub-increment size on branch c from z_start; sets the bound |z|^n on the path.
+  double subincrement(double z_start, double c, double& bound_pow_n) const;
 
   BoucWenParameters p_;
   double z_saturation_;  // (A / (beta + gamma))^(1/n)
+  double z_saturation_pow_n_;  // z_saturation_^n = A / (beta + gamma)
   int integer_n_;        // n if n is a small integer, else 0
   double d_ = 0.0, z_ = 0.0, dz_dx_;
-  double d_commit_ = 0.0, z_commit_ = 0.0;
+  double d_commit_ = 0.0, z_commit_ = 0.0, dz_dx_commit_;
 };
 
 }  // namespace isopound

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solver/ground_motion.h"
+#include "solver/impact_law.h"
 
 namespace isopound {
 
@@ -42,6 +43,21 @@ struct SuperstructureDamping {
   int mode_b = 2;
 };
 
+// Moat walls beside one level (usually the base slab). Sign convention: "right" is +x, so a
+// right wall is hit when the level moves by +gap, a left wall by -gap.
+struct WallConfig {
+  bool left = true, right = true;  // sides: both (default) | left | right
+  double gap_left = 0.2;   // m, clear distance at rest (>= 0)
+  double gap_right = 0.2;  // m
+  int level = 0;           // level index that pounds (0 = base slab of an isolated building)
+  ImpactLawConfig impact;  // law, k, e, ...; mass_2 is the wall mass below, mass_1 the level's
+  double mass = 500e3;     // kg, wall mass (thesis 500 t)
+  // Flexible wall: a single-DOF structure (mass, stiffness, damping ratio) excited by the same
+  // ground motion. stiffness = 0: rigid, immovable; its mass enters only the impact damping.
+  double stiffness = 0.0;      // N/m
+  double damping_ratio = 0.0;  // of the wall's own oscillator
+};
+
 // A 2D shear building: optional base slab on isolators, floors bottom to top.
 struct BuildingConfig {
   std::string name = "building";
@@ -51,6 +67,15 @@ struct BuildingConfig {
   IsolatorConfig isolator;
   SuperstructureDamping damping;
   double isolation_damping_ratio = 0.05;  // xi_b: c_b = 2 xi_b m_tot omega_b
+  std::vector<WallConfig> walls;          // moat walls (usually one entry, both sides)
+};
+
+// A neighbouring building at a gap; floors at equal elevation pound slab to slab.
+struct NeighbourConfig {
+  BuildingConfig building;
+  bool right = true;      // side of the main building it stands on (+x = right)
+  double gap = 0.1;       // m, clear distance at rest
+  ImpactLawConfig impact; // masses are taken from the two colliding levels
 };
 
 struct GroundMotionConfig {
@@ -72,6 +97,10 @@ struct AnalysisConfig {
   // Adaptive: local error tolerance (see THEORY-notes.md, "step control").
   double tolerance = 1e-3;
   int max_halvings = 16;              // smallest adaptive step = dt / 2^max_halvings
+  // During a contact the step is at most (contact period) / steps_per_contact, with the
+  // contact period pi sqrt(m_eff / k_tangent).
+  double steps_per_contact = 100.0;
+  bool locate_events = true;          // cut steps at contact onset / separation / phase change
   double newton_tolerance = 1e-9;     // relative residual, see newmark.h
   int max_iterations = 25;
 };
@@ -84,6 +113,7 @@ struct OutputConfig {
 struct ModelConfig {
   std::string source;  // the YAML file it came from (for messages)
   BuildingConfig building;
+  std::vector<NeighbourConfig> neighbours;
   GroundMotionConfig ground_motion;
   AnalysisConfig analysis;
   OutputConfig output;

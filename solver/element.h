@@ -25,6 +25,20 @@ class Element {
   virtual void commit() = 0;
   virtual void revert() = 0;
 
+  // Event handling (contacts). begin_step() tells the size of the step about to be tried;
+  // with freeze_status the element keeps its committed status (open/closed) through the trial:
+  // the step is one cut to end at an event, which settle_event() then applies.
+  virtual void begin_step(double /*h*/, bool /*freeze_status*/) {}
+  // After a converged trial: the fraction of the step in (0, 1) at which the element's first
+  // status change occurs (contact onset, separation, approach/restitution switch), or 1.
+  // The element remembers which event it was.
+  virtual double event_fraction() { return 1.0; }
+  // After the step cut at this element's event was accepted: switch status now. Returns true
+  // if the element's force jumped, so that the stepper must restart from equilibrium.
+  virtual bool settle_event() { return false; }
+  // Largest step this element wants next (s), e.g. a fraction of a contact period.
+  virtual double step_limit() const { return 1e300; }
+
   // Scalar outputs for histories and peaks (e.g. force, deformation, z).
   virtual int output_count() const = 0;
   virtual std::string output_name(int i) const = 0;  // e.g. "force", unit in output_unit

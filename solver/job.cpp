@@ -3,6 +3,7 @@
 #include "solver/job.h"
 
 #include "solver/building2d.h"
+#include "solver/pounding2d.h"
 
 namespace isopound {
 
@@ -15,7 +16,14 @@ GroundMotion load_ground_motion(const GroundMotionConfig& config) {
   return read_record(config.record_path, config.read);
 }
 
-Model build_model(const ModelConfig& config) { return make_model(config.building); }
+Model build_model(const ModelConfig& config) {
+  Model model = make_model(config.building);
+  const double per_contact = config.analysis.steps_per_contact;
+  add_walls(model, 0, config.building, per_contact);
+  for (const NeighbourConfig& n : config.neighbours)
+    add_neighbour(model, 0, config.building, n, per_contact);
+  return model;
+}
 
 RunOptions run_options(const ModelConfig& config) {
   RunOptions options;

@@ -11,6 +11,7 @@
 #include "solver/model_input.h"
 #include "solver/modes.h"
 #include "solver/report.h"
+#include "solver/study_cli.h"  // study commands (sweep, export)
 
 namespace fs = std::filesystem;
 using namespace isopound;
@@ -112,7 +113,10 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "Read and validate a model, run nothing");
   check->add_option("model", model_path, "Model file (YAML)")->required();
 
+  const StudyCommands study_commands = add_study_commands(app);  // study commands (sweep, export)
+
   CLI11_PARSE(app, argc, argv);
+  if (const auto code = run_study_command(study_commands)) return *code;  // study commands (sweep, export)
 
   try {
     if (*demo) return run_and_write(demo_config(), out_dir, false);

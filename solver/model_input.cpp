@@ -138,8 +138,85 @@ void read_damping(const InputNode& building, BuildingConfig& b) {
   if (modes) read_rayleigh_modes(*modes, floor_count, s);
 }
 
+// The impact-law keys shared by walls and neighbours (THEORY section 4).
+const std::vector<std::string_view> kImpactKeys = {
+    "law", "k", "k_h", "n", "e", "material", "xi_formula", "min_impact_velocity"};
+
+void read_impact(const InputNode& node, ImpactLawConfig& c) {
+  if (const auto law = node.find("law")) {
+    c.law = law->choice<std::string>(
+        {{"linear", "linear"}, {"kelvin_voigt", "kelvin_voigt"},
+         {"modified_kelvin_voigt", "modified_kelvin_voigt"}, {"ye", "ye"},
+         {"mahmoud_jankowski", "mahmoud_jankowski"}, {"pant_wijeyewickrema", "pant_wijeyewickrema"},
+         {"hertz", "hertz"}, {"jankowski", "jankowski"},
+         {"hertz_damp_muthukumar", "hertz_damp_muthukumar"}, {"hertz_damp_ye", "hertz_damp_ye"}});
+  }
+  node.read_number("n", Bound::kPositive, c.n);
+  node.read_quantity("k", dim::kStiffness, Bound::kPositive, c.k);
+  // k_h is in N/m^n: its dimension follows the exponent (n = 1.5 for Jankowski's law).
+  const double n_h = c.law == "jankowski" ? 1.5 : c.n;
+  node.read_quantity("k_h", Dimension{1.0 - n_h, 1.0, -2.0}, Bound::kPositive, c.k_h);
+  if (const auto e = node.find("e")) {
+    c.e = e->number(Bound::kPositive);
+    if (c.e > 1.0) e->fail("the coefficient of restitution must be in (0, 1]");
+  }
+  if (const auto m = node.find("material")) {
+    c.material = m->choice<ImpactMaterial>({{"none", ImpactMaterial::kNone},
+                                            {"concrete", ImpactMaterial::kConcrete},
+                                            {"steel", ImpactMaterial::kSteel},
+                                            {"timber", ImpactMaterial::kTimber},
+                                            {"ceramic", ImpactMaterial::kCeramic}});
+    if (c.material != ImpactMaterial::kNone && node.has("e"))
+      m->fail("give either e (constant) or material (velocity-dependent e), not both");
+  }
+  if (const auto xi = node.find("xi_formula"))
+    c.xi_formula = xi->choice<std::string>({{"eq_3_12", "eq_3_12"}, {"eq_3_11", "eq_3_11"}});
+  node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive, c.min_impact_velocity);
+}
+
+WallConfig read_wall(const InputNode& node) {
+  std::vector<std::string_view> keys = {"sides", "gap", "gap_left", "gap_right", "level",
+                                        "mass", "stiffness", "damping"};
+  keys.insert(keys.end(), kImpactKeys.begin(), kImpactKeys.end());
+  node.expect_keys(keys);
+  WallConfig w;
+  if (const auto sides = node.find("sides")) {
+    const int which = sides->choice<int>({{"both", 0}, {"left", 1}, {"right", 2}});
+    w.left = which != 2;
+    w.right = which != 1;
+  }
+  if (const auto gap = node.find("gap")) {
+    w.gap_left = w.gap_right = gap->quantity(dim::kLength, Bound::kNonNegative);
+    for (const char* key : {"gap_left", "gap_right"})
+      if (const auto g = node.find(key)) g->fail("give either gap (both sides) or gap_left/gap_right");
+  }
+  node.read_quantity("gap_left", dim::kLength, Bound::kNonNegative, w.gap_left);
+  node.read_quantity("gap_right", dim::kLength, Bound::kNonNegative, w.gap_right);
+  node.read_integer("level", 0, 1000, w.level);
+  node.read_quantity("mass", dim::kMass, Bound::kPositive, w.mass);
+  node.read_quantity("stiffness", dim::kStiffness, Bound::kNonNegative, w.stiffness);
+  node.read_number("damping", Bound::kFraction, w.damping_ratio);
+  read_impact(node, w.impact);
+  return w;
+}
+
+BuildingConfig read_building(const InputNode& node);
+
+NeighbourConfig read_neighbour(const InputNode& node) {
+  node.expect_keys({"building", "side", "gap", "impact"});
+  NeighbourConfig n;
+  n.building = read_building(node.required("building"));
+  if (const auto side = node.find("side")) n.right = side->choice<bool>({{"left", false}, {"right", true}});
+  n.gap = node.required("gap").quantity(dim::kLength, Bound::kNonNegative);
+  if (const auto impact = node.find("impact")) {
+    impact->expect_keys(kImpactKeys);
+    read_impact(*impact, n.impact);
+  }
+  return n;
+}
+
 BuildingConfig read_building(const InputNode& node) {
-  node.expect_keys({"name", "isolated", "base", "floors", "isolator", "damping"});
+  node.expect_keys({"name", "isolated", "base", "floors", "isolator", "damping", "walls"});
   BuildingConfig b;
   if (const auto name = node.find("name")) {
     b.name = name->string();
@@ -157,6 +234,19 @@ BuildingConfig read_building(const InputNode& node) {
   b.floors = read_floors(node.required("floors"));
   if (const auto isolator = node.find("isolator")) b.isolator = read_isolator(*isolator);
   read_damping(node, b);
+  if (const auto walls = node.find("walls")) {
+    const int levels = static_cast<int>(b.floors.size()) + (b.isolated ? 1 : 0);
+    const auto add = [&](const InputNode& w) {
+      b.walls.push_back(read_wall(w));
+      if (b.walls.back().level >= levels)
+        w.fail_at_key("level", "level " + std::to_string(b.walls.back().level) +
+                                   " does not exist (levels 0.." + std::to_string(levels - 1) + ")");
+    };
+    if (walls->is_sequence())
+      for (const InputNode& w : walls->elements()) add(w);
+    else
+      add(*walls);
+  }
   return b;
 }
 
@@ -231,7 +321,8 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
 
 AnalysisConfig read_analysis(const InputNode& node) {
   using Stepping = AnalysisConfig::Stepping;
-  node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings", "newton_tolerance", "max_iterations"});
+  node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings", "newton_tolerance",
+                    "max_iterations", "steps_per_contact", "locate_events"});
   AnalysisConfig a;
   if (const auto stepping = node.find("stepping"))
     a.stepping = stepping->choice<Stepping>({{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}});
@@ -241,6 +332,8 @@ AnalysisConfig read_analysis(const InputNode& node) {
   node.read_integer("max_halvings", 0, kMaxHalvings, a.max_halvings);
   node.read_number("newton_tolerance", Bound::kPositive, a.newton_tolerance);
   node.read_integer("max_iterations", 1, kIntMax, a.max_iterations);
+  node.read_number("steps_per_contact", Bound::kPositive, a.steps_per_contact);
+  node.read_boolean("locate_events", a.locate_events);
   return a;
 }
 
@@ -260,10 +353,14 @@ int column_of(const YAML::Mark& mark) { return mark.is_null() ? 0 : mark.column 
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name, const std::string& base_dir) {
   try {
     const InputNode top(root, source_name);
-    top.expect_keys({"building", "ground_motion", "analysis", "output"});
+    top.expect_keys({"building", "neighbours", "ground_motion", "analysis", "output"});
     ModelConfig model;
     model.source = source_name;
     model.building = read_building(top.required("building"));
+    if (const auto list = top.find("neighbours")) {
+      if (!list->is_sequence()) list->fail("must be a list of neighbours");
+      for (const InputNode& n : list->elements()) model.neighbours.push_back(read_neighbour(n));
+    }
     if (const auto n = top.find("ground_motion")) model.ground_motion = read_ground_motion(*n, base_dir);
     if (const auto n = top.find("analysis")) model.analysis = read_analysis(*n);
     if (const auto n = top.find("output")) model.output = read_output(*n);

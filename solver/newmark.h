@@ -24,7 +24,7 @@ struct StepOutcome {
 // One step from the committed state (u0, v0, a0) at t to the trial state at t + h:
 //   u1 = u0 + h v0 + h^2/4 (a0 + a1),  v1 = v0 + h/2 (a0 + a1),
 //   M a1 + C v1 + K u1 + f_nl(u1, v1) = -M iota ag1.
-// Solved for u1 with K_hat = K + (2/h) C + (4/h^2) M + df_nl/du + (2/h) df_nl/dv.
+// Solved for du = u1 - u0 with K_hat = K + (2/h) C + (4/h^2) M + df_nl/du + (2/h) df_nl/dv.
 // Nothing is allocated per step once each distinct h has been seen (K_hat is cached per h).
 class NewmarkStepper {
  public:
@@ -34,7 +34,12 @@ class NewmarkStepper {
   void start(double ag0);
   // Committed state (u0, v0); a0 from the equation of motion with ground acceleration ag0.
   void start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0, double ag0);
-  StepOutcome try_step(double h, double ag1);
+  // `cache`: keep K_hat for this h (the regular steps); false for one-off steps cut at an event.
+  // `freeze`: elements keep their contact status through the trial (a step cut at an event).
+  StepOutcome try_step(double h, double ag1, bool cache = true, bool freeze = false);
+  // After elements changed status at an event (settle_event): a0 from equilibrium at the
+  // committed (u, v) with ground acceleration ag, elements re-evaluated and committed.
+  void restart(double ag);
   void accept();  // trial becomes committed (elements commit)
   void reject();  // elements revert; committed state unchanged
 
@@ -52,7 +57,7 @@ class NewmarkStepper {
   double last_step() const { return h_; }
 
  private:
-  const Eigen::MatrixXd& effective_linear(double h);
+  const Eigen::MatrixXd& effective_linear(double h, bool cache);
   void set_trial(const Eigen::VectorXd& u1);
 
   Model& model_;
@@ -60,9 +65,12 @@ class NewmarkStepper {
   double force_ref_;
   Eigen::VectorXd u0_, v0_, a0_, u1_, v1_, a1_;
   Eigen::VectorXd p_hat_, r_, du_, work_, m_iota_;
+  Eigen::VectorXd delta_;  // u1 - u0 of the trial
   Eigen::MatrixXd k_tangent_;
+  Eigen::MatrixXd k_hat_scratch_;  // K_hat of an uncached step
   Eigen::LLT<Eigen::MatrixXd> llt_;
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+  Eigen::LLT<Eigen::MatrixXd> mass_llt_;
   std::vector<std::pair<double, Eigen::MatrixXd>> k_hat_cache_;
   double h_ = 0.0;
 };

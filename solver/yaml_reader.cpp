@@ -117,7 +117,10 @@ std::string InputNode::kind() const {
 }
 
 void InputNode::expect_keys(std::initializer_list<std::string_view> allowed) const {
-  const std::vector<std::string_view> names(allowed);
+  expect_keys(std::vector<std::string_view>(allowed));
+}
+
+void InputNode::expect_keys(const std::vector<std::string_view>& names) const {
   if (!node_.IsDefined() || node_.IsNull()) {
     if (path_.empty()) fail("the document is empty; expected a map with keys: " + join(names));
     return;

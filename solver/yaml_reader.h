@@ -62,6 +62,7 @@ class InputNode {
   // Checks this is a map whose keys are all in `allowed`, each once (catches typos). An empty
   // value ("analysis:" with every key commented out) counts as an empty map, except at the root.
   void expect_keys(std::initializer_list<std::string_view> allowed) const;
+  void expect_keys(const std::vector<std::string_view>& allowed) const;
   bool has(std::string_view key) const;
   std::optional<InputNode> find(std::string_view key) const;
   // Throws "missing required key" at this node's position when absent.

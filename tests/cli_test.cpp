@@ -1,0 +1,165 @@
+// End-to-end tests of the isopound binary: exit codes and located messages for bad input,
+// the demo's files, a diverging analysis, the modes command.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+
+#include "tests/test_support.h"
+
+namespace isopound {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Command {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+Command run(const std::string& args) {
+  const std::string cmd = std::string(ISOPOUND_BINARY) + " " + args + " 2>&1";
+  Command result{-1, ""};
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  std::size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+fs::path scratch_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("isopound-cli-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(CliBadInput, EveryMalformedModelExitsNonZeroWithFileLineAndKey) {
+  const fs::path dir = test::source_dir() / "tests" / "data" / "bad_models";
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++count;
+    const std::string name = entry.path().filename().string();
+    for (const char* verb : {"check", "run -q --no-histories -o /tmp/isopound-cli-never"}) {
+      const Command c = run(std::string(verb) + " '" + entry.path().string() + "'");
+      EXPECT_EQ(c.exit_code, 2) << name << ": " << c.output;
+      // "name.yaml:LINE:COL: key.path: what". A YAML syntax error has a line but no key; an
+      // empty document has neither.
+      const std::string escaped = std::regex_replace(name, std::regex(R"(\.)"), R"(\.)");
+      std::string pattern = escaped + R"(:[1-9][0-9]*:[0-9]+: [A-Za-z_]+[A-Za-z_0-9.\[\]]*: )";
+      if (name == "syntax_error.yaml") pattern = escaped + R"(:[1-9][0-9]*:[0-9]+: YAML syntax)";
+      if (name == "empty.yaml") pattern = escaped + R"(: the document is empty)";
+      const std::regex located(pattern);
+      EXPECT_TRUE(std::regex_search(c.output, located)) << name << ": " << c.output;
+      EXPECT_EQ(c.output.find("nan"), std::string::npos) << name;
+    }
+  }
+  EXPECT_GE(count, 10);
+}
+
+TEST(CliBadInput, MissingModelFileAndUnknownSubcommand) {
+  Command c = run("run /nonexistent/model.yaml");
+  EXPECT_EQ(c.exit_code, 2);
+  EXPECT_NE(c.output.find("/nonexistent/model.yaml"), std::string::npos) << c.output;
+  c = run("frobnicate");
+  EXPECT_NE(c.exit_code, 0);
+}
+
+TEST(CliBadInput, TruncatedRecordNamesItsFileAndLine) {
+  const fs::path dir = scratch_dir("truncated");
+  std::ofstream(dir / "short.AT2") << "PEER NGA STRONG MOTION DATABASE RECORD\nx\n"
+                                      "ACCELERATION TIME SERIES IN UNITS OF G\n"
+                                      "NPTS=   10, DT=   .0050 SEC\n  .1E-01  .2E-01  .3E-01\n";
+  std::ofstream(dir / "model.yaml") << "building:\n  base: {mass: 340 t}\n"
+                                       "  floors: {count: 3, mass: 340 t, roof_mass: 250 t, "
+                                       "stiffness: 600 MN/m, height: 3.2 m}\n"
+                                       "ground_motion:\n  record: short.AT2\n";
+  const Command c = run("run -q '" + (dir / "model.yaml").string() + "' -o '" + (dir / "out").string() + "'");
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_NE(c.output.find("short.AT2:5:"), std::string::npos) << c.output;
+  fs::remove_all(dir);
+}
+
+TEST(CliDivergence, StopsWithTimeAndDof) {
+  // A scale factor of 1e5 on the pulse drives the building far beyond any physical response:
+  // the run must stop with the time, the DOF and a hint, exit code 3, and no output file.
+  const fs::path dir = scratch_dir("diverge");
+  std::ofstream(dir / "model.yaml") << "building:\n  base: {mass: 340 t}\n"
+                                       "  floors: {count: 3, mass: 340 t, roof_mass: 250 t, "
+                                       "stiffness: 600 MN/m, height: 3.2 m}\n"
+                                       "ground_motion:\n  pulse: {amplitude: 100000 m/s}\n";
+  const Command c = run("run '" + (dir / "model.yaml").string() + "' -o '" + (dir / "out").string() + "'");
+  EXPECT_EQ(c.exit_code, 3) << c.output;
+  EXPECT_TRUE(std::regex_search(c.output, std::regex(R"(diverged at t = [0-9.e+-]+ s, DOF '3-storey|diverged at t = [0-9.e+-]+ s, DOF 'building)")))
+      << c.output;
+  EXPECT_NE(c.output.find("Hint"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "out" / "summary.json"));
+  fs::remove_all(dir);
+}
+
+TEST(CliDemo, WritesSummaryAndHistoriesWithConsistentPeaks) {
+  const fs::path dir = scratch_dir("demo");
+  const Command c = run("demo -o '" + dir.string() + "'");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_NE(c.output.find("displacement"), std::string::npos);
+  std::ifstream in(dir / "summary.json");
+  ASSERT_TRUE(in.good());
+  const nlohmann::json s = nlohmann::json::parse(in);
+  const double base = s["structures"][0]["base_displacement_m"].get<double>();
+  EXPECT_GT(base, 0.05);
+  EXPECT_LT(base, 2.0);
+  EXPECT_LT(s["energy"]["relative_error"].get<double>(), 1e-3);
+  EXPECT_GT(s["statistics"]["steps"].get<long>(), 1000);
+  ASSERT_EQ(s["structures"][0]["stories"].size(), 3u);
+
+  // histories.csv: the base displacement column's max |u| must not exceed the summary's peak
+  // (peaks are taken at every step, histories at the output interval) and come within 1 %.
+  std::ifstream csv(dir / "histories.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("time [s],ground_acceleration [m/s2],3-storey/base u [m]", 0), 0u) << header;
+  double max_u = 0.0;
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) {
+    std::size_t p1 = line.find(','), p2 = line.find(',', p1 + 1), p3 = line.find(',', p2 + 1);
+    max_u = std::max(max_u, std::abs(std::stod(line.substr(p2 + 1, p3 - p2 - 1))));
+    ++rows;
+  }
+  EXPECT_GT(rows, 100u);
+  EXPECT_LE(max_u, base * (1 + 1e-12));
+  EXPECT_GT(max_u, 0.99 * base);
+  fs::remove_all(dir);
+}
+
+TEST(CliModes, ThesisBuildingPeriods) {
+  const Command c = run("modes '" + (test::source_dir() / "configs" / "tutorial.yaml").string() + "'");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_NE(c.output.find("0.3115"), std::string::npos) << c.output;  // fixed-base T1
+  EXPECT_NE(c.output.find("2.0166"), std::string::npos) << c.output;  // isolated, K_post
+}
+
+TEST(CliRun, ThesisConfigsRunOnTheirRecord) {
+  ISOPOUND_REQUIRE_RECORDS();
+  for (const char* name : {"thesis-3storey-bw.yaml", "thesis-5storey-bl.yaml"}) {
+    const fs::path dir = scratch_dir("thesis");
+    const Command c = run("run -q '" + (test::source_dir() / "configs" / name).string() + "' -o '" + dir.string() + "'");
+    ASSERT_EQ(c.exit_code, 0) << name << ": " << c.output;
+    std::ifstream in(dir / "summary.json");
+    const nlohmann::json s = nlohmann::json::parse(in);
+    EXPECT_NEAR(s["ground_motion"]["pga_g"].get<double>(), 0.623, 0.0006) << name;
+    EXPECT_GT(s["structures"][0]["base_displacement_m"].get<double>(), 0.1) << name;
+    fs::remove_all(dir);
+  }
+}
+
+}  // namespace
+}  // namespace isopound
