@@ -160,6 +160,16 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   }
   double next_output = 0.0;
 
+  // Element outputs of the current step, element e at output_offset[e].
+  std::vector<int> output_offset(n_elements), output_count(n_elements);
+  int outputs_total = 0;
+  for (int e = 0; e < n_elements; ++e) {
+    output_offset[e] = outputs_total;
+    output_count[e] = model.elements[e]->output_count();
+    outputs_total += output_count[e];
+  }
+  std::vector<double> output_scratch(outputs_total);
+
   // Energy terms (trapezoidal rule on the powers).
   Eigen::VectorXd work(n);
   const Eigen::VectorXd m_iota = model.mass * model.influence;
@@ -183,9 +193,11 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       update(res.drift[s], drift, t);
       update(res.drift_ratio[s], drift / st.height, t);
     }
-    for (int e = 0; e < n_elements; ++e)
-      for (int k = 0; k < model.elements[e]->output_count(); ++k)
-        update(res.element_outputs[e][k], model.elements[e]->output(k), t);
+    for (int e = 0; e < n_elements; ++e) {
+      double* values = output_scratch.data() + output_offset[e];
+      model.elements[e]->outputs(values);
+      for (int k = 0; k < output_count[e]; ++k) update(res.element_outputs[e][k], values[k], t);
+    }
 
     // Energy.
     const double p_in = -v.dot(m_iota) * ag;
@@ -227,8 +239,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       for (int i = 0; i < n; ++i) vals.push_back(u[i]);
       for (int i = 0; i < n; ++i) vals.push_back(v[i]);
       for (int i = 0; i < n; ++i) vals.push_back(a[i] + model.influence[i] * ag);
-      for (const auto& el : model.elements)
-        for (int k = 0; k < el->output_count(); ++k) vals.push_back(el->output(k));
+      vals.insert(vals.end(), output_scratch.begin(), output_scratch.end());
       next_output += out_interval;
       while (next_output <= t + 1e-9 * out_interval) next_output += out_interval;
     }

@@ -3,6 +3,7 @@
 #include "solver/bilinear.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace isopound {
 
@@ -10,7 +11,10 @@ BilinearMaterial::BilinearMaterial(double elastic_stiffness, double alpha, doubl
     : alpha_k_(alpha * elastic_stiffness),
       k_h_((1.0 - alpha) * elastic_stiffness),
       fh_yield_((1.0 - alpha) * yield_force),
-      tangent_(elastic_stiffness) {}
+      tangent_(elastic_stiffness) {
+  if (!(elastic_stiffness > 0) || !(yield_force > 0) || !(alpha >= 0 && alpha < 1))
+    throw std::invalid_argument("bilinear: need K_el > 0, F_y > 0 and 0 <= alpha < 1");
+}
 
 void BilinearMaterial::set_trial(double d) {
   d_ = d;

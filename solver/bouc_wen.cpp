@@ -159,7 +159,8 @@ double BoucWenMaterial::trapezoid_step(double z, double phi_z, double h, double 
     if (r > 0) hi = z1; else lo = z1;
     const double dr = 1.0 - 0.5 * h * dphi(z1);
     double next = z1 - r / dr;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // safeguard: bisect
+    // Safeguard: bisect when Newton leaves the bracket (a converged iterate may sit on it).
+    if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
     const bool done = std::abs(next - z1) <= 1e-14 * (1.0 + std::abs(z1));
     z1 = next;
     if (done) break;

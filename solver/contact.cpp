@@ -273,6 +273,15 @@ std::string Contact1D::output_unit(int i) const {
   return kUnits[i];
 }
 
+void Contact1D::outputs(double* out) const {
+  out[0] = trial_.force;
+  out[1] = std::max(trial_.delta, 0.0);
+  out[2] = trial_impacts();
+  out[3] = std::max(max_impact_velocity_, trial_.started ? trial_.phase.impact_velocity : 0.0);
+  out[4] = indentation_ + (trial_.ended ? trial_.end_indentation : 0.0);
+  out[5] = trial_work_ - trial_stored_;
+}
+
 double Contact1D::output(int i) const {
   switch (i) {
     case 0: return trial_.force;

@@ -45,6 +45,7 @@ class Contact1D final : public Element {
   std::string output_name(int i) const override;
   std::string output_unit(int i) const override;
   double output(int i) const override;
+  void outputs(double* out) const override;
   const std::string& label() const override { return label_; }
 
   // Outputs by name, for tests.

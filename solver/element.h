@@ -44,6 +44,10 @@ class Element {
   virtual std::string output_name(int i) const = 0;  // e.g. "force", unit in output_unit
   virtual std::string output_unit(int i) const = 0;
   virtual double output(int i) const = 0;
+  // All outputs at once into out[0 .. output_count()) (the stepper calls this every step).
+  virtual void outputs(double* out) const {
+    for (int i = 0; i < output_count(); ++i) out[i] = output(i);
+  }
   virtual const std::string& label() const = 0;
 };
 

@@ -32,11 +32,20 @@ ModelConfig demo_config() {
   return c;
 }
 
-int run_and_write(const ModelConfig& config, const std::string& out_dir, bool quiet) {
+int run_and_write(const ModelConfig& config, const std::string& out_dir, bool quiet,
+                  bool compare_unobstructed = false) {
   const JobResult job = run_job(config);
+  JobResult free_job;
+  if (compare_unobstructed) {
+    ModelConfig free_config = config;
+    free_config.building.walls.clear();
+    free_config.neighbours.clear();
+    free_config.output.histories = false;
+    free_job = run_job(free_config);
+  }
   fs::create_directories(out_dir);
   const std::string summary = (fs::path(out_dir) / "summary.json").string();
-  write_summary(summary, config, job);
+  write_summary(summary, config, job, compare_unobstructed ? &free_job : nullptr);
   std::string histories;
   if (config.output.histories) {
     histories = (fs::path(out_dir) / "histories.csv").string();
@@ -94,7 +103,7 @@ int main(int argc, char** argv) {
   CLI::App app{"isopound: nonlinear time-history analysis of base-isolated buildings"};
   app.require_subcommand(1);
   std::string model_path, record_path, out_dir = "isopound-out";
-  bool quiet = false, no_histories = false;
+  bool quiet = false, no_histories = false, compare_unobstructed = false;
 
   CLI::App* run = app.add_subcommand("run", "Run a model: writes summary.json and histories.csv");
   run->add_option("model", model_path, "Model file (YAML)")->required();
@@ -102,6 +111,8 @@ int main(int argc, char** argv) {
   run->add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
   run->add_flag("-q,--quiet", quiet, "Print nothing on success");
   run->add_flag("--no-histories", no_histories, "Skip histories.csv");
+  run->add_flag("--compare-unobstructed", compare_unobstructed,
+                "Also run without walls and neighbours; report each peak's amplification");
 
   CLI::App* demo = app.add_subcommand(
       "demo", "3-storey Bouc-Wen isolated building under the built-in near-fault pulse");
@@ -126,7 +137,7 @@ int main(int argc, char** argv) {
       config.ground_motion.record_path = record_path;
     }
     if (no_histories) config.output.histories = false;
-    if (*run) return run_and_write(config, out_dir, quiet);
+    if (*run) return run_and_write(config, out_dir, quiet, compare_unobstructed);
     if (*modes) {
       print_modes(config);
       return kOk;

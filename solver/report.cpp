@@ -32,7 +32,8 @@ nlohmann::json peak(const Peak& p, const char* key) {
 
 }  // namespace
 
-nlohmann::json summary_json(const ModelConfig& config, const JobResult& job) {
+nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
+                            const JobResult* unobstructed) {
   using nlohmann::json;
   const AnalysisResult& r = job.analysis;
   const Model& model = job.model;
@@ -121,10 +122,39 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job) {
                  {"max_relative_error", en.max_relative_error},
                  {"note", "each term integrated from its power with the trapezoidal rule in "
                           "time; relative_error = |input - sum| / input at the end"}};
+  if (unobstructed) {
+    // The main building is structure 0 in both runs, with the same DOF and story numbering.
+    const AnalysisResult& u = unobstructed->analysis;
+    const StructureInfo& s = model.structures[0];
+    const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+    json levels = json::array();
+    for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
+      const int d = s.level_dofs[k];
+      levels.push_back({{"label", model.dofs[d].label},
+                        {"unobstructed_displacement_m", u.displacement[d].value},
+                        {"unobstructed_absolute_acceleration_m_s2", u.absolute_acceleration[d].value},
+                        {"displacement_amplification", ratio(r.displacement[d].value, u.displacement[d].value)},
+                        {"acceleration_amplification",
+                         ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[d].value)}});
+    }
+    json stories = json::array();
+    const std::size_t count = s.level_dofs.size() - (s.has_base ? 1 : 0);
+    for (std::size_t k = 0; k < count; ++k)
+      stories.push_back({{"label", r.stories[k].label},
+                         {"unobstructed_drift_m", u.drift[k].value},
+                         {"drift_amplification", ratio(r.drift[k].value, u.drift[k].value)}});
+    j["unobstructed"] = {{"note", "the same analysis without walls and neighbours; "
+                                  "amplification = peak with pounding / peak without"},
+                         {"levels", levels},
+                         {"stories", stories},
+                         {"critical_gap_m", s.has_base ? u.displacement[s.level_dofs[0]].value : 0.0}};
+  }
+
   const RunStatistics& st = r.stats;
   j["statistics"] = {{"steps", st.steps},
                      {"rejected_steps", st.rejected_steps},
                      {"newton_iterations", st.newton_iterations},
+                     {"restarts", st.restarts},
                      {"min_step_s", st.min_step},
                      {"max_step_s", st.max_step},
                      {"analysed_time_s", st.duration},
@@ -132,10 +162,11 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job) {
   return j;
 }
 
-void write_summary(const std::string& path, const ModelConfig& config, const JobResult& job) {
+void write_summary(const std::string& path, const ModelConfig& config, const JobResult& job,
+                   const JobResult* unobstructed) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
-  out << std::setw(2) << summary_json(config, job) << '\n';
+  out << std::setw(2) << summary_json(config, job, unobstructed) << '\n';
   if (!out) throw std::runtime_error("error writing " + path);
 }
 
@@ -184,10 +215,17 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
     }
   }
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    std::snprintf(line, sizeof line, "  %-22s peak force %8.1f kN   peak deformation %6.2f cm\n",
-                  model.elements[e]->label().c_str(), r.element_outputs[e][0].value / 1e3,
-                  100 * r.element_outputs[e][1].value);
+    const Element& el = *model.elements[e];
+    std::snprintf(line, sizeof line, "  %-22s peak force %8.1f kN   peak %s %6.2f cm",
+                  el.label().c_str(), r.element_outputs[e][0].value / 1e3,
+                  el.output_name(1).c_str(), 100 * r.element_outputs[e][1].value);
     out << line;
+    if (el.output_count() > 3 && el.output_name(2) == "impacts") {
+      std::snprintf(line, sizeof line, "   %d impacts, max impact velocity %.3f m/s",
+                    static_cast<int>(r.element_outputs[e][2].value), r.element_outputs[e][3].value);
+      out << line;
+    }
+    out << '\n';
   }
   std::snprintf(line, sizeof line,
                 "Energy: input %.4g kJ, hysteretic %.4g kJ, viscous %.4g kJ, balance error %.2e\n",

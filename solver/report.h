@@ -11,8 +11,12 @@
 
 namespace isopound {
 
-nlohmann::json summary_json(const ModelConfig& config, const JobResult& job);
-void write_summary(const std::string& path, const ModelConfig& config, const JobResult& job);
+// `unobstructed`: the same run without walls and neighbours (or null); adds its peaks and the
+// amplification of each peak of the main building (with pounding / without).
+nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
+                            const JobResult* unobstructed = nullptr);
+void write_summary(const std::string& path, const ModelConfig& config, const JobResult& job,
+                   const JobResult* unobstructed = nullptr);
 void write_histories(const std::string& path, const History& history);
 void print_summary(std::ostream& out, const ModelConfig& config, const JobResult& job);
 

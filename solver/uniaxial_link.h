@@ -29,6 +29,11 @@ class UniaxialLink final : public Element {
   std::string output_name(int i) const override;
   std::string output_unit(int i) const override;
   double output(int i) const override;
+  void outputs(double* out) const override {
+    out[0] = law_->force();
+    out[1] = law_->deformation();
+    out[2] = law_->internal();
+  }
   const std::string& label() const override { return label_; }
 
   const UniaxialMaterial& law() const { return *law_; }
