@@ -13,13 +13,6 @@ namespace isopound {
 
 namespace {
 
-void grow(Eigen::MatrixXd& m, int n) {
-  const Eigen::Index old = m.rows();
-  m.conservativeResize(n, n);
-  m.bottomRows(n - old).setZero();
-  m.rightCols(n - old).setZero();
-}
-
 double building_mass(const BuildingConfig& b) {
   double m = b.isolated ? b.base_mass : 0.0;
   for (const FloorConfig& f : b.floors) m += f.mass;
@@ -74,10 +67,7 @@ void add_building(Model& model, const BuildingConfig& b) {
   const int first_floor = b.isolated ? offset + 1 : offset;
   const int n = first_floor + floors;
 
-  grow(model.mass, n);
-  grow(model.damping, n);
-  grow(model.stiffness, n);
-  model.influence.conservativeResize(n);
+  model.grow(n);
   model.influence.tail(n - offset).setOnes();
 
   StructureInfo info;

@@ -37,6 +37,18 @@ struct Model {
   std::vector<StructureInfo> structures;
 
   int size() const { return static_cast<int>(dofs.size()); }
+  // Grows M, C, K and the influence vector to n DOFs; the new rows and columns are zero.
+  void grow(int n) {
+    for (Eigen::MatrixXd* m : {&mass, &damping, &stiffness}) {
+      const Eigen::Index old = m->rows();
+      m->conservativeResize(n, n);
+      m->bottomRows(n - old).setZero();
+      m->rightCols(n - old).setZero();
+    }
+    const Eigen::Index old = influence.size();
+    influence.conservativeResize(n);
+    influence.tail(n - old).setZero();
+  }
   double total_mass() const { return influence.dot(mass * influence); }
 };
 

@@ -13,21 +13,11 @@ namespace isopound {
 
 namespace {
 
-void grow(Eigen::MatrixXd& m, int n) {
-  const Eigen::Index old = m.rows();
-  m.conservativeResize(n, n);
-  m.bottomRows(n - old).setZero();
-  m.rightCols(n - old).setZero();
-}
-
 // Adds a single-DOF wall oscillator (mass, spring and dashpot to the ground); returns its DOF.
 int add_wall_structure(Model& model, const std::string& name, const WallConfig& wall) {
   const int dof = model.size();
   const int n = dof + 1;
-  grow(model.mass, n);
-  grow(model.damping, n);
-  grow(model.stiffness, n);
-  model.influence.conservativeResize(n);
+  model.grow(n);
   model.influence[dof] = 1.0;
   model.mass(dof, dof) = wall.mass;
   model.stiffness(dof, dof) = wall.stiffness;

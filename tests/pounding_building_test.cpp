@@ -96,7 +96,7 @@ GroundMotion negated(GroundMotion g) {
   return g;
 }
 
-struct Run {
+struct Outcome {
   Model model;
   AnalysisResult result;
   double seconds = 0.0;
@@ -116,8 +116,8 @@ struct Run {
   return ::testing::AssertionSuccess();
 }
 
-Run run(const ModelConfig& config, const GroundMotion& motion) {
-  Run r;
+Outcome analyse(const ModelConfig& config, const GroundMotion& motion) {
+  Outcome r;
   r.model = build_model(config);
   const auto start = std::chrono::steady_clock::now();
   r.result = run_analysis(r.model, motion, run_options(config));
@@ -140,11 +140,11 @@ std::vector<std::size_t> contacts(const Model& model, std::string_view tag) {
 
 constexpr int kForce = 0, kPenetration = 1, kImpacts = 2, kIndentation = 4;
 
-double contact_output(const Run& r, std::size_t element, int output) {
+double contact_output(const Outcome& r, std::size_t element, int output) {
   return r.result.element_outputs[element][output].value;
 }
 
-int total_impacts(const Run& r, std::string_view tag) {
+int total_impacts(const Outcome& r, std::string_view tag) {
   double n = 0;
   for (std::size_t e : contacts(r.model, tag)) n += contact_output(r, e, kImpacts);
   return static_cast<int>(std::lround(n));
@@ -157,7 +157,7 @@ struct NamedPeak {
 
 // The acceptance peaks of structure `s`: base displacement (isolated), each story drift, each
 // level's absolute acceleration; and, for the main building, each wall's peak impact force.
-std::vector<NamedPeak> peaks_of(const Run& r, int s = 0) {
+std::vector<NamedPeak> peaks_of(const Outcome& r, int s = 0) {
   const StructureInfo& info = r.model.structures[s];
   const AnalysisResult& a = r.result;
   std::vector<NamedPeak> p;
@@ -223,8 +223,8 @@ TEST_P(PoundingBuildingConvergence, DefaultPeaksWithinOnePercentOfFixedStepWithT
   const std::string law = GetParam();
   const GroundMotion motion = record();
   const ModelConfig config = walled_building(law, kGap);
-  const Run ref = run(fixed_step(config, 1e-5), motion);
-  const Run def = run(config, motion);
+  const Outcome ref = analyse(fixed_step(config, 1e-5), motion);
+  const Outcome def = analyse(config, motion);
 
   // The walls must actually be hit, or the test says nothing about pounding.
   ASSERT_GT(total_impacts(def, "/wall "), 0);
@@ -250,15 +250,15 @@ TEST_P(PoundingBuildingConvergence, DefaultPeaksWithinOnePercentOfFixedStepWithT
   RecordProperty("step_ratio", std::to_string(ratio));
 }
 
-INSTANTIATE_TEST_SUITE_P(Rsn1084, PoundingBuildingConvergence, ::testing::ValuesIn(law_names()),
+INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingConvergence, ::testing::ValuesIn(law_names()),
                          law_test_name);
 
 TEST(PoundingBuildingReference, FixedStepOfTenMicrosecondsIsConvergedForKelvinVoigt) {
   ISOPOUND_REQUIRE_RECORDS();
   const GroundMotion motion = record();
   const ModelConfig config = walled_building("kelvin_voigt", kGap);
-  const Run ref = run(fixed_step(config, 1e-5), motion);
-  const Run fine = run(fixed_step(config, 5e-6), motion);
+  const Outcome ref = analyse(fixed_step(config, 1e-5), motion);
+  const Outcome fine = analyse(fixed_step(config, 5e-6), motion);
   ASSERT_GT(total_impacts(ref, "/wall "), 0);
   // Second-order Newmark: halving the step divides the error by ~4, so the 1e-5 s run is
   // within ~(4/3) of this difference of the limit; 2e-3 leaves the 1 % test a 5x margin.
@@ -279,8 +279,8 @@ TEST_P(PoundingBuildingGapShift, OneNanometreChangesNoPeakByMoreThanOneThousandt
   ISOPOUND_REQUIRE_RECORDS();
   const std::string law = GetParam();
   const GroundMotion motion = record();
-  const Run a = run(walled_building(law, kGap), motion);
-  const Run b = run(walled_building(law, kGap + 1e-9), motion);
+  const Outcome a = analyse(walled_building(law, kGap), motion);
+  const Outcome b = analyse(walled_building(law, kGap + 1e-9), motion);
   ASSERT_GT(total_impacts(a, "/wall "), 0);
   EXPECT_EQ(total_impacts(a, "/wall "), total_impacts(b, "/wall "));
   const Comparison c = compare(peaks_of(b), peaks_of(a));
@@ -288,7 +288,7 @@ TEST_P(PoundingBuildingGapShift, OneNanometreChangesNoPeakByMoreThanOneThousandt
   std::printf("[gap shift] %-22s | worst %.3e at %s\n", law.c_str(), c.worst, c.where.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Rsn1084, PoundingBuildingGapShift, ::testing::ValuesIn(law_names()),
+INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingGapShift, ::testing::ValuesIn(law_names()),
                          law_test_name);
 
 // ---------------------------------------------------------------------------------------------
@@ -300,8 +300,8 @@ TEST_P(PoundingBuildingWallCap, BaseDisplacementStopsAtGapPlusPenetration) {
   ISOPOUND_REQUIRE_RECORDS();
   const std::string law = GetParam();
   const GroundMotion motion = record();
-  const Run free = run(free_building(), motion);
-  const Run walled = run(walled_building(law, kGap), motion);
+  const Outcome free = analyse(free_building(), motion);
+  const Outcome walled = analyse(walled_building(law, kGap), motion);
   const int base = walled.model.structures[0].level_dofs[0];
   // Without walls the slab goes well beyond the gap, so the walls must act.
   ASSERT_GT(free.result.displacement[base].value, kGap + 0.05);
@@ -322,7 +322,7 @@ TEST_P(PoundingBuildingWallCap, BaseDisplacementStopsAtGapPlusPenetration) {
   EXPECT_LT(walled.result.displacement[base].value, free.result.displacement[base].value);
 }
 
-INSTANTIATE_TEST_SUITE_P(Rsn1084, PoundingBuildingWallCap, ::testing::ValuesIn(law_names()),
+INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingWallCap, ::testing::ValuesIn(law_names()),
                          law_test_name);
 
 // A wall out of reach (2 m, beyond any displacement of this building) must leave the analysis
@@ -330,11 +330,11 @@ INSTANTIATE_TEST_SUITE_P(Rsn1084, PoundingBuildingWallCap, ::testing::ValuesIn(l
 TEST(PoundingBuildingWalls, WallOutOfReachChangesNothing) {
   ISOPOUND_REQUIRE_RECORDS();
   const GroundMotion motion = record();
-  const Run free = run(free_building(), motion);
+  const Outcome free = analyse(free_building(), motion);
   ASSERT_LT(free.result.displacement[0].value, 1.0);
   for (const std::string& law : law_names()) {
     SCOPED_TRACE(law);
-    const Run far = run(walled_building(law, 2.0), motion);
+    const Outcome far = analyse(walled_building(law, 2.0), motion);
     EXPECT_EQ(total_impacts(far, "/wall "), 0);
     EXPECT_EQ(far.result.stats.steps, free.result.stats.steps);
     EXPECT_EQ(far.result.stats.rejected_steps, free.result.stats.rejected_steps);

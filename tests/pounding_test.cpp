@@ -134,10 +134,10 @@ struct Bounce {
 Bounce bounce(const std::string& law, double e, double duration) {
   const double m = 340e3, k = m * std::pow(2.0 * M_PI / 2.0, 2), gap = 0.05, v0 = 1.0;
   Model model;
-  model.mass = Eigen::Matrix<double, 1, 1>(m);
-  model.damping = Eigen::Matrix<double, 1, 1>(0.0);
-  model.stiffness = Eigen::Matrix<double, 1, 1>(k);
-  model.influence = Eigen::Matrix<double, 1, 1>(1.0);
+  model.mass = Eigen::MatrixXd::Constant(1, 1, m);
+  model.damping = Eigen::MatrixXd::Zero(1, 1);
+  model.stiffness = Eigen::MatrixXd::Constant(1, 1, k);
+  model.influence = Eigen::VectorXd::Ones(1);
   model.dofs = {{"slab", 0, 0}};
   ImpactLawConfig c;
   c.law = law;
@@ -154,7 +154,7 @@ Bounce bounce(const std::string& law, double e, double duration) {
   }
   RunOptions o;
   o.output.histories = true;
-  o.initial_velocity = Eigen::Matrix<double, 1, 1>(v0);
+  o.initial_velocity = Eigen::VectorXd::Constant(1, v0);
   Bounce b;
   b.result = run_analysis(model, still(duration, 1e-3), o);
   const std::size_t cols = b.result.history.columns.size();

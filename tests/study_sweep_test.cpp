@@ -137,6 +137,10 @@ TEST(StudySweep, KilledStudyResumesWithoutRecomputingFinishedRuns) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   ASSERT_FALSE(exited) << "the study finished before it could be killed";
+  // While it runs, a second sweep on the same database is refused.
+  const auto second = run_isopound("sweep '" + study.string() + "' -q --resume --db '" + db.string() + "'");
+  EXPECT_EQ(second.exit_code, 2) << second.output;
+  EXPECT_NE(second.output.find("another isopound sweep is writing this database"), std::string::npos) << second.output;
   ASSERT_EQ(kill(pid, SIGKILL), 0);
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
@@ -208,6 +212,13 @@ TEST(StudySweep, ResumeRefusesAChangedStudy) {
   EXPECT_NE(r.output.find("was made from a different study"), std::string::npos) << r.output;
   const auto again = run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --overwrite --db '" + db + "'");
   EXPECT_EQ(again.exit_code, 0) << again.output;
+
+  // A database file without tables (a sweep killed while creating it) is simply started again.
+  const fs::path empty = dir / "empty.db";
+  test::write_file(empty, "");
+  const auto fresh = run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --resume --db '" + empty.string() + "'");
+  EXPECT_EQ(fresh.exit_code, 0) << fresh.output;
+  EXPECT_EQ(query_int(empty, "SELECT COUNT(*) FROM runs WHERE status = 'done'"), 2);
 }
 
 TEST(StudySweep, MalformedStudiesExitWithCode2BeforeAnyRun) {
