@@ -15,14 +15,16 @@ namespace isopound {
 std::vector<Story> stories_of(const Model& model) {
   std::vector<Story> stories;
   for (const StructureInfo& s : model.structures) {
+    // Story k links the level below (or the ground) and level k + first_floor; a structure
+    // with no story heights (e.g. a moat-wall oscillator) has no stories.
     const std::size_t first_floor = s.has_base ? 1 : 0;
-    for (std::size_t k = first_floor; k < s.level_dofs.size(); ++k) {
+    for (std::size_t k = 0; k < s.story_heights.size(); ++k) {
+      const std::size_t level = k + first_floor;
       Story story;
-      const std::size_t number = k - first_floor + 1;
-      story.label = s.name + "/story " + std::to_string(number);
-      story.upper = s.level_dofs[k];
-      story.lower = k == 0 ? -1 : s.level_dofs[k - 1];
-      story.height = s.story_heights[number - 1];
+      story.label = s.name + "/story " + std::to_string(k + 1);
+      story.upper = s.level_dofs[level];
+      story.lower = level == 0 ? -1 : s.level_dofs[level - 1];
+      story.height = s.story_heights[k];
       stories.push_back(story);
     }
   }

@@ -239,8 +239,8 @@ BuildingConfig read_building(const InputNode& node) {
     const auto add = [&](const InputNode& w) {
       b.walls.push_back(read_wall(w));
       if (b.walls.back().level >= levels)
-        w.fail_at_key("level", "level " + std::to_string(b.walls.back().level) +
-                                   " does not exist (levels 0.." + std::to_string(levels - 1) + ")");
+        w.required("level").fail("level " + std::to_string(b.walls.back().level) +
+                                 " does not exist (levels 0.." + std::to_string(levels - 1) + ")");
     };
     if (walls->is_sequence())
       for (const InputNode& w : walls->elements()) add(w);

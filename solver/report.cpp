@@ -85,7 +85,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     js["levels"] = levels;
     if (s.has_base) js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
     json stories = json::array();
-    const std::size_t count = s.level_dofs.size() - (s.has_base ? 1 : 0);
+    const std::size_t count = s.story_heights.size();
     for (std::size_t k = 0; k < count; ++k, ++story_index) {
       const Story& st = r.stories[story_index];
       stories.push_back({{"label", st.label},
@@ -138,7 +138,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                          ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[d].value)}});
     }
     json stories = json::array();
-    const std::size_t count = s.level_dofs.size() - (s.has_base ? 1 : 0);
+    const std::size_t count = s.story_heights.size();
     for (std::size_t k = 0; k < count; ++k)
       stories.push_back({{"label", r.stories[k].label},
                          {"unobstructed_drift_m", u.drift[k].value},
@@ -206,7 +206,7 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                     r.absolute_acceleration[d].value / kGravity);
       out << line;
     }
-    const std::size_t count = s.level_dofs.size() - (s.has_base ? 1 : 0);
+    const std::size_t count = s.story_heights.size();
     for (std::size_t k = 0; k < count; ++k, ++story_index) {
       std::snprintf(line, sizeof line, "  %-22s drift %8.3f cm   drift ratio %.3f %%\n",
                     r.stories[story_index].label.c_str(), 100 * r.drift[story_index].value,

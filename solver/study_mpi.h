@@ -1,6 +1,5 @@
-// MPI ranks for a sweep (optional at build time, ISOPOUND_HAVE_MPI): rank 0 owns the database
-// and hands out cases on request; the other ranks compute and send their results back.
-// Without MPI, or when not started by mpirun/srun, there is one rank and no message is sent.
+// MPI ranks of a sweep (optional, ISOPOUND_HAVE_MPI): rank 0 owns the database and hands out cases
+// on request, the others compute and send results back; not under mpirun/srun: one rank, no messages.
 #pragma once
 
 #include <cstdint>

@@ -209,8 +209,6 @@ class StudyReader {
     if (path.text == kRecordPath) {
       if (!value.IsScalar() || value.Scalar().empty()) where.fail("a record must be a file path");
       copy = YAML::Node(resolve_record(where, value.Scalar()));
-    } else if (value.IsDefined() && !value.IsNull() && !value.IsScalar() && path.steps.back().index >= 0) {
-      // A list item replaced by a map or list is fine; nothing to check here.
     }
     return Override{path, copy, canonical_text(copy), where};
   }

@@ -364,7 +364,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"record_option_without_record.yaml", 5, "ground_motion.scale", "no 'record' is given"},
         BadModel{"unknown_top_level.yaml", 4, "anaysis", "(did you mean 'analysis'?)"},
         BadModel{"syntax_error.yaml", 4, "", "YAML syntax error"},
-        BadModel{"empty.yaml", 0, "", "the document is empty"}),
+        BadModel{"empty.yaml", 0, "", "the document is empty"},
+        BadModel{"wall_negative_gap.yaml", 5, "building.walls.gap", "must be >= 0 (got '-5 cm')"},
+        BadModel{"wall_restitution_above_one.yaml", 8, "building.walls.e", "coefficient of restitution must be in (0, 1]"},
+        BadModel{"wall_restitution_zero.yaml", 8, "building.walls[0].e", "must be > 0 (got '0')"},
+        BadModel{"wall_k_zero.yaml", 8, "building.walls.k", "must be > 0 (got '0 kN/mm')"},
+        BadModel{"wall_k_negative.yaml", 8, "building.walls.k", "must be > 0 (got '-2500 kN/mm')"},
+        BadModel{"wall_unknown_law.yaml", 7, "building.walls.law", "unknown law 'kelvin_voight'; allowed: linear, kelvin_voigt"},
+        BadModel{"wall_unknown_material.yaml", 8, "building.walls.material", "unknown material 'granite'; allowed: none, concrete"},
+        BadModel{"wall_gap_and_gap_left.yaml", 7, "building.walls.gap_left", "give either gap (both sides) or gap_left/gap_right"},
+        BadModel{"neighbour_without_gap.yaml", 6, "neighbours[0].gap", "missing required key 'gap'"},
+        BadModel{"wall_level_beyond_building.yaml", 5, "building.walls.level", "level 4 does not exist (levels 0..3)"}),
     [](const ::testing::TestParamInfo<BadModel>& info) {
       return fs::path(info.param.file).stem().string();
     });
