@@ -15,7 +15,8 @@ namespace {
 using namespace isopound;
 
 std::filesystem::path records_dir() {
-  if (const char* env = std::getenv("ISOPOUND_SHARED")) return std::filesystem::path(env) / "records";
+  if (const char* env = std::getenv("ISOPOUND_SHARED"))
+    return std::filesystem::path(env) / "records";
   return std::filesystem::path(ISOPOUND_SOURCE_DIR) / ".." / "shared" / "records";
 }
 
@@ -68,15 +69,27 @@ void run(benchmark::State& state, const BuildingConfig& building, double fixed_d
 }
 
 using Iso = IsolatorConfig::Model;
-void BM_BoucWen_Default(benchmark::State& s) { run(s, three_storey(Iso::kBoucWen), 0); }
-void BM_BoucWen_Fixed2e5(benchmark::State& s) { run(s, three_storey(Iso::kBoucWen), 2e-5); }
-void BM_Bilinear_Default(benchmark::State& s) { run(s, three_storey(Iso::kBilinear), 0); }
-void BM_Bilinear_Fixed2e5(benchmark::State& s) { run(s, three_storey(Iso::kBilinear), 2e-5); }
-void BM_Walls10cm_KelvinVoigt(benchmark::State& s) { run(s, with_walls("kelvin_voigt"), 0); }
+void BM_BoucWen_Default(benchmark::State& s) {
+  run(s, three_storey(Iso::kBoucWen), 0);
+}
+void BM_BoucWen_Fixed2e5(benchmark::State& s) {
+  run(s, three_storey(Iso::kBoucWen), 2e-5);
+}
+void BM_Bilinear_Default(benchmark::State& s) {
+  run(s, three_storey(Iso::kBilinear), 0);
+}
+void BM_Bilinear_Fixed2e5(benchmark::State& s) {
+  run(s, three_storey(Iso::kBilinear), 2e-5);
+}
+void BM_Walls10cm_KelvinVoigt(benchmark::State& s) {
+  run(s, with_walls("kelvin_voigt"), 0);
+}
 void BM_Walls10cm_HertzDampMuthukumar(benchmark::State& s) {
   run(s, with_walls("hertz_damp_muthukumar"), 0);
 }
-void BM_Walls10cm_HertzDampYe(benchmark::State& s) { run(s, with_walls("hertz_damp_ye"), 0); }
+void BM_Walls10cm_HertzDampYe(benchmark::State& s) {
+  run(s, with_walls("hertz_damp_ye"), 0);
+}
 
 BENCHMARK(BM_BoucWen_Default)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BoucWen_Fixed2e5)->Unit(benchmark::kMillisecond)->Iterations(2);

@@ -122,7 +122,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   res.drift.resize(res.stories.size());
   res.drift_ratio.resize(res.stories.size());
   res.element_outputs.resize(n_elements);
-  for (int e = 0; e < n_elements; ++e) res.element_outputs[e].resize(model.elements[e]->output_count());
+  for (int e = 0; e < n_elements; ++e)
+    res.element_outputs[e].resize(model.elements[e]->output_count());
 
   NewmarkStepper stepper(model, {cfg.newton_tolerance, cfg.max_iterations});
 
@@ -251,8 +252,9 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   const auto initial = [&](const Eigen::VectorXd& x, const char* what) -> const Eigen::VectorXd& {
     if (x.size() == 0) return zero;
     if (x.size() != n)
-      throw std::invalid_argument(std::string("initial ") + what + " has " + std::to_string(x.size()) +
-                                  " entries for " + std::to_string(n) + " DOFs");
+      throw std::invalid_argument(std::string("initial ") + what + " has " +
+                                  std::to_string(x.size()) + " entries for " + std::to_string(n) +
+                                  " DOFs");
     return x;
   };
   stepper.start(initial(options.initial_displacement, "displacement"),
@@ -308,7 +310,10 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         const bool can_halve = frac > min_fraction * (1 + 1e-9);
         if (can_halve && (adaptive || !out.converged)) {
           stepper.reject();
-          if (forced > 0) forced *= 0.5; else ++level;
+          if (forced > 0)
+            forced *= 0.5;
+          else
+            ++level;
           level = std::min(level, max_level);
           ++st.rejected_steps;
           continue;
@@ -336,7 +341,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
           ++st.rejected_steps;
           const double tol = 1e-4;
           for (std::size_t k = 0; k < model.elements.size(); ++k)
-            settling[k] = event_theta[k] <= std::max(theta * (1.0 + 1e-12), theta < tol ? tol : 0.0);
+            settling[k] =
+                event_theta[k] <= std::max(theta * (1.0 + 1e-12), theta < tol ? tol : 0.0);
           if (theta < tol) {
             bool jumped = false;
             for (std::size_t k = 0; k < model.elements.size(); ++k)
@@ -347,7 +353,9 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
               restart_power();
             }
             refine_to_limit();
-            if (++settles_here > 4) throw AnalysisError((static_cast<double>(i) + pos) * H, "", "event loop: contact status does not settle");
+            if (++settles_here > 4)
+              throw AnalysisError((static_cast<double>(i) + pos) * H, "",
+                                  "event loop: contact status does not settle");
             continue;
           }
           forced = std::min(theta, 1.0) * frac;

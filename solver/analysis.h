@@ -40,12 +40,12 @@ struct Story {
 
 struct EnergyBalance {
   // Each term integrated with the trapezoidal rule in time from its power (see THEORY-notes).
-  double input = 0.0;       // -int v^T M iota a_g dt
-  double kinetic = 0.0;     // v^T M v / 2
-  double elastic = 0.0;     // u^T K u / 2 + recoverable energy of the elements
-  double viscous = 0.0;     // int v^T C v dt
-  double hysteretic = 0.0;  // element work minus their recoverable energy
-  double error = 0.0;       // input - (kinetic + elastic + viscous + hysteretic) at the end
+  double input = 0.0;               // -int v^T M iota a_g dt
+  double kinetic = 0.0;             // v^T M v / 2
+  double elastic = 0.0;             // u^T K u / 2 + recoverable energy of the elements
+  double viscous = 0.0;             // int v^T C v dt
+  double hysteretic = 0.0;          // element work minus their recoverable energy
+  double error = 0.0;               // input - (kinetic + elastic + viscous + hysteretic) at the end
   double relative_error = 0.0;      // |error| / input at the end
   double max_relative_error = 0.0;  // max_t |error(t)| / max_t input(t)
 };
@@ -54,7 +54,7 @@ struct RunStatistics {
   long steps = 0;           // accepted steps
   long rejected_steps = 0;  // steps redone with half the size
   long newton_iterations = 0;
-  long restarts = 0;        // restarts from equilibrium after a force jump at an event
+  long restarts = 0;  // restarts from equilibrium after a force jump at an event
   double min_step = 0.0, max_step = 0.0;  // s
   double wall_seconds = 0.0;
   double duration = 0.0;  // s of analysed time
@@ -68,11 +68,11 @@ struct History {
 
 struct AnalysisResult {
   std::vector<Story> stories;
-  std::vector<Peak> displacement;           // per DOF, relative to the ground, m
-  std::vector<Peak> velocity;               // per DOF, relative, m/s
-  std::vector<Peak> absolute_acceleration;  // per DOF, m/s^2
-  std::vector<Peak> drift;                  // per story, m
-  std::vector<Peak> drift_ratio;            // per story
+  std::vector<Peak> displacement;                  // per DOF, relative to the ground, m
+  std::vector<Peak> velocity;                      // per DOF, relative, m/s
+  std::vector<Peak> absolute_acceleration;         // per DOF, m/s^2
+  std::vector<Peak> drift;                         // per story, m
+  std::vector<Peak> drift_ratio;                   // per story
   std::vector<std::vector<Peak>> element_outputs;  // per element, per output
   EnergyBalance energy;
   RunStatistics stats;
@@ -95,7 +95,8 @@ std::vector<Story> stories_of(const Model& model);
 // 0 if the model is a mechanism at rest.
 double shortest_period(Model& model);
 
-// Runs the analysis (from rest unless initial conditions are given). Throws AnalysisError if it diverges.
+// Runs the analysis (from rest unless initial conditions are given). Throws AnalysisError if it
+// diverges.
 AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunOptions& options);
 
 }  // namespace isopound

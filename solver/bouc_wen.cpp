@@ -17,8 +17,9 @@ constexpr int kMaxSubincrements = 100000;
 BoucWenMaterial::BoucWenMaterial(const BoucWenParameters& p) : p_(p) {
   if (!(p.elastic_stiffness > 0) || !(p.yield_displacement > 0) || !(p.n > 0) || !(p.A > 0) ||
       !(p.beta + p.gamma > 0) || !(p.alpha >= 0 && p.alpha < 1))
-    throw std::invalid_argument("Bouc-Wen: need K_el > 0, u_y > 0, n > 0, A > 0, "
-                                "beta + gamma > 0 and 0 <= alpha < 1");
+    throw std::invalid_argument(
+        "Bouc-Wen: need K_el > 0, u_y > 0, n > 0, A > 0, "
+        "beta + gamma > 0 and 0 <= alpha < 1");
   z_saturation_ = std::pow(p.A / (p.beta + p.gamma), 1.0 / p.n);
   z_saturation_pow_n_ = p.A / (p.beta + p.gamma);
   const double rounded = std::round(p.n);
@@ -156,7 +157,10 @@ double BoucWenMaterial::trapezoid_step(double z, double phi_z, double h, double 
   // r(z1) = z1 - base - h/2 phi(z1) is increasing (r' = 1 - h/2 phi' >= 1/2 by the bound).
   for (int it = 0; it < 60; ++it) {
     const double r = z1 - base - 0.5 * h * phi(z1);
-    if (r > 0) hi = z1; else lo = z1;
+    if (r > 0)
+      hi = z1;
+    else
+      lo = z1;
     const double dr = 1.0 - 0.5 * h * dphi(z1);
     double next = z1 - r / dr;
     // Safeguard: bisect when Newton leaves the bracket (a converged iterate may sit on it).

@@ -55,9 +55,9 @@ class BoucWenMaterial final : public UniaxialMaterial {
   double subincrement(double z_start, double c, double& bound_pow_n) const;
 
   BoucWenParameters p_;
-  double z_saturation_;  // (A / (beta + gamma))^(1/n)
+  double z_saturation_;        // (A / (beta + gamma))^(1/n)
   double z_saturation_pow_n_;  // z_saturation_^n = A / (beta + gamma)
-  int integer_n_;        // n if n is a small integer, else 0
+  int integer_n_;              // n if n is a small integer, else 0
   double d_ = 0.0, z_ = 0.0, dz_dx_;
   double d_commit_ = 0.0, z_commit_ = 0.0, dz_dx_commit_;
 };

@@ -47,8 +47,8 @@ struct SuperstructureDamping {
 // right wall is hit when the level moves by +gap, a left wall by -gap.
 struct WallConfig {
   bool left = true, right = true;  // sides: both (default) | left | right
-  double gap_left = 0.2;   // m, clear distance at rest (>= 0)
-  double gap_right = 0.2;  // m
+  double gap_left = 0.2;           // m, clear distance at rest (>= 0)
+  double gap_right = 0.2;          // m
   int level = 0;           // level index that pounds (0 = base slab of an isolated building)
   ImpactLawConfig impact;  // law, k, e, ...; mass_2 is the wall mass below, mass_1 the level's
   double mass = 500e3;     // kg, wall mass (thesis 500 t)
@@ -61,8 +61,8 @@ struct WallConfig {
 // A 2D shear building: optional base slab on isolators, floors bottom to top.
 struct BuildingConfig {
   std::string name = "building";
-  bool isolated = true;          // false: fixed base (no base slab DOF)
-  double base_mass = 0.0;        // kg, base slab (isolated only)
+  bool isolated = true;    // false: fixed base (no base slab DOF)
+  double base_mass = 0.0;  // kg, base slab (isolated only)
   std::vector<FloorConfig> floors;
   IsolatorConfig isolator;
   SuperstructureDamping damping;
@@ -73,17 +73,17 @@ struct BuildingConfig {
 // A neighbouring building at a gap; floors at equal elevation pound slab to slab.
 struct NeighbourConfig {
   BuildingConfig building;
-  bool right = true;      // side of the main building it stands on (+x = right)
-  double gap = 0.1;       // m, clear distance at rest
-  ImpactLawConfig impact; // masses are taken from the two colliding levels
+  bool right = true;       // side of the main building it stands on (+x = right)
+  double gap = 0.1;        // m, clear distance at rest
+  ImpactLawConfig impact;  // masses are taken from the two colliding levels
 };
 
 struct GroundMotionConfig {
-  bool use_pulse = true;        // no record given -> built-in pulse
-  std::string record_path;      // resolved relative to the model file
-  RecordReadOptions read;       // format, column, dt, unit, scale
+  bool use_pulse = true;    // no record given -> built-in pulse
+  std::string record_path;  // resolved relative to the model file
+  RecordReadOptions read;   // format, column, dt, unit, scale
   PulseParameters pulse;
-  double extra_time = 0.0;      // s of free vibration computed after the record ends
+  double extra_time = 0.0;  // s of free vibration computed after the record ends
 };
 
 struct AnalysisConfig {
@@ -96,12 +96,12 @@ struct AnalysisConfig {
   double steps_per_period = 25.0;
   // Adaptive: local error tolerance (see THEORY-notes.md, "step control").
   double tolerance = 1e-3;
-  int max_halvings = 16;              // smallest adaptive step = dt / 2^max_halvings
+  int max_halvings = 16;  // smallest adaptive step = dt / 2^max_halvings
   // During a contact the step is at most (contact period) / steps_per_contact, with the
   // contact period pi sqrt(m_eff / k_tangent).
   double steps_per_contact = 100.0;
-  bool locate_events = true;          // cut steps at contact onset / separation / phase change
-  double newton_tolerance = 1e-9;     // relative residual, see newmark.h
+  bool locate_events = true;       // cut steps at contact onset / separation / phase change
+  double newton_tolerance = 1e-9;  // relative residual, see newmark.h
   int max_iterations = 25;
 };
 

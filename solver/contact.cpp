@@ -53,7 +53,10 @@ double Contact1D::crossing_fraction(double d0, double r0, double d1, double r1) 
   double t = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
   for (int it = 0; it < 50; ++it) {
     const double value = p(t);
-    if ((value > 0) == (d0 > 0)) lo = t; else hi = t;
+    if ((value > 0) == (d0 > 0))
+      lo = t;
+    else
+      hi = t;
     const double slope = dp(t);
     double next = slope != 0.0 ? t - value / slope : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -83,7 +86,8 @@ void Contact1D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
     const double rate_at_onset =
         C.delta > 0 ? C.rate
                     : ((6 * t2 - 6 * theta) * C.delta + (3 * t2 - 4 * theta + 1) * h_ * C.rate +
-                       (-6 * t2 + 6 * theta) * T.delta + (3 * t2 - 2 * theta) * h_ * T.rate) / h_;
+                       (-6 * t2 + 6 * theta) * T.delta + (3 * t2 - 2 * theta) * h_ * T.rate) /
+                          h_;
     law_->begin_contact(std::max(rate_at_onset, 0.0), T.phase);
     T.in_contact = true;
     T.started = true;
@@ -139,9 +143,13 @@ void Contact1D::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
   }
 }
 
-double Contact1D::power(const Eigen::VectorXd& v) const { return trial_.force * kinematics(v); }
+double Contact1D::power(const Eigen::VectorXd& v) const {
+  return trial_.force * kinematics(v);
+}
 
-double Contact1D::stored_energy() const { return trial_stored_; }
+double Contact1D::stored_energy() const {
+  return trial_stored_;
+}
 
 void Contact1D::commit() {
   if (trial_.started) {
@@ -187,7 +195,8 @@ double Contact1D::event_fraction() {
     const double f = T.end_indentation > 0  // no-tension law: its force reached 0
                          ? C.raw_force / (C.raw_force - T.raw_force)
                          : crossing_fraction(C.delta, C.rate, T.delta, T.rate);
-    consider(std::min(f, 1.0 - 1e-15), T.end_indentation > 0 ? Event::kNoTension : Event::kSeparation);
+    consider(std::min(f, 1.0 - 1e-15),
+             T.end_indentation > 0 ? Event::kNoTension : Event::kSeparation);
   }
   if (C.in_contact && T.in_contact && C.rate > 0 && T.rate <= 0)  // approach -> restitution
     consider(C.rate / (C.rate - T.rate), Event::kPhase);
@@ -202,7 +211,8 @@ bool Contact1D::settle_event() {
     case Event::kOnset:
       if (C.in_contact) return false;
       law_->begin_contact(std::max(C.rate, 0.0), C.phase);
-      contact_step_ = contact_period_estimate(C.phase.impact_velocity, C.phase) / steps_per_contact_;
+      contact_step_ =
+          contact_period_estimate(C.phase.impact_velocity, C.phase) / steps_per_contact_;
       steps_in_contact_ = 0;
       C.in_contact = true;
       ++impacts_;
@@ -235,7 +245,8 @@ double Contact1D::step_limit() const {
   // Hertz-type laws grows as delta^(n-1), Jankowski's damping as delta^(1/4) (infinite slope).
   double limit = contact_step_ * std::ldexp(1.0, std::min(steps_in_contact_, 5) - 5);
   if (C.stiffness > 0)
-    limit = std::min(limit, std::numbers::pi * std::sqrt(m_eff_ / C.stiffness) / steps_per_contact_);
+    limit =
+        std::min(limit, std::numbers::pi * std::sqrt(m_eff_ / C.stiffness) / steps_per_contact_);
   return limit;
 }
 
@@ -263,8 +274,8 @@ double Contact1D::contact_period_estimate(double impact_velocity, const ImpactPh
 }
 
 std::string Contact1D::output_name(int i) const {
-  static const char* kNames[] = {"force", "penetration", "impacts", "impact_velocity",
-                                 "indentation", "dissipated_energy"};
+  static const char* kNames[] = {"force",           "penetration", "impacts",
+                                 "impact_velocity", "indentation", "dissipated_energy"};
   return kNames[i];
 }
 
@@ -284,12 +295,18 @@ void Contact1D::outputs(double* out) const {
 
 double Contact1D::output(int i) const {
   switch (i) {
-    case 0: return trial_.force;
-    case 1: return std::max(trial_.delta, 0.0);
-    case 2: return trial_impacts();
-    case 3: return std::max(max_impact_velocity_, trial_.started ? trial_.phase.impact_velocity : 0.0);
-    case 4: return indentation_ + (trial_.ended ? trial_.end_indentation : 0.0);
-    default: return trial_work_ - trial_stored_;
+    case 0:
+      return trial_.force;
+    case 1:
+      return std::max(trial_.delta, 0.0);
+    case 2:
+      return trial_impacts();
+    case 3:
+      return std::max(max_impact_velocity_, trial_.started ? trial_.phase.impact_velocity : 0.0);
+    case 4:
+      return indentation_ + (trial_.ended ? trial_.end_indentation : 0.0);
+    default:
+      return trial_work_ - trial_stored_;
   }
 }
 

@@ -1,4 +1,5 @@
-// A 2D contact between two bodies on one line: penetration delta = c_a u_a + c_b u_b - gap - indentation
+// A 2D contact between two bodies on one line: penetration delta = c_a u_a + c_b u_b - gap -
+// indentation
 // (> 0 in contact); the law's force F >= 0 pushes them apart: f_a = c_a F, f_b = c_b F.
 #pragma once
 
@@ -61,16 +62,16 @@ class Contact1D final : public Element {
  private:
   // The state of the contact at the end of a (trial or committed) step.
   struct State {
-    double delta = -1.0;       // penetration with the current indentation, m (< 0 open)
-    double rate = 0.0;         // d delta / dt, m/s
+    double delta = -1.0;  // penetration with the current indentation, m (< 0 open)
+    double rate = 0.0;    // d delta / dt, m/s
     bool in_contact = false;
-    double force = 0.0;        // N, as applied (>= 0 unless the law allows tension)
-    double raw_force = 0.0;    // N, the law's force before the no-tension clamp
-    double stiffness = 0.0;    // dF/d delta as applied
-    double damping = 0.0;      // dF/d rate as applied
+    double force = 0.0;      // N, as applied (>= 0 unless the law allows tension)
+    double raw_force = 0.0;  // N, the law's force before the no-tension clamp
+    double stiffness = 0.0;  // dF/d delta as applied
+    double damping = 0.0;    // dF/d rate as applied
     ImpactPhase phase;
-    bool started = false;      // this step began a contact
-    bool ended = false;        // this step ended a contact
+    bool started = false;  // this step began a contact
+    bool ended = false;    // this step ended a contact
     double onset_fraction = 1.0;
     double end_indentation = 0.0;  // penetration left when a no-tension contact ended
   };
@@ -89,7 +90,7 @@ class Contact1D final : public Element {
   enum class Event { kNone, kOnset, kSeparation, kNoTension, kPhase };
   Event pending_ = Event::kNone;  // the event found by the last event_fraction()
   State committed_, trial_;
-  double indentation_ = 0.0;  // accumulated permanent indentation (committed), m
+  double indentation_ = 0.0;     // accumulated permanent indentation (committed), m
   double contact_step_ = 1e300;  // step limit of the current contact from its estimated period
   int steps_in_contact_ = 0;     // accepted steps since the current contact began
   int impacts_ = 0;

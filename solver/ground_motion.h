@@ -11,9 +11,9 @@ namespace isopound {
 // Uniformly sampled ground acceleration. Sample k is at time k*dt; between samples the
 // acceleration is linear (the convention of Nigam-Jennings and of PEER processing).
 struct GroundMotion {
-  std::string name;                 // file stem or "pulse"
-  double dt = 0.0;                  // s, > 0
-  std::vector<double> acceleration; // m/s^2, acceleration[0] at t = 0
+  std::string name;                  // file stem or "pulse"
+  double dt = 0.0;                   // s, > 0
+  std::vector<double> acceleration;  // m/s^2, acceleration[0] at t = 0
 
   double duration() const { return dt * static_cast<double>(acceleration.size() - 1); }
   // Linear interpolation; 0 outside [0, duration()].
@@ -24,9 +24,9 @@ struct GroundMotion {
 // acceleration exactly for a piecewise-linear acceleration with zero initial velocity
 // and displacement, and no baseline correction (the records are already processed).
 struct GroundMotionPeaks {
-  double pga = 0.0;  // m/s^2, max |a|
-  double pgv = 0.0;  // m/s
-  double pgd = 0.0;  // m
+  double pga = 0.0;                              // m/s^2, max |a|
+  double pgv = 0.0;                              // m/s
+  double pgd = 0.0;                              // m
   double t_pga = 0.0, t_pgv = 0.0, t_pgd = 0.0;  // s, time of each peak
 };
 GroundMotionPeaks peaks_of(const GroundMotion& motion);
@@ -52,9 +52,9 @@ struct RecordReadOptions {
   // column, set time_column to its index (dt is then taken from it and must be uniform).
   int column = 0;
   int time_column = -1;
-  double dt = 0.0;  // s; columns without a time column need it (> 0)
+  double dt = 0.0;                               // s; columns without a time column need it (> 0)
   AccelerationUnit unit = AccelerationUnit::kG;  // PEER files are always in g
-  double scale = 1.0;  // multiplies the acceleration
+  double scale = 1.0;                            // multiplies the acceleration
 };
 
 // Reads a record. Throws RecordError (file, line, what) on a truncated file, a non-numeric
@@ -65,13 +65,13 @@ GroundMotion read_record(const std::string& path, const RecordReadOptions& optio
 // v(t) = A/2 [1 + cos(2 pi f_p (t - t0)/gamma)] cos(2 pi f_p (t - t0) + nu)
 // for |t - t0| <= gamma/(2 f_p), else 0. Acceleration is its exact derivative.
 struct PulseParameters {
-  double amplitude = 1.0;   // A, m/s (peak velocity scale)
-  double period = 2.0;      // T_p = 1/f_p, s
-  double gamma = 2.0;       // oscillatory character, > 1
-  double phase = 0.0;       // nu, rad
-  double t_peak = 4.0;      // t0, s: time of the envelope peak
-  double duration = 20.0;   // s, total length of the generated series (free vibration after)
-  double dt = 0.005;        // s, sampling of the generated series
+  double amplitude = 1.0;  // A, m/s (peak velocity scale)
+  double period = 2.0;     // T_p = 1/f_p, s
+  double gamma = 2.0;      // oscillatory character, > 1
+  double phase = 0.0;      // nu, rad
+  double t_peak = 4.0;     // t0, s: time of the envelope peak
+  double duration = 20.0;  // s, total length of the generated series (free vibration after)
+  double dt = 0.005;       // s, sampling of the generated series
 };
 double pulse_velocity(const PulseParameters& p, double t);
 double pulse_acceleration(const PulseParameters& p, double t);

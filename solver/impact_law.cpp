@@ -430,7 +430,9 @@ std::unique_ptr<ImpactLaw> make_impact_law(const ImpactLawConfig& config) {
                               ")");
 }
 
-std::span<const std::string_view> impact_law_names() { return kLawNames; }
+std::span<const std::string_view> impact_law_names() {
+  return kLawNames;
+}
 
 // ---------------------------------------------------------------------------------------------
 // Helpers

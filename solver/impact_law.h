@@ -29,14 +29,15 @@ enum class ImpactMaterial { kNone, kConcrete, kSteel, kTimber, kCeramic };
 
 struct ImpactLawConfig {
   std::string law = "kelvin_voigt";  // see make_impact_law for the names
-  double k = 2.5e9;          // N/m, linear-type laws (1-6)
-  double k_h = 2.5e9;        // N/m^n, Hertz-type laws (7-10)
-  double n = 1.5;            // Hertz exponent (laws 7, 9, 10; law 8 uses 1.5 by definition)
-  double e = 0.7;            // coefficient of restitution in (0, 1] (constant e)
+  double k = 2.5e9;                  // N/m, linear-type laws (1-6)
+  double k_h = 2.5e9;                // N/m^n, Hertz-type laws (7-10)
+  double n = 1.5;                    // Hertz exponent (laws 7, 9, 10; law 8 uses 1.5 by definition)
+  double e = 0.7;                    // coefficient of restitution in (0, 1] (constant e)
   ImpactMaterial material = ImpactMaterial::kNone;  // velocity-dependent e instead of e
-  double mass_1 = 0.0;       // kg, the two colliding masses -> m_eff = m1 m2 / (m1 + m2)
-  double mass_2 = 0.0;       // kg (a rigid wall: its given mass, thesis 500 t)
-  // Mahmoud-Jankowski xi: "eq_3_12" (default) xi = (1-e^2)/(e(e(pi-2)+2)); "eq_3_11" (1-e^2)/(pi e).
+  double mass_1 = 0.0;  // kg, the two colliding masses -> m_eff = m1 m2 / (m1 + m2)
+  double mass_2 = 0.0;  // kg (a rigid wall: its given mass, thesis 500 t)
+  // Mahmoud-Jankowski xi: "eq_3_12" (default) xi = (1-e^2)/(e(e(pi-2)+2)); "eq_3_11" (1-e^2)/(pi
+  // e).
   std::string xi_formula = "eq_3_12";
   // Laws dividing by v_imp (4, 6, 9, 10): approach speeds below this are raised to it (m/s).
   double min_impact_velocity = 1e-3;

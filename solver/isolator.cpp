@@ -28,9 +28,8 @@ IsolatorProperties isolator_properties(const IsolatorConfig& c, double m) {
   p.alpha = p.elastic_stiffness > 0 ? p.post_yield_stiffness / p.elastic_stiffness : 1.0;
   p.characteristic_strength = (1.0 - p.alpha) * p.yield_force;
   if (c.model != IsolatorConfig::Model::kLinear && !(p.alpha < 1.0))
-    throw std::invalid_argument(
-        "isolator: the yield force is not above K_post u_y (alpha = " + std::to_string(p.alpha) +
-        " >= 1); raise QW or uy, or lengthen Tb");
+    throw std::invalid_argument("isolator: the yield force is not above K_post u_y (alpha = " +
+                                std::to_string(p.alpha) + " >= 1); raise QW or uy, or lengthen Tb");
   return p;
 }
 

@@ -13,11 +13,11 @@ inline constexpr double kGravity = 9.81;  // m/s^2 (THEORY: g = 9.81)
 
 // Mechanical constants of an isolation system, derived from IsolatorConfig and the mass.
 struct IsolatorProperties {
-  double post_yield_stiffness = 0.0;  // K_post, N/m
-  double yield_force = 0.0;           // F_y, N
-  double elastic_stiffness = 0.0;     // K_el = F_y / u_y, N/m
-  double alpha = 0.0;                 // K_post / K_el
-  double yield_displacement = 0.0;    // u_y, m
+  double post_yield_stiffness = 0.0;     // K_post, N/m
+  double yield_force = 0.0;              // F_y, N
+  double elastic_stiffness = 0.0;        // K_el = F_y / u_y, N/m
+  double alpha = 0.0;                    // K_post / K_el
+  double yield_displacement = 0.0;       // u_y, m
   double characteristic_strength = 0.0;  // (1 - alpha) F_y, N (= Q by default)
 };
 

@@ -73,10 +73,11 @@ void print_modes(const ModelConfig& config) {
     }
   };
   std::vector<std::string> floor_labels;
-  for (std::size_t i = 0; i < b.floors.size(); ++i) floor_labels.push_back("floor " + std::to_string(i + 1));
+  for (std::size_t i = 0; i < b.floors.size(); ++i)
+    floor_labels.push_back("floor " + std::to_string(i + 1));
   const ShearStick fixed = fixed_base_superstructure(b);
-  show("Fixed-base superstructure", compute_modes(fixed.stiffness, fixed.mass,
-                                                  Eigen::VectorXd::Ones(fixed.mass.rows())),
+  show("Fixed-base superstructure",
+       compute_modes(fixed.stiffness, fixed.mass, Eigen::VectorXd::Ones(fixed.mass.rows())),
        floor_labels);
   if (!b.isolated) return;
   Model model = make_model(b);
@@ -127,7 +128,8 @@ int main(int argc, char** argv) {
   const StudyCommands study_commands = add_study_commands(app);  // study commands (sweep, export)
 
   CLI11_PARSE(app, argc, argv);
-  if (const auto code = run_study_command(study_commands)) return *code;  // study commands (sweep, export)
+  if (const auto code = run_study_command(study_commands))
+    return *code;  // study commands (sweep, export)
 
   try {
     if (*demo) return run_and_write(demo_config(), out_dir, false);

@@ -12,18 +12,18 @@
 namespace isopound {
 
 struct Dof {
-  std::string label;   // e.g. "building/base", "building/floor 2"
-  int structure = 0;   // index into Model::structures
-  int level = 0;       // 0 = base slab (or the lowest DOF), 1.. = floors
+  std::string label;  // e.g. "building/base", "building/floor 2"
+  int structure = 0;  // index into Model::structures
+  int level = 0;      // 0 = base slab (or the lowest DOF), 1.. = floors
 };
 
 // Bookkeeping for outputs: which DOFs belong to a structure, bottom to top, and its stories.
 struct StructureInfo {
   std::string name;
-  std::vector<int> level_dofs;       // DOF index of each level, bottom to top
-  bool has_base = false;             // level_dofs[0] is an isolated base slab
-  std::vector<double> story_heights; // story s links level s-1 (or ground) and level s
-  int isolator_element = -1;         // index into Model::elements, or -1
+  std::vector<int> level_dofs;        // DOF index of each level, bottom to top
+  bool has_base = false;              // level_dofs[0] is an isolated base slab
+  std::vector<double> story_heights;  // story s links level s-1 (or ground) and level s
+  int isolator_element = -1;          // index into Model::elements, or -1
 };
 
 struct Model {

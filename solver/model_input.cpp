@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <optional>
-#include <iterator>
 #include <vector>
 
 namespace isopound {
@@ -16,8 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kIntMax = std::numeric_limits<int>::max();
-constexpr int kMaxFloors = 1000;      // a shear building model; the limit guards the short form's count
-constexpr int kMaxHalvings = 60;      // dt / 2^60 is already far below any physical time scale
+constexpr int kMaxFloors = 1000;  // a shear building model; the limit guards the short form's count
+constexpr int kMaxHalvings = 60;  // dt / 2^60 is already far below any physical time scale
 constexpr double kMaxPulseSamples = 1e8;
 constexpr const char* kFixedBaseOnly = "not allowed for a fixed-base building (isolated: false)";
 
@@ -34,12 +34,15 @@ std::vector<FloorConfig> read_floors(const InputNode& node) {
       floors.push_back(floor);
     }
     if (floors.empty()) node.fail("no floors: give at least one {mass, stiffness, height}");
-    if (floors.size() > kMaxFloors) node.fail("more than " + std::to_string(kMaxFloors) + " floors");
+    if (floors.size() > kMaxFloors)
+      node.fail("more than " + std::to_string(kMaxFloors) + " floors");
     return floors;
   }
   if (!node.is_map())
-    node.fail("expected a list of floors [{mass, stiffness, height}, ...] or the short form "
-              "{count, mass, roof_mass, stiffness, height}; got " + node.kind());
+    node.fail(
+        "expected a list of floors [{mass, stiffness, height}, ...] or the short form "
+        "{count, mass, roof_mass, stiffness, height}; got " +
+        node.kind());
   // Short form: `count` equal floors, the top one (the roof) optionally lighter.
   node.expect_keys({"count", "mass", "roof_mass", "stiffness", "height"});
   const int count = node.required("count").integer(1, kMaxFloors);
@@ -54,15 +57,20 @@ std::vector<FloorConfig> read_floors(const InputNode& node) {
 
 IsolatorConfig read_isolator(const InputNode& node) {
   using Model = IsolatorConfig::Model;
-  node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force", "carried_mass"});
+  node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
+                    "carried_mass"});
   IsolatorConfig iso;
   if (const auto model = node.find("model"))
-    iso.model = model->choice<Model>({{"linear", Model::kLinear}, {"bilinear", Model::kBilinear}, {"bouc_wen", Model::kBoucWen}});
+    iso.model = model->choice<Model>({{"linear", Model::kLinear},
+                                      {"bilinear", Model::kBilinear},
+                                      {"bouc_wen", Model::kBoucWen}});
   node.read_quantity("Tb", dim::kTime, Bound::kPositive, iso.period);
   if (const auto qw = node.find("QW")) {
     iso.strength_ratio = qw->number(Bound::kNonNegative);
     if (iso.strength_ratio == 0.0 && iso.model != Model::kLinear)
-      qw->fail("must be > 0 for the bilinear and bouc_wen models (an isolator without strength is model: linear)");
+      qw->fail(
+          "must be > 0 for the bilinear and bouc_wen models (an isolator without strength is "
+          "model: linear)");
   }
   node.read_quantity("uy", dim::kLength, Bound::kPositive, iso.yield_displacement);
   node.read_number("n", Bound::kPositive, iso.n);
@@ -85,15 +93,18 @@ IsolatorConfig read_isolator(const InputNode& node) {
 // The two Rayleigh modes: distinct integers among the fixed-base modes 1..floor_count.
 void read_rayleigh_modes(const InputNode& node, int floor_count, SuperstructureDamping& damping) {
   const std::vector<InputNode> modes = node.elements();
-  if (modes.size() != 2) node.fail("expected two mode numbers, e.g. [1, 2]; got " + std::to_string(modes.size()));
+  if (modes.size() != 2)
+    node.fail("expected two mode numbers, e.g. [1, 2]; got " + std::to_string(modes.size()));
   int values[2] = {0, 0};
   for (int i = 0; i < 2; ++i) {
     values[i] = modes[i].integer(1, kIntMax);
     if (values[i] > floor_count)
-      modes[i].fail("mode " + std::to_string(values[i]) + " does not exist: the fixed-base building has " +
-                    std::to_string(floor_count) + " modes (one per floor)");
+      modes[i].fail("mode " + std::to_string(values[i]) +
+                    " does not exist: the fixed-base building has " + std::to_string(floor_count) +
+                    " modes (one per floor)");
   }
-  if (values[0] == values[1]) node.fail("the two Rayleigh modes must differ (got " + std::to_string(values[0]) + " twice)");
+  if (values[0] == values[1])
+    node.fail("the two Rayleigh modes must differ (got " + std::to_string(values[0]) + " twice)");
   damping.mode_a = values[0];
   damping.mode_b = values[1];
 }
@@ -116,7 +127,9 @@ void read_damping(const InputNode& building, BuildingConfig& b) {
   if (superstructure) {
     superstructure->expect_keys({"type", "ratio", "modes"});
     type = superstructure->find("type");
-    if (type) s.type = type->choice<Type>({{"rayleigh", Type::kRayleigh}, {"modal", Type::kModal}, {"none", Type::kNone}});
+    if (type)
+      s.type = type->choice<Type>(
+          {{"rayleigh", Type::kRayleigh}, {"modal", Type::kModal}, {"none", Type::kNone}});
     if (const auto ratio = superstructure->find("ratio")) {
       if (s.type == Type::kNone) ratio->fail("has no effect with type: none");
       s.ratio = ratio->number(Bound::kFraction);
@@ -128,8 +141,9 @@ void read_damping(const InputNode& building, BuildingConfig& b) {
   const int floor_count = static_cast<int>(b.floors.size());
   if (floor_count < 2) {
     // Point at what chose Rayleigh: the written type, else the section that defaulted it.
-    const std::string what = "Rayleigh damping needs two fixed-base modes but a 1-storey building has one; "
-                             "use type: modal";
+    const std::string what =
+        "Rayleigh damping needs two fixed-base modes but a 1-storey building has one; "
+        "use type: modal";
     if (type) type->fail(what);
     if (superstructure) superstructure->fail_at_key("type", what + " (rayleigh is the default)");
     if (damping) damping->fail_at_key("superstructure", what + " (rayleigh is the default)");
@@ -144,12 +158,16 @@ const std::vector<std::string_view> kImpactKeys = {
 
 void read_impact(const InputNode& node, ImpactLawConfig& c) {
   if (const auto law = node.find("law")) {
-    c.law = law->choice<std::string>(
-        {{"linear", "linear"}, {"kelvin_voigt", "kelvin_voigt"},
-         {"modified_kelvin_voigt", "modified_kelvin_voigt"}, {"ye", "ye"},
-         {"mahmoud_jankowski", "mahmoud_jankowski"}, {"pant_wijeyewickrema", "pant_wijeyewickrema"},
-         {"hertz", "hertz"}, {"jankowski", "jankowski"},
-         {"hertz_damp_muthukumar", "hertz_damp_muthukumar"}, {"hertz_damp_ye", "hertz_damp_ye"}});
+    c.law = law->choice<std::string>({{"linear", "linear"},
+                                      {"kelvin_voigt", "kelvin_voigt"},
+                                      {"modified_kelvin_voigt", "modified_kelvin_voigt"},
+                                      {"ye", "ye"},
+                                      {"mahmoud_jankowski", "mahmoud_jankowski"},
+                                      {"pant_wijeyewickrema", "pant_wijeyewickrema"},
+                                      {"hertz", "hertz"},
+                                      {"jankowski", "jankowski"},
+                                      {"hertz_damp_muthukumar", "hertz_damp_muthukumar"},
+                                      {"hertz_damp_ye", "hertz_damp_ye"}});
   }
   node.read_number("n", Bound::kPositive, c.n);
   node.read_quantity("k", dim::kStiffness, Bound::kPositive, c.k);
@@ -171,12 +189,13 @@ void read_impact(const InputNode& node, ImpactLawConfig& c) {
   }
   if (const auto xi = node.find("xi_formula"))
     c.xi_formula = xi->choice<std::string>({{"eq_3_12", "eq_3_12"}, {"eq_3_11", "eq_3_11"}});
-  node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive, c.min_impact_velocity);
+  node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive,
+                     c.min_impact_velocity);
 }
 
 WallConfig read_wall(const InputNode& node) {
-  std::vector<std::string_view> keys = {"sides", "gap", "gap_left", "gap_right", "level",
-                                        "mass", "stiffness", "damping"};
+  std::vector<std::string_view> keys = {"sides", "gap",  "gap_left",  "gap_right",
+                                        "level", "mass", "stiffness", "damping"};
   keys.insert(keys.end(), kImpactKeys.begin(), kImpactKeys.end());
   node.expect_keys(keys);
   WallConfig w;
@@ -188,7 +207,8 @@ WallConfig read_wall(const InputNode& node) {
   if (const auto gap = node.find("gap")) {
     w.gap_left = w.gap_right = gap->quantity(dim::kLength, Bound::kNonNegative);
     for (const char* key : {"gap_left", "gap_right"})
-      if (const auto g = node.find(key)) g->fail("give either gap (both sides) or gap_left/gap_right");
+      if (const auto g = node.find(key))
+        g->fail("give either gap (both sides) or gap_left/gap_right");
   }
   node.read_quantity("gap_left", dim::kLength, Bound::kNonNegative, w.gap_left);
   node.read_quantity("gap_right", dim::kLength, Bound::kNonNegative, w.gap_right);
@@ -206,7 +226,8 @@ NeighbourConfig read_neighbour(const InputNode& node) {
   node.expect_keys({"building", "side", "gap", "impact"});
   NeighbourConfig n;
   n.building = read_building(node.required("building"));
-  if (const auto side = node.find("side")) n.right = side->choice<bool>({{"left", false}, {"right", true}});
+  if (const auto side = node.find("side"))
+    n.right = side->choice<bool>({{"left", false}, {"right", true}});
   n.gap = node.required("gap").quantity(dim::kLength, Bound::kNonNegative);
   if (const auto impact = node.find("impact")) {
     impact->expect_keys(kImpactKeys);
@@ -273,7 +294,8 @@ PulseParameters read_pulse(const InputNode& node) {
 
 GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& base_dir) {
   using Format = RecordReadOptions::Format;
-  node.expect_keys({"record", "format", "column", "time_column", "dt", "unit", "scale", "extra_time", "pulse"});
+  node.expect_keys(
+      {"record", "format", "column", "time_column", "dt", "unit", "scale", "extra_time", "pulse"});
   GroundMotionConfig g;
   node.read_quantity("extra_time", dim::kTime, Bound::kNonNegative, g.extra_time);
   const auto record = node.find("record");
@@ -284,7 +306,8 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
     if (const auto pulse = node.find("pulse")) g.pulse = read_pulse(*pulse);
     return g;
   }
-  if (const auto pulse = node.find("pulse")) pulse->fail("give either 'record' or 'pulse', not both");
+  if (const auto pulse = node.find("pulse"))
+    pulse->fail("give either 'record' or 'pulse', not both");
   const std::string path = record->string();
   if (path.empty()) record->fail("must not be empty");
   fs::path resolved(path);
@@ -295,23 +318,27 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
   RecordReadOptions& read = g.read;
   const auto format = node.find("format");
   if (format)
-    read.format = format->choice<Format>({{"auto", Format::kAuto}, {"peer", Format::kPeer}, {"columns", Format::kColumns}});
+    read.format = format->choice<Format>(
+        {{"auto", Format::kAuto}, {"peer", Format::kPeer}, {"columns", Format::kColumns}});
   node.read_integer("column", 0, kIntMax, read.column);
   const auto time_column = node.find("time_column");
   if (time_column) {
     read.time_column = time_column->integer(0, kIntMax);
-    if (read.time_column == read.column) time_column->fail("is the same as 'column' (" + std::to_string(read.column) + ")");
-    if (node.has("dt")) node.find("dt")->fail("give either 'dt' or 'time_column' (dt is then read from the times)");
+    if (read.time_column == read.column)
+      time_column->fail("is the same as 'column' (" + std::to_string(read.column) + ")");
+    if (node.has("dt"))
+      node.find("dt")->fail("give either 'dt' or 'time_column' (dt is then read from the times)");
   }
   node.read_quantity("dt", dim::kTime, Bound::kNonNegative, read.dt);
   if (read.format == Format::kColumns && !time_column && read.dt == 0.0)
     node.fail_at_key("dt", "a columns record without 'time_column' needs 'dt' > 0");
   if (const auto unit = node.find("unit")) {
-    read.unit = unit->choice<AccelerationUnit>({{"g", AccelerationUnit::kG},
-                                                {"m/s2", AccelerationUnit::kMetrePerSecond2},
-                                                {"m/s^2", AccelerationUnit::kMetrePerSecond2},
-                                                {"cm/s2", AccelerationUnit::kCentimetrePerSecond2},
-                                                {"cm/s^2", AccelerationUnit::kCentimetrePerSecond2}});
+    read.unit =
+        unit->choice<AccelerationUnit>({{"g", AccelerationUnit::kG},
+                                        {"m/s2", AccelerationUnit::kMetrePerSecond2},
+                                        {"m/s^2", AccelerationUnit::kMetrePerSecond2},
+                                        {"cm/s2", AccelerationUnit::kCentimetrePerSecond2},
+                                        {"cm/s^2", AccelerationUnit::kCentimetrePerSecond2}});
     if (read.format == Format::kPeer && read.unit != AccelerationUnit::kG)
       unit->fail("PEER files are always in g (use 'scale' to change the amplitude)");
   }
@@ -321,13 +348,15 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
 
 AnalysisConfig read_analysis(const InputNode& node) {
   using Stepping = AnalysisConfig::Stepping;
-  node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings", "newton_tolerance",
-                    "max_iterations", "steps_per_contact", "locate_events"});
+  node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings",
+                    "newton_tolerance", "max_iterations", "steps_per_contact", "locate_events"});
   AnalysisConfig a;
   if (const auto stepping = node.find("stepping"))
-    a.stepping = stepping->choice<Stepping>({{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}});
+    a.stepping = stepping->choice<Stepping>(
+        {{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}});
   node.read_quantity("dt", dim::kTime, Bound::kNonNegative, a.dt);
-  node.read_number("steps_per_period", Bound::kNonNegative, a.steps_per_period);  // 0: no period limit
+  node.read_number("steps_per_period", Bound::kNonNegative,
+                   a.steps_per_period);  // 0: no period limit
   node.read_number("tolerance", Bound::kPositive, a.tolerance);
   node.read_integer("max_halvings", 0, kMaxHalvings, a.max_halvings);
   node.read_number("newton_tolerance", Bound::kPositive, a.newton_tolerance);
@@ -345,12 +374,17 @@ OutputConfig read_output(const InputNode& node) {
   return o;
 }
 
-int line_of(const YAML::Mark& mark) { return mark.is_null() ? 0 : mark.line + 1; }
-int column_of(const YAML::Mark& mark) { return mark.is_null() ? 0 : mark.column + 1; }
+int line_of(const YAML::Mark& mark) {
+  return mark.is_null() ? 0 : mark.line + 1;
+}
+int column_of(const YAML::Mark& mark) {
+  return mark.is_null() ? 0 : mark.column + 1;
+}
 
 }  // namespace
 
-ModelConfig load_model(const YAML::Node& root, const std::string& source_name, const std::string& base_dir) {
+ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
+                       const std::string& base_dir) {
   try {
     const InputNode top(root, source_name);
     top.expect_keys({"building", "neighbours", "ground_motion", "analysis", "output"});
@@ -361,36 +395,21 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name, c
       if (!list->is_sequence()) list->fail("must be a list of neighbours");
       for (const InputNode& n : list->elements()) model.neighbours.push_back(read_neighbour(n));
     }
-    if (const auto n = top.find("ground_motion")) model.ground_motion = read_ground_motion(*n, base_dir);
+    if (const auto n = top.find("ground_motion"))
+      model.ground_motion = read_ground_motion(*n, base_dir);
     if (const auto n = top.find("analysis")) model.analysis = read_analysis(*n);
     if (const auto n = top.find("output")) model.output = read_output(*n);
     return model;
   } catch (const YAML::Exception& e) {
-    // Not expected (keys are found by iteration, never indexed), but keep the promise of InputError.
+    // Not expected (keys are found by iteration, never indexed), but keep the promise of
+    // InputError.
     throw InputError(source_name, line_of(e.mark), column_of(e.mark), "", "YAML error: " + e.msg);
   }
 }
 
 ModelConfig load_model_file(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path, 0, 0, "", "file not found");
-  if (fs::is_directory(path, ec)) throw InputError(path, 0, 0, "", "is a directory, expected a YAML model file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, "", "cannot open the file");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError(path, 0, 0, "", "cannot read the file");
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, line_of(e.mark), column_of(e.mark), "", "YAML syntax error: " + e.msg);
-  }
-  if (documents.size() > 1) {
-    const YAML::Mark second = documents[1].IsDefined() ? documents[1].Mark() : YAML::Mark::null_mark();
-    throw InputError(path, line_of(second), column_of(second), "",
-                     "more than one YAML document ('---'); a model file holds one");
-  }
-  const YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
+  const std::string text = read_input_file(path, "a YAML model file");
+  const YAML::Node root = parse_single_document(text, path, "a model file");
   return load_model(root, path, fs::path(path).parent_path().string());
 }
 

@@ -7,10 +7,10 @@
 namespace isopound {
 
 struct Modes {
-  Eigen::VectorXd omega;          // rad/s, ascending
-  Eigen::VectorXd period;         // s
-  Eigen::MatrixXd shape;          // column j = mode j, phi^T M phi = 1
-  Eigen::VectorXd participation;  // Gamma_j = phi_j^T M iota
+  Eigen::VectorXd omega;                 // rad/s, ascending
+  Eigen::VectorXd period;                // s
+  Eigen::MatrixXd shape;                 // column j = mode j, phi^T M phi = 1
+  Eigen::VectorXd participation;         // Gamma_j = phi_j^T M iota
   Eigen::VectorXd effective_mass_ratio;  // Gamma_j^2 / (iota^T M iota)
 };
 

@@ -12,7 +12,8 @@ namespace isopound {
 NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
     : model_(model), settings_(settings) {
   const int n = model.size();
-  for (Eigen::VectorXd* x : {&u0_, &v0_, &a0_, &u1_, &v1_, &a1_, &p_hat_, &r_, &du_, &work_, &delta_})
+  for (Eigen::VectorXd* x :
+       {&u0_, &v0_, &a0_, &u1_, &v1_, &a1_, &p_hat_, &r_, &du_, &work_, &delta_})
     x->setZero(n);
   m_iota_ = model.mass * model.influence;
   force_ref_ = m_iota_.cwiseAbs().maxCoeff() * kGravity;
@@ -91,9 +92,10 @@ StepOutcome NewmarkStepper::try_step(double h, double ag1, bool cache, bool free
   p_hat_.noalias() -= model_.mass * work_;
   p_hat_.noalias() -= model_.damping * v0_;
   p_hat_ += m_iota_ * ag1;
-  const double tol_r = settings_.tolerance * force_ref_ +
-                       64.0 * std::numeric_limits<double>::epsilon() *
-                           (p_hat_.cwiseAbs().maxCoeff() + c2 * (model_.mass * v0_).cwiseAbs().maxCoeff());
+  const double tol_r =
+      settings_.tolerance * force_ref_ +
+      64.0 * std::numeric_limits<double>::epsilon() *
+          (p_hat_.cwiseAbs().maxCoeff() + c2 * (model_.mass * v0_).cwiseAbs().maxCoeff());
 
   delta_ = h * v0_ + (0.5 * h * h) * a0_;  // constant-acceleration predictor
   StepOutcome out;

@@ -30,9 +30,8 @@ int add_wall_structure(Model& model, const std::string& name, const WallConfig& 
   return dof;
 }
 
-void add_contact(Model& model, const std::string& label, ContactBody a, ContactBody b,
-                 double gap, ImpactLawConfig impact, double mass_a, double mass_b,
-                 double steps_per_contact) {
+void add_contact(Model& model, const std::string& label, ContactBody a, ContactBody b, double gap,
+                 ImpactLawConfig impact, double mass_a, double mass_b, double steps_per_contact) {
   if (!(gap >= 0)) throw std::invalid_argument(label + ": gap must be >= 0");
   impact.mass_1 = mass_a;
   impact.mass_2 = mass_b;
@@ -59,18 +58,20 @@ void add_walls(Model& model, int structure, const BuildingConfig& building,
   const StructureInfo& info = model.structures[structure];
   for (const WallConfig& wall : building.walls) {
     if (wall.level < 0 || wall.level >= static_cast<int>(info.level_dofs.size()))
-      throw std::invalid_argument("walls: level " + std::to_string(wall.level) + " does not exist in '" +
-                                  building.name + "'");
+      throw std::invalid_argument("walls: level " + std::to_string(wall.level) +
+                                  " does not exist in '" + building.name + "'");
     const int level_dof = info.level_dofs[wall.level];
     const double level_mass = model.mass(level_dof, level_dof);
-    const std::string where = wall.level == 0 && building.isolated ? "base" : "level " + std::to_string(wall.level);
+    const std::string where =
+        wall.level == 0 && building.isolated ? "base" : "level " + std::to_string(wall.level);
     for (const bool right : {false, true}) {
       if (right ? !wall.right : !wall.left) continue;
       const std::string side = right ? "right" : "left";
       const std::string name = building.name + "/wall " + side + " (" + where + ")";
       const double s = right ? 1.0 : -1.0;
       ContactBody wall_body;  // rigid wall: the ground
-      if (wall.stiffness > 0) wall_body = {add_wall_structure(model, name + " structure", wall), -s};
+      if (wall.stiffness > 0)
+        wall_body = {add_wall_structure(model, name + " structure", wall), -s};
       add_contact(model, name, {level_dof, s}, wall_body, right ? wall.gap_right : wall.gap_left,
                   wall.impact, level_mass, wall.mass, steps_per_contact);
     }
@@ -100,8 +101,10 @@ void add_neighbour(Model& model, int main, const BuildingConfig& main_building,
     }
   }
   if (pairs == 0)
-    throw std::invalid_argument("neighbour '" + neighbour.building.name + "' has no floor at the "
-                                "elevation of a level of '" + main_building.name + "'");
+    throw std::invalid_argument("neighbour '" + neighbour.building.name +
+                                "' has no floor at the "
+                                "elevation of a level of '" +
+                                main_building.name + "'");
 }
 
 }  // namespace isopound

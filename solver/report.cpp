@@ -19,9 +19,12 @@ const char* stepping_name(AnalysisConfig::Stepping s) {
 
 const char* isolator_name(IsolatorConfig::Model m) {
   switch (m) {
-    case IsolatorConfig::Model::kLinear: return "linear";
-    case IsolatorConfig::Model::kBilinear: return "bilinear";
-    case IsolatorConfig::Model::kBoucWen: return "bouc_wen";
+    case IsolatorConfig::Model::kLinear:
+      return "linear";
+    case IsolatorConfig::Model::kBilinear:
+      return "bilinear";
+    case IsolatorConfig::Model::kBoucWen:
+      return "bouc_wen";
   }
   return "?";
 }
@@ -42,31 +45,32 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
   j["model_file"] = config.source;
 
   const GroundMotionConfig& g = config.ground_motion;
-  j["ground_motion"] = {
-      {"name", job.motion.name},
-      {"source", g.use_pulse ? "built-in near-fault pulse" : g.record_path},
-      {"dt_s", job.motion.dt},
-      {"samples", job.motion.acceleration.size()},
-      {"duration_s", job.motion.duration()},
-      {"scale", g.read.scale},
-      {"pga_m_s2", job.motion_peaks.pga},
-      {"pga_g", job.motion_peaks.pga / kGravity},
-      {"pgv_m_s", job.motion_peaks.pgv},
-      {"pgd_m", job.motion_peaks.pgd},
-      {"baseline", "none: velocity and displacement integrated exactly from the "
-                   "piecewise-linear acceleration, zero initial conditions"}};
+  j["ground_motion"] = {{"name", job.motion.name},
+                        {"source", g.use_pulse ? "built-in near-fault pulse" : g.record_path},
+                        {"dt_s", job.motion.dt},
+                        {"samples", job.motion.acceleration.size()},
+                        {"duration_s", job.motion.duration()},
+                        {"scale", g.read.scale},
+                        {"pga_m_s2", job.motion_peaks.pga},
+                        {"pga_g", job.motion_peaks.pga / kGravity},
+                        {"pgv_m_s", job.motion_peaks.pgv},
+                        {"pgd_m", job.motion_peaks.pgd},
+                        {"baseline",
+                         "none: velocity and displacement integrated exactly from the "
+                         "piecewise-linear acceleration, zero initial conditions"}};
 
   const AnalysisConfig& a = config.analysis;
-  j["settings"] = {{"integrator", "Newmark average acceleration (gamma 1/2, beta 1/4), Newton-Raphson"},
-                   {"stepping", stepping_name(a.stepping)},
-                   {"dt_s", a.dt},
-                   {"steps_per_period", a.steps_per_period},
-                   {"tolerance", a.tolerance},
-                   {"max_halvings", a.max_halvings},
-                   {"newton_tolerance", a.newton_tolerance},
-                   {"max_iterations", a.max_iterations},
-                   {"extra_time_s", g.extra_time},
-                   {"isolator_model", isolator_name(config.building.isolator.model)}};
+  j["settings"] = {
+      {"integrator", "Newmark average acceleration (gamma 1/2, beta 1/4), Newton-Raphson"},
+      {"stepping", stepping_name(a.stepping)},
+      {"dt_s", a.dt},
+      {"steps_per_period", a.steps_per_period},
+      {"tolerance", a.tolerance},
+      {"max_halvings", a.max_halvings},
+      {"newton_tolerance", a.newton_tolerance},
+      {"max_iterations", a.max_iterations},
+      {"extra_time_s", g.extra_time},
+      {"isolator_model", isolator_name(config.building.isolator.model)}};
 
   json structures = json::array();
   std::size_t story_index = 0;
@@ -76,11 +80,12 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     json levels = json::array();
     for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
       const int d = s.level_dofs[k];
-      levels.push_back({{"label", model.dofs[d].label},
-                        {"displacement", peak(r.displacement[d], "peak_m")},
-                        {"velocity", peak(r.velocity[d], "peak_m_s")},
-                        {"absolute_acceleration", peak(r.absolute_acceleration[d], "peak_m_s2")},
-                        {"absolute_acceleration_peak_g", r.absolute_acceleration[d].value / kGravity}});
+      levels.push_back(
+          {{"label", model.dofs[d].label},
+           {"displacement", peak(r.displacement[d], "peak_m")},
+           {"velocity", peak(r.velocity[d], "peak_m_s")},
+           {"absolute_acceleration", peak(r.absolute_acceleration[d], "peak_m_s2")},
+           {"absolute_acceleration_peak_g", r.absolute_acceleration[d].value / kGravity}});
     }
     js["levels"] = levels;
     if (s.has_base) js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
@@ -120,8 +125,9 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                  {"balance_error_J", en.error},
                  {"relative_error", en.relative_error},
                  {"max_relative_error", en.max_relative_error},
-                 {"note", "each term integrated from its power with the trapezoidal rule in "
-                          "time; relative_error = |input - sum| / input at the end"}};
+                 {"note",
+                  "each term integrated from its power with the trapezoidal rule in "
+                  "time; relative_error = |input - sum| / input at the end"}};
   if (unobstructed) {
     // The main building is structure 0 in both runs, with the same DOF and story numbering.
     const AnalysisResult& u = unobstructed->analysis;
@@ -130,12 +136,13 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     json levels = json::array();
     for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
       const int d = s.level_dofs[k];
-      levels.push_back({{"label", model.dofs[d].label},
-                        {"unobstructed_displacement_m", u.displacement[d].value},
-                        {"unobstructed_absolute_acceleration_m_s2", u.absolute_acceleration[d].value},
-                        {"displacement_amplification", ratio(r.displacement[d].value, u.displacement[d].value)},
-                        {"acceleration_amplification",
-                         ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[d].value)}});
+      levels.push_back(
+          {{"label", model.dofs[d].label},
+           {"unobstructed_displacement_m", u.displacement[d].value},
+           {"unobstructed_absolute_acceleration_m_s2", u.absolute_acceleration[d].value},
+           {"displacement_amplification", ratio(r.displacement[d].value, u.displacement[d].value)},
+           {"acceleration_amplification",
+            ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[d].value)}});
     }
     json stories = json::array();
     const std::size_t count = s.story_heights.size();
@@ -143,11 +150,13 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       stories.push_back({{"label", r.stories[k].label},
                          {"unobstructed_drift_m", u.drift[k].value},
                          {"drift_amplification", ratio(r.drift[k].value, u.drift[k].value)}});
-    j["unobstructed"] = {{"note", "the same analysis without walls and neighbours; "
-                                  "amplification = peak with pounding / peak without"},
-                         {"levels", levels},
-                         {"stories", stories},
-                         {"critical_gap_m", s.has_base ? u.displacement[s.level_dofs[0]].value : 0.0}};
+    j["unobstructed"] = {
+        {"note",
+         "the same analysis without walls and neighbours; "
+         "amplification = peak with pounding / peak without"},
+        {"levels", levels},
+        {"stories", stories},
+        {"critical_gap_m", s.has_base ? u.displacement[s.level_dofs[0]].value : 0.0}};
   }
 
   const RunStatistics& st = r.stats;
@@ -201,7 +210,8 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
   for (const StructureInfo& s : model.structures) {
     for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
       const int d = s.level_dofs[k];
-      std::snprintf(line, sizeof line, "  %-22s displacement %8.2f cm   abs. acceleration %6.3f g\n",
+      std::snprintf(line, sizeof line,
+                    "  %-22s displacement %8.2f cm   abs. acceleration %6.3f g\n",
                     model.dofs[d].label.c_str(), 100 * r.displacement[d].value,
                     r.absolute_acceleration[d].value / kGravity);
       out << line;
@@ -235,8 +245,8 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
   std::snprintf(line, sizeof line,
                 "Steps: %ld accepted, %ld rejected, %ld Newton iterations, step %.3g..%.3g s, "
                 "%.1f ms\n",
-                r.stats.steps, r.stats.rejected_steps, r.stats.newton_iterations,
-                r.stats.min_step, r.stats.max_step, 1e3 * r.stats.wall_seconds);
+                r.stats.steps, r.stats.rejected_steps, r.stats.newton_iterations, r.stats.min_step,
+                r.stats.max_step, 1e3 * r.stats.wall_seconds);
   out << line;
 }
 

@@ -27,8 +27,12 @@ const ParameterPath& pulse_path() {
   return path;
 }
 
-int line_of(const YAML::Mark& m) { return m.is_null() ? 0 : m.line + 1; }
-int column_of(const YAML::Mark& m) { return m.is_null() ? 0 : m.column + 1; }
+int line_of(const YAML::Mark& m) {
+  return m.is_null() ? 0 : m.line + 1;
+}
+int column_of(const YAML::Mark& m) {
+  return m.is_null() ? 0 : m.column + 1;
+}
 
 std::string emit_flow(const YAML::Node& node) {
   YAML::Emitter out;
@@ -66,7 +70,8 @@ std::string CaseBuilder::describe(std::int64_t case_id) const {
   const std::vector<int> levels = study_.levels_of(case_id);
   std::string out;
   for (std::size_t a = 0; a < study_.axes.size(); ++a)
-    out += (out.empty() ? "" : ", ") + study_.axes[a].name + "=" + study_.axes[a].levels[levels[a]].label;
+    out += (out.empty() ? "" : ", ") + study_.axes[a].name + "=" +
+           study_.axes[a].levels[levels[a]].label;
   return out;
 }
 
@@ -91,7 +96,9 @@ const Override* CaseBuilder::override_for(std::int64_t case_id, const ParameterP
 
 CaseInput CaseBuilder::input_of(std::int64_t case_id) const {
   const std::vector<const Override*> overrides = overrides_of(case_id);
-  const auto in_case = [&] { return " (case " + std::to_string(case_id) + ": " + describe(case_id) + ")"; };
+  const auto in_case = [&] {
+    return " (case " + std::to_string(case_id) + ": " + describe(case_id) + ")";
+  };
   YAML::Node tree = YAML::Clone(study_.model);
   for (const Override* o : overrides) {
     try {
@@ -122,7 +129,8 @@ CaseInput CaseBuilder::input_of(std::int64_t case_id) const {
           (*it)->where.fail(e.key() + ": " + e.detail() + in_case());
     const YAML::Mark mark = parsed ? locate(study_.model, path) : YAML::Mark::null_mark();
     if (mark.is_null() && study_.model_where) study_.model_where->fail(e.what() + in_case());
-    throw InputError(study_.model_file, line_of(mark), column_of(mark), e.key(), e.detail() + in_case());
+    throw InputError(study_.model_file, line_of(mark), column_of(mark), e.key(),
+                     e.detail() + in_case());
   }
   input.config.output.histories = false;
   input.motion_key = emit_flow(child_of(tree, "ground_motion"));
@@ -146,7 +154,8 @@ ValidatedStudy validate_study(const Study& study, int threads) {
     std::int64_t error_case = std::numeric_limits<std::int64_t>::max();
     std::exception_ptr error;
   };
-  const int workers = static_cast<int>(std::max<std::int64_t>(1, std::min<std::int64_t>(threads, count)));
+  const int workers =
+      static_cast<int>(std::max<std::int64_t>(1, std::min<std::int64_t>(threads, count)));
   std::vector<Found> found(static_cast<std::size_t>(workers));
 
   const auto validate = [&](Found& mine) {
@@ -155,24 +164,30 @@ ValidatedStudy validate_study(const Study& study, int threads) {
       if (c >= count || c > first_error.load()) return;
       try {
         const CaseInput input = builder.input_of(c);
-        const auto in_case = [&] { return " (case " + std::to_string(c) + ": " + builder.describe(c) + ")"; };
+        const auto in_case = [&] {
+          return " (case " + std::to_string(c) + ": " + builder.describe(c) + ")";
+        };
         Model model;
         try {
           model = build_model(input.config);
         } catch (const std::exception& e) {
-          study.model_where->fail(std::string("the model cannot be built: ") + e.what() + in_case());
+          study.model_where->fail(std::string("the model cannot be built: ") + e.what() +
+                                  in_case());
         }
         for (std::size_t k = 0; k < selectors.size(); ++k) {
           try {
             resolve_output(selectors[k], model);
             found_somewhere[k] = true;
           } catch (const std::invalid_argument& e) {
-            if (selectors[k].kind != OutputSelector::Kind::kElement) study.outputs[k].where.fail(e.what() + in_case());
+            if (selectors[k].kind != OutputSelector::Kind::kElement)
+              study.outputs[k].where.fail(e.what() + in_case());
           }
         }
-        mine.motions.emplace(input.motion_key, c);  // cases come in increasing order: keeps the lowest
+        mine.motions.emplace(input.motion_key,
+                             c);  // cases come in increasing order: keeps the lowest
         const std::string identity = builder.identity(c);
-        identities[static_cast<std::size_t>(c)] = {fnv1a64(identity), std::hash<std::string>{}(identity)};
+        identities[static_cast<std::size_t>(c)] = {fnv1a64(identity),
+                                                   std::hash<std::string>{}(identity)};
       } catch (...) {
         if (c < mine.error_case) {
           mine.error_case = c;
@@ -185,7 +200,8 @@ ValidatedStudy validate_study(const Study& study, int threads) {
     }
   };
   std::vector<std::thread> pool;
-  for (int w = 1; w < workers; ++w) pool.emplace_back(validate, std::ref(found[static_cast<std::size_t>(w)]));
+  for (int w = 1; w < workers; ++w)
+    pool.emplace_back(validate, std::ref(found[static_cast<std::size_t>(w)]));
   validate(found[0]);
   for (std::thread& t : pool) t.join();
 
@@ -225,12 +241,13 @@ ValidatedStudy validate_study(const Study& study, int threads) {
       prepared->peaks = peaks_of(prepared->motion);
       out.motions.emplace(key, std::move(prepared));
     } catch (const std::exception& e) {
-      const std::string what = std::string("cannot read the ground motion: ") + e.what() + " (case " +
-                                std::to_string(c) + ": " + builder.describe(c) + ")";
+      const std::string what = std::string("cannot read the ground motion: ") + e.what() +
+                               " (case " + std::to_string(c) + ": " + builder.describe(c) + ")";
       if (const Override* o = builder.override_for(c, record_path())) o->where.fail(what);
       const YAML::Mark mark = locate(study.model, record_path());
       if (mark.is_null()) study.model_where->fail(what);
-      throw InputError(study.model_file, line_of(mark), column_of(mark), "ground_motion.record", what);
+      throw InputError(study.model_file, line_of(mark), column_of(mark), "ground_motion.record",
+                       what);
     }
   }
   return out;

@@ -15,8 +15,9 @@
 namespace isopound {
 
 struct CaseInput {
-  ModelConfig config;      // output.histories is off
-  std::string motion_key;  // equal keys <=> the same ground motion (canonical ground_motion subtree)
+  ModelConfig config;  // output.histories is off
+  std::string
+      motion_key;  // equal keys <=> the same ground motion (canonical ground_motion subtree)
 };
 
 // Builds case models from a Study; const and safe to use from several threads at once.

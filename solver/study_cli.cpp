@@ -17,7 +17,7 @@ struct StudyCommandOptions {
   std::string export_after;  // sweep --export DIR
   std::string db_path;       // export
   std::string output_dir;
-  std::string table;         // export --table NAME: that table on stdout
+  std::string table;  // export --table NAME: that table on stdout
   bool timing = false;
 };
 
@@ -30,7 +30,9 @@ int export_command(const StudyCommandOptions& o) {
   const ExportOptions options{o.timing};
   if (!o.table.empty()) {
     const ExportTables tables = export_tables(store, options);
-    const std::string* text = o.table == "runs" ? &tables.runs : o.table == "ratios" ? &tables.ratios : &tables.statistics;
+    const std::string* text = o.table == "runs"     ? &tables.runs
+                              : o.table == "ratios" ? &tables.ratios
+                                                    : &tables.statistics;
     if (text->empty()) {
       std::cerr << "isopound: error: " << o.db_path << ": the study defines no " << o.table << '\n';
       return kBadInput;
@@ -43,7 +45,8 @@ int export_command(const StudyCommandOptions& o) {
     const std::filesystem::path db(o.db_path);
     dir = (db.parent_path() / (db.stem().string() + "-csv")).string();
   }
-  for (const std::string& path : write_export(store, dir, options)) std::cout << "Wrote " << path << '\n';
+  for (const std::string& path : write_export(store, dir, options))
+    std::cout << "Wrote " << path << '\n';
   return kOk;
 }
 
@@ -53,8 +56,9 @@ int sweep_command(const StudyCommandOptions& o) {
   try {
     const int code = run_sweep(o.study_path, o.sweep, ranks);
     if (code == kOk && root && !o.export_after.empty() && !o.sweep.dry_run) {
-      const std::string db = o.sweep.db_path.empty() ? std::filesystem::path(o.study_path).stem().string() + ".db"
-                                                     : o.sweep.db_path;
+      const std::string db = o.sweep.db_path.empty()
+                                 ? std::filesystem::path(o.study_path).stem().string() + ".db"
+                                 : o.sweep.db_path;
       const StudyStore store = StudyStore::open(db, true);
       for (const std::string& path : write_export(store, o.export_after, ExportOptions{o.timing}))
         if (!o.sweep.quiet) std::cout << "Wrote " << path << '\n';
@@ -76,26 +80,34 @@ StudyCommands add_study_commands(CLI::App& app) {
   commands.options = std::make_shared<StudyCommandOptions>();
   StudyCommandOptions& o = *commands.options;
 
-  CLI::App* sweep = app.add_subcommand(
-      "sweep", "Run a parametric study (all cores; under mpirun over all ranks); results go to an SQLite database");
+  CLI::App* sweep = app.add_subcommand("sweep",
+                                       "Run a parametric study (all cores; under mpirun over all "
+                                       "ranks); results go to an SQLite database");
   sweep->add_option("study", o.study_path, "Study file (YAML)")->required();
-  sweep->add_option("-j,--jobs", o.sweep.jobs, "Worker threads per rank (default: all cores)")->check(CLI::NonNegativeNumber);
-  sweep->add_option("--db", o.sweep.db_path, "Results database (default: <study>.db in the current directory)");
-  sweep->add_flag("--resume", o.sweep.resume, "Continue an existing database: compute only its unfinished runs");
+  sweep->add_option("-j,--jobs", o.sweep.jobs, "Worker threads per rank (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  sweep->add_option("--db", o.sweep.db_path,
+                    "Results database (default: <study>.db in the current directory)");
+  sweep->add_flag("--resume", o.sweep.resume,
+                  "Continue an existing database: compute only its unfinished runs");
   sweep->add_flag("--overwrite", o.sweep.overwrite, "Delete an existing database and start again");
   sweep->add_flag("-q,--quiet", o.sweep.quiet, "No progress and no summary");
-  sweep->add_flag("--dry-run", o.sweep.dry_run, "Validate every case and describe the study; run nothing");
-  sweep->add_option("--export", o.export_after, "After the sweep, write the CSV tables into this directory");
+  sweep->add_flag("--dry-run", o.sweep.dry_run,
+                  "Validate every case and describe the study; run nothing");
+  sweep->add_option("--export", o.export_after,
+                    "After the sweep, write the CSV tables into this directory");
   sweep->add_flag("--timing", o.timing, "With --export: add wall_seconds to runs.csv");
   sweep->get_option("--resume")->excludes(sweep->get_option("--overwrite"));
 
   CLI::App* exporter = app.add_subcommand(
       "export", "Write a study database's tables as CSV: runs.csv, ratios.csv, statistics.csv");
   exporter->add_option("database", o.db_path, "Study database (.db)")->required();
-  exporter->add_option("-o,--output", o.output_dir, "Output directory (default: <database stem>-csv beside it)");
+  exporter->add_option("-o,--output", o.output_dir,
+                       "Output directory (default: <database stem>-csv beside it)");
   exporter->add_option("--table", o.table, "Print one table to stdout instead")
       ->check(CLI::IsMember({"runs", "ratios", "statistics"}));
-  exporter->add_flag("--timing", o.timing, "Add wall_seconds (differs between runs of the same study)");
+  exporter->add_flag("--timing", o.timing,
+                     "Add wall_seconds (differs between runs of the same study)");
 
   commands.sweep = sweep;
   commands.export_tables = exporter;

@@ -1,5 +1,6 @@
 // The `sweep` and `export` subcommands of the isopound command line (parametric studies).
-// Exit codes as the rest of the CLI: 0 ok, 1 failure, 2 bad input (file:line:col: key: what), 130 interrupted.
+// Exit codes as the rest of the CLI: 0 ok, 1 failure, 2 bad input (file:line:col: key: what), 130
+// interrupted.
 #pragma once
 
 #include <CLI/CLI.hpp>

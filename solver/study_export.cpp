@@ -19,7 +19,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr char kSeparator = '\x1f';  // joins cells into a key; never in a label
 
-std::string text_of(const Cell& cell) { return cell.numeric ? format_number(cell.number) : cell.text; }
+std::string text_of(const Cell& cell) {
+  return cell.numeric ? format_number(cell.number) : cell.text;
+}
 
 // Axis cells as text, values, and whether the run finished: what ratios and statistics use.
 struct TableRow {
@@ -47,7 +49,8 @@ std::vector<TableRow> ratio_rows(const StoreLayout& layout, const std::vector<Ta
     skip[axis] = true;
     std::unordered_map<std::string, const TableRow*> denominators;
     for (const TableRow& row : runs)
-      if (row.axes[axis] == ratio.denominator) denominators.emplace(key_without(row.axes, skip), &row);
+      if (row.axes[axis] == ratio.denominator)
+        denominators.emplace(key_without(row.axes, skip), &row);
     for (const TableRow& row : runs) {
       if (row.axes[axis] != ratio.numerator) continue;
       const auto found = denominators.find(key_without(row.axes, skip));
@@ -66,7 +69,8 @@ std::vector<TableRow> ratio_rows(const StoreLayout& layout, const std::vector<Ta
 
 std::string statistics_table(const StoreLayout& layout, const std::vector<TableRow>& rows) {
   std::vector<std::string> header = layout.axes;
-  for (const char* column : {"over", "output", "n", "mean", "std", "mean_minus_std", "mean_plus_std", "min", "max", "median"})
+  for (const char* column : {"over", "output", "n", "mean", "std", "mean_minus_std",
+                             "mean_plus_std", "min", "max", "median"})
     header.push_back(column);
   std::string csv = csv_line(header);
   for (const StatisticsSpec& spec : layout.statistics) {
@@ -97,7 +101,8 @@ std::string statistics_table(const StoreLayout& layout, const std::vector<TableR
         line.push_back(over_text);
         line.push_back(layout.outputs[k]);
         line.push_back(std::to_string(s.n));
-        for (const double v : {s.mean, s.std, s.mean - s.std, s.mean + s.std, s.min, s.max, s.median})
+        for (const double v :
+             {s.mean, s.std, s.mean - s.std, s.mean + s.std, s.min, s.max, s.median})
           line.push_back(format_number(v));
         csv += csv_line(line);
       }
@@ -134,7 +139,8 @@ ExportTables export_tables(const StudyStore& store, const ExportOptions& options
     line.push_back(run.status);
     line.push_back(run.steps < 0 ? "" : std::to_string(run.steps));
     for (const double v : row.values) line.push_back(format_number(v));
-    if (options.timing) line.push_back(run.status == "pending" ? "" : format_number(run.wall_seconds));
+    if (options.timing)
+      line.push_back(run.status == "pending" ? "" : format_number(run.wall_seconds));
     line.push_back(run.error);
     tables.runs += csv_line(line);
     rows.push_back(std::move(row));
@@ -158,13 +164,15 @@ ExportTables export_tables(const StudyStore& store, const ExportOptions& options
   return tables;
 }
 
-std::vector<std::string> write_export(const StudyStore& store, const std::string& dir, const ExportOptions& options) {
+std::vector<std::string> write_export(const StudyStore& store, const std::string& dir,
+                                      const ExportOptions& options) {
   namespace fs = std::filesystem;
   const ExportTables tables = export_tables(store, options);
   fs::create_directories(dir);
   std::vector<std::string> written;
-  for (const auto& [name, text] : {std::pair{"runs.csv", &tables.runs}, std::pair{"ratios.csv", &tables.ratios},
-                                   std::pair{"statistics.csv", &tables.statistics}}) {
+  for (const auto& [name, text] :
+       {std::pair{"runs.csv", &tables.runs}, std::pair{"ratios.csv", &tables.ratios},
+        std::pair{"statistics.csv", &tables.statistics}}) {
     if (text->empty()) continue;
     const std::string path = (fs::path(dir) / name).string();
     std::ofstream out(path, std::ios::binary);

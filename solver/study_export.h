@@ -1,5 +1,6 @@
 // Tidy CSV tables of a study database, for pandas and R: runs.csv (one row per run), ratios.csv
-// (variant ratios, the other axes equal) and statistics.csv (long form: one row per group and peak).
+// (variant ratios, the other axes equal) and statistics.csv (long form: one row per group and
+// peak).
 #pragma once
 
 #include <string>
@@ -25,6 +26,7 @@ ExportTables export_tables(const StudyStore& store, const ExportOptions& options
 
 // Writes runs.csv, ratios.csv, statistics.csv (those not empty) into `dir` (created if needed);
 // returns the paths written.
-std::vector<std::string> write_export(const StudyStore& store, const std::string& dir, const ExportOptions& options);
+std::vector<std::string> write_export(const StudyStore& store, const std::string& dir,
+                                      const ExportOptions& options);
 
 }  // namespace isopound

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #ifdef ISOPOUND_HAVE_MPI
-#define OMPI_SKIP_MPICXX 1   // the C API only: no deprecated C++ bindings to link
+#define OMPI_SKIP_MPICXX 1  // the C API only: no deprecated C++ bindings to link
 #define MPICH_SKIP_MPICXX 1
 #include <mpi.h>
 #endif
@@ -52,7 +52,9 @@ bool RankSession::launched_by_mpi() {
 
 #ifdef ISOPOUND_HAVE_MPI
 
-bool RankSession::available() { return true; }
+bool RankSession::available() {
+  return true;
+}
 
 RankSession::RankSession() {
   if (!launched_by_mpi()) return;
@@ -70,7 +72,8 @@ RankSession::~RankSession() {
 }
 
 void RankSession::send(int destination, RankMessage tag, const std::vector<char>& bytes) const {
-  MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, destination, static_cast<int>(tag), MPI_COMM_WORLD);
+  MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, destination,
+           static_cast<int>(tag), MPI_COMM_WORLD);
 }
 
 bool RankSession::try_receive(Incoming& message, int source) const {
@@ -83,7 +86,8 @@ bool RankSession::try_receive(Incoming& message, int source) const {
   message.bytes.resize(static_cast<std::size_t>(count));
   message.source = status.MPI_SOURCE;
   message.tag = static_cast<RankMessage>(status.MPI_TAG);
-  MPI_Recv(message.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  MPI_Recv(message.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
+           MPI_STATUS_IGNORE);
   return true;
 }
 
@@ -99,15 +103,23 @@ void RankSession::abort(int code) const {
 
 #else
 
-bool RankSession::available() { return false; }
+bool RankSession::available() {
+  return false;
+}
 RankSession::RankSession() = default;
 RankSession::~RankSession() = default;
 void RankSession::send(int, RankMessage, const std::vector<char>&) const {
   throw std::logic_error("isopound was built without MPI");
 }
-bool RankSession::try_receive(Incoming&, int) const { return false; }
-int RankSession::broadcast(int status) const { return status; }
-void RankSession::abort(int code) const { std::exit(code); }
+bool RankSession::try_receive(Incoming&, int) const {
+  return false;
+}
+int RankSession::broadcast(int status) const {
+  return status;
+}
+void RankSession::abort(int code) const {
+  std::exit(code);
+}
 
 #endif
 

@@ -1,5 +1,6 @@
 // MPI ranks of a sweep (optional, ISOPOUND_HAVE_MPI): rank 0 owns the database and hands out cases
-// on request, the others compute and send results back; not under mpirun/srun: one rank, no messages.
+// on request, the others compute and send results back; not under mpirun/srun: one rank, no
+// messages.
 #pragma once
 
 #include <cstdint>

@@ -11,10 +11,12 @@
 namespace isopound {
 namespace {
 
-constexpr std::string_view kLevelQuantities[] = {"displacement", "velocity", "absolute_acceleration"};
+constexpr std::string_view kLevelQuantities[] = {"displacement", "velocity",
+                                                 "absolute_acceleration"};
 constexpr std::string_view kStoryQuantities[] = {"drift", "drift_ratio"};
-constexpr std::string_view kEnergyTerms[] = {"input",      "kinetic", "elastic",        "viscous",
-                                             "hysteretic", "error",   "relative_error", "max_relative_error"};
+constexpr std::string_view kEnergyTerms[] = {"input",          "kinetic",           "elastic",
+                                             "viscous",        "hysteretic",        "error",
+                                             "relative_error", "max_relative_error"};
 constexpr std::string_view kGroundPeaks[] = {"pga", "pgv", "pgd"};
 
 template <std::size_t N>
@@ -35,7 +37,8 @@ std::string joined(const std::string_view (&names)[N]) {
 int numbered(std::string_view where, std::string_view prefix) {
   if (!where.starts_with(prefix) || where.size() == prefix.size()) return -1;
   int n = -1;
-  const auto [ptr, ec] = std::from_chars(where.data() + prefix.size(), where.data() + where.size(), n);
+  const auto [ptr, ec] =
+      std::from_chars(where.data() + prefix.size(), where.data() + where.size(), n);
   if (ec != std::errc() || ptr != where.data() + where.size() || n < 1) return -1;
   return n;
 }
@@ -43,12 +46,15 @@ int numbered(std::string_view where, std::string_view prefix) {
 bool is_level_place(std::string_view w) {
   return w == "base" || w == "roof" || w == "floors" || w == "levels" || numbered(w, "floor") > 0;
 }
-bool is_story_place(std::string_view w) { return w == "stories" || numbered(w, "story") > 0; }
+bool is_story_place(std::string_view w) {
+  return w == "stories" || numbered(w, "story") > 0;
+}
 
 bool matches(const std::string& pattern, const std::string& label) {
   const std::size_t slash = label.find_last_of('/');
   const std::string short_label = slash == std::string::npos ? label : label.substr(slash + 1);
-  return fnmatch(pattern.c_str(), short_label.c_str(), 0) == 0 || fnmatch(pattern.c_str(), label.c_str(), 0) == 0;
+  return fnmatch(pattern.c_str(), short_label.c_str(), 0) == 0 ||
+         fnmatch(pattern.c_str(), label.c_str(), 0) == 0;
 }
 
 }  // namespace
@@ -68,7 +74,8 @@ OutputSelector parse_output_selector(std::string_view text) {
   }
   const std::size_t dot = rest.find_last_of('.');
   if (dot == std::string_view::npos || dot == 0 || dot + 1 == rest.size())
-    fail("expected <where>.<quantity>, e.g. base.displacement, stories.drift_ratio, isolator.force");
+    fail(
+        "expected <where>.<quantity>, e.g. base.displacement, stories.drift_ratio, isolator.force");
   s.where = std::string(rest.substr(0, dot));
   s.quantity = std::string(rest.substr(dot + 1));
   if (s.where == "energy") {
@@ -81,10 +88,13 @@ OutputSelector parse_output_selector(std::string_view text) {
     s.kind = OutputSelector::Kind::kLevel;
     if (index_in(kLevelQuantities, s.quantity) < 0)
       fail("peaks of a level are " + joined(kLevelQuantities) +
-           (index_in(kStoryQuantities, s.quantity) >= 0 ? " (drifts belong to stories: story<N> or stories)" : ""));
+           (index_in(kStoryQuantities, s.quantity) >= 0
+                ? " (drifts belong to stories: story<N> or stories)"
+                : ""));
   } else if (is_story_place(s.where)) {
     s.kind = OutputSelector::Kind::kStory;
-    if (index_in(kStoryQuantities, s.quantity) < 0) fail("peaks of a story are " + joined(kStoryQuantities));
+    if (index_in(kStoryQuantities, s.quantity) < 0)
+      fail("peaks of a story are " + joined(kStoryQuantities));
   } else {
     s.kind = OutputSelector::Kind::kElement;
   }
@@ -158,15 +168,19 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
       }
       if (r.indices.empty()) {
         std::string labels;
-        for (const auto& element : model.elements) labels += (labels.empty() ? "" : ", ") + element->label();
+        for (const auto& element : model.elements)
+          labels += (labels.empty() ? "" : ", ") + element->label();
         if (seen_outputs.empty())
-          fail("no element matches '" + s.where + "' (elements: " + (labels.empty() ? "none" : labels) +
+          fail("no element matches '" + s.where +
+               "' (elements: " + (labels.empty() ? "none" : labels) +
                "; or use base, roof, floor<N>, floors, levels, story<N>, stories, energy, ground)");
         std::sort(seen_outputs.begin(), seen_outputs.end());
-        seen_outputs.erase(std::unique(seen_outputs.begin(), seen_outputs.end()), seen_outputs.end());
+        seen_outputs.erase(std::unique(seen_outputs.begin(), seen_outputs.end()),
+                           seen_outputs.end());
         std::string names;
         for (const auto& name : seen_outputs) names += (names.empty() ? "" : ", ") + name;
-        fail("elements matching '" + s.where + "' have no output '" + s.quantity + "' (they have: " + names + ")");
+        fail("elements matching '" + s.where + "' have no output '" + s.quantity +
+             "' (they have: " + names + ")");
       }
       return r;
     }
@@ -174,12 +188,13 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
   return r;
 }
 
-double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result, const GroundMotionPeaks& ground) {
+double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
+                       const GroundMotionPeaks& ground) {
   switch (r.kind) {
     case OutputSelector::Kind::kEnergy: {
       const EnergyBalance& e = result.energy;
-      const double terms[] = {e.input, e.kinetic,    e.elastic,        e.viscous,
-                              e.hysteretic, e.error, e.relative_error, e.max_relative_error};
+      const double terms[] = {e.input,      e.kinetic, e.elastic,        e.viscous,
+                              e.hysteretic, e.error,   e.relative_error, e.max_relative_error};
       return terms[r.quantity];
     }
     case OutputSelector::Kind::kGround: {
@@ -188,7 +203,8 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result, co
     }
     case OutputSelector::Kind::kLevel:
     case OutputSelector::Kind::kStory: {
-      const std::vector<Peak>* families[] = {&result.displacement, &result.velocity, &result.absolute_acceleration};
+      const std::vector<Peak>* families[] = {&result.displacement, &result.velocity,
+                                             &result.absolute_acceleration};
       const std::vector<Peak>* stories[] = {&result.drift, &result.drift_ratio};
       const std::vector<Peak>& peaks =
           r.kind == OutputSelector::Kind::kLevel ? *families[r.quantity] : *stories[r.quantity];

@@ -4,9 +4,9 @@
 //   base | roof | floor<N> | floors | levels  .  displacement | velocity | absolute_acceleration
 //       (floors: max over floors 1..N; levels: also the base slab)
 //   story<N> | stories  .  drift | drift_ratio
-//   energy  .  input | kinetic | elastic | viscous | hysteretic | error | relative_error | max_relative_error
-//   ground  .  pga | pgv | pgd
-//   <element>  .  <output>   element label after its last '/' or the full label, '*' and '?'
+//   energy  .  input | kinetic | elastic | viscous | hysteretic | error | relative_error |
+//   max_relative_error ground  .  pga | pgv | pgd <element>  .  <output>   element label after its
+//   last '/' or the full label, '*' and '?'
 //       wildcards ("isolator.force", "wall*.impacts"); max over the matches, or their sum with
 //       the prefix "sum:" ("sum:wall*.impacts"). A case without such elements (walls removed in
 //       a variant) gets an empty cell; a selector that matches in no case is an error.
@@ -37,9 +37,9 @@ OutputSelector parse_output_selector(std::string_view text);
 // A selector bound to the DOFs, stories or element outputs of one model.
 struct ResolvedOutput {
   OutputSelector::Kind kind = OutputSelector::Kind::kLevel;
-  int quantity = 0;                         // which peak family / energy term / ground peak
-  std::vector<int> indices;                 // DOFs, stories or elements
-  std::vector<int> element_outputs;         // per element in `indices`: its output index
+  int quantity = 0;                  // which peak family / energy term / ground peak
+  std::vector<int> indices;          // DOFs, stories or elements
+  std::vector<int> element_outputs;  // per element in `indices`: its output index
   bool sum = false;
 };
 

@@ -1,5 +1,6 @@
 // Parameter paths on YAML trees (see study_path.h). yaml-cpp 0.7 pitfalls kept in mind: a Node
-// variable is a handle (walk with reset(), never `node = child`), and missing keys are never indexed.
+// variable is a handle (walk with reset(), never `node = child`), and missing keys are never
+// indexed.
 #include "solver/study_path.h"
 
 #include <cctype>
@@ -74,7 +75,8 @@ ParameterPath parse_parameter_path(std::string_view text) {
 bool is_prefix_of(const ParameterPath& prefix, const ParameterPath& path) {
   if (prefix.steps.size() > path.steps.size()) return false;
   for (std::size_t i = 0; i < prefix.steps.size(); ++i)
-    if (prefix.steps[i].key != path.steps[i].key || prefix.steps[i].index != path.steps[i].index) return false;
+    if (prefix.steps[i].key != path.steps[i].key || prefix.steps[i].index != path.steps[i].index)
+      return false;
   return true;
 }
 
@@ -89,13 +91,14 @@ void apply_override(YAML::Node root, const ParameterPath& path, const YAML::Node
     const std::string here = walked.empty() ? "the model" : walked;
     if (step.index >= 0) {
       if (!node.IsSequence())
-        throw std::invalid_argument(here + " is " + describe(node) + ", not a list: cannot index it with " +
-                                    index_text(step.index));
+        throw std::invalid_argument(here + " is " + describe(node) +
+                                    ", not a list: cannot index it with " + index_text(step.index));
       if (static_cast<std::size_t>(step.index) >= node.size())
-        throw std::invalid_argument(here + " has " + std::to_string(node.size()) + " items: " +
-                                    index_text(step.index) + " does not exist");
+        throw std::invalid_argument(here + " has " + std::to_string(node.size()) +
+                                    " items: " + index_text(step.index) + " does not exist");
       if (last) {
-        if (remove) throw std::invalid_argument("a list item cannot be removed (" + path.text + ")");
+        if (remove)
+          throw std::invalid_argument("a list item cannot be removed (" + path.text + ")");
         node[step.index] = YAML::Clone(value);
         return;
       }
@@ -107,9 +110,10 @@ void apply_override(YAML::Node root, const ParameterPath& path, const YAML::Node
     if (node.IsNull() && !remove) node = YAML::Node(YAML::NodeType::Map);  // "walls:" left empty
     if (!node.IsMap()) {
       if (!node.IsDefined() && remove) return;
-      const std::string hint = node.IsSequence() ? " (address an item as " + here + "[i]." + step.key + ")" : "";
-      throw std::invalid_argument(here + " is " + describe(node) + ", not a map: cannot set '" + step.key +
-                                  "' inside it" + hint);
+      const std::string hint =
+          node.IsSequence() ? " (address an item as " + here + "[i]." + step.key + ")" : "";
+      throw std::invalid_argument(here + " is " + describe(node) + ", not a map: cannot set '" +
+                                  step.key + "' inside it" + hint);
     }
     YAML::Node child = find_child(node, step.key);
     if (last) {

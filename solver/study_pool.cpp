@@ -63,7 +63,8 @@ void ResultQueue::push(RunRecord run) {
 
 void ResultQueue::drain(std::vector<RunRecord>& out, std::chrono::milliseconds wait) {
   std::unique_lock lock(mutex_);
-  if (runs_.empty() && wait.count() > 0) ready_.wait_for(lock, wait, [&] { return !runs_.empty(); });
+  if (runs_.empty() && wait.count() > 0)
+    ready_.wait_for(lock, wait, [&] { return !runs_.empty(); });
   for (RunRecord& run : runs_) out.push_back(std::move(run));
   runs_.clear();
 }
@@ -73,7 +74,8 @@ bool ResultQueue::empty() const {
   return runs_.empty();
 }
 
-WorkerPool::WorkerPool(int count, CaseFeed& feed, ResultQueue& results, std::function<RunRecord(std::int64_t)> compute)
+WorkerPool::WorkerPool(int count, CaseFeed& feed, ResultQueue& results,
+                       std::function<RunRecord(std::int64_t)> compute)
     : feed_(feed) {
   running_ = count;
   for (int i = 0; i < count; ++i) {

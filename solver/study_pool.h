@@ -52,7 +52,8 @@ class ResultQueue {
 // (after stopping the feed, so a destructor during an exception does not wait for all cases).
 class WorkerPool {
  public:
-  WorkerPool(int count, CaseFeed& feed, ResultQueue& results, std::function<RunRecord(std::int64_t)> compute);
+  WorkerPool(int count, CaseFeed& feed, ResultQueue& results,
+             std::function<RunRecord(std::int64_t)> compute);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;

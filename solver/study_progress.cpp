@@ -20,7 +20,8 @@ std::string format_duration(double seconds) {
   const long total = std::lround(seconds);
   char buffer[32];
   if (total >= 3600)
-    std::snprintf(buffer, sizeof buffer, "%ld:%02ld:%02ld", total / 3600, (total / 60) % 60, total % 60);
+    std::snprintf(buffer, sizeof buffer, "%ld:%02ld:%02ld", total / 3600, (total / 60) % 60,
+                  total % 60);
   else
     std::snprintf(buffer, sizeof buffer, "%ld:%02ld", total / 60, total % 60);
   return buffer;
@@ -32,7 +33,12 @@ Progress::Mode Progress::mode_for(std::FILE* out, bool quiet) {
 }
 
 Progress::Progress(Mode mode, std::int64_t total, std::int64_t already, std::FILE* out)
-    : mode_(mode), total_(total), already_(already), out_(out), start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
+    : mode_(mode),
+      total_(total),
+      already_(already),
+      out_(out),
+      start_(std::chrono::steady_clock::now()),
+      last_draw_(start_) {}
 
 double Progress::elapsed_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -66,12 +72,14 @@ void Progress::draw(std::int64_t finished, std::int64_t failed, bool final) {
     bar.append(static_cast<std::size_t>(kBarWidth - filled), '.');
     std::fprintf(out_, "\r[%s] %lld/%lld %5.1f%%  %.1f runs/s  %s %s%s\x1b[K", bar.c_str(),
                  static_cast<long long>(done), static_cast<long long>(all), 100.0 * fraction, rate,
-                 final ? "took" : "ETA", format_duration(final ? elapsed : eta).c_str(), failures.c_str());
+                 final ? "took" : "ETA", format_duration(final ? elapsed : eta).c_str(),
+                 failures.c_str());
     if (final) std::fputc('\n', out_);
   } else {
-    std::fprintf(out_, "sweep: %lld/%lld runs (%.1f %%), %.1f runs/s, %s %s%s\n", static_cast<long long>(done),
-                 static_cast<long long>(all), 100.0 * fraction, rate, final ? "took" : "ETA",
-                 format_duration(final ? elapsed : eta).c_str(), failures.c_str());
+    std::fprintf(out_, "sweep: %lld/%lld runs (%.1f %%), %.1f runs/s, %s %s%s\n",
+                 static_cast<long long>(done), static_cast<long long>(all), 100.0 * fraction, rate,
+                 final ? "took" : "ETA", format_duration(final ? elapsed : eta).c_str(),
+                 failures.c_str());
   }
   std::fflush(out_);
 }

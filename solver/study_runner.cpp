@@ -38,9 +38,12 @@ constexpr std::chrono::milliseconds kRankWait{2};  // MPI ranks poll their messa
 std::atomic<bool> g_interrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
 
-extern "C" void on_interrupt(int) { g_interrupted.store(true); }
+extern "C" void on_interrupt(int) {
+  g_interrupted.store(true);
+}
 
-// SIGINT / SIGTERM set a flag for the duration of a sweep: stop handing out cases, commit, exit 130.
+// SIGINT / SIGTERM set a flag for the duration of a sweep: stop handing out cases, commit, exit
+// 130.
 class InterruptGuard {
  public:
   InterruptGuard() {
@@ -71,7 +74,8 @@ struct WorkPlan {
   std::vector<std::int64_t> work;        // sorted
   std::unordered_map<std::int64_t, std::vector<std::int64_t>> duplicates;
 
-  WorkPlan(std::vector<std::int64_t> unfinished_cases, const std::vector<std::int64_t>& representative)
+  WorkPlan(std::vector<std::int64_t> unfinished_cases,
+           const std::vector<std::int64_t>& representative)
       : unfinished(std::move(unfinished_cases)) {
     for (const std::int64_t c : unfinished) {
       const std::int64_t r = representative[static_cast<std::size_t>(c)];
@@ -85,7 +89,8 @@ struct WorkPlan {
   // The unfinished cases an analysis of `representative` completes, itself first if unfinished.
   std::vector<std::int64_t> cases_of(std::int64_t representative) const {
     std::vector<std::int64_t> cases;
-    if (std::binary_search(unfinished.begin(), unfinished.end(), representative)) cases.push_back(representative);
+    if (std::binary_search(unfinished.begin(), unfinished.end(), representative))
+      cases.push_back(representative);
     if (const auto d = duplicates.find(representative); d != duplicates.end())
       cases.insert(cases.end(), d->second.begin(), d->second.end());
     return cases;
@@ -114,7 +119,8 @@ class Writer {
 
   void commit_if_due(bool force) {
     const double since = std::chrono::duration<double>(Clock::now() - last_commit_).count();
-    if (pending_.empty() || (!force && pending_.size() < kCommitRuns && since < kCommitSeconds)) return;
+    if (pending_.empty() || (!force && pending_.size() < kCommitRuns && since < kCommitSeconds))
+      return;
     store_.commit(pending_, session_);
     pending_.clear();
     last_commit_ = Clock::now();
@@ -140,7 +146,8 @@ class DatabaseLock {
   explicit DatabaseLock(const std::string& db_path) {
     const std::string path = db_path + ".lock";
     fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw InputError(path, 0, 0, "", "cannot create the lock file beside the database");
+    if (fd_ < 0)
+      throw InputError(path, 0, 0, "", "cannot create the lock file beside the database");
     if (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       ::close(fd_);
       throw InputError(db_path, 0, 0, "", "another isopound sweep is writing this database");
@@ -167,7 +174,8 @@ int default_jobs(int ranks_on_node) {
 
 void remove_database(const std::string& path) {
   std::error_code ec;
-  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) fs::remove(path + suffix, ec);  // not ".lock": held
+  for (const char* suffix : {"", "-wal", "-shm", "-journal"})
+    fs::remove(path + suffix, ec);  // not ".lock": held
 }
 
 std::vector<Cell> cells_of(const Study& study, std::int64_t case_id) {
@@ -181,24 +189,27 @@ std::vector<Cell> cells_of(const Study& study, std::int64_t case_id) {
 }
 
 void describe(const Study& study, const ValidatedStudy& validated, std::FILE* out) {
-  std::fprintf(out, "%s: %lld runs (%lld distinct models, %zu ground motions)\n", study.file.c_str(),
-               static_cast<long long>(study.case_count()), static_cast<long long>(validated.distinct_models),
-               validated.motions.size());
+  std::fprintf(out, "%s: %lld runs (%lld distinct models, %zu ground motions)\n",
+               study.file.c_str(), static_cast<long long>(study.case_count()),
+               static_cast<long long>(validated.distinct_models), validated.motions.size());
   for (const Axis& axis : study.axes) {
     std::string labels;
-    for (std::size_t i = 0; i < axis.levels.size() && i < 6; ++i) labels += (i ? ", " : "") + axis.levels[i].label;
+    for (std::size_t i = 0; i < axis.levels.size() && i < 6; ++i)
+      labels += (i ? ", " : "") + axis.levels[i].label;
     if (axis.levels.size() > 6) labels += ", ... " + axis.levels.back().label;
-    std::fprintf(out, "  axis %-12s %4zu values (group %d): %s\n", axis.name.c_str(), axis.levels.size(), axis.group,
-                 labels.c_str());
+    std::fprintf(out, "  axis %-12s %4zu values (group %d): %s\n", axis.name.c_str(),
+                 axis.levels.size(), axis.group, labels.c_str());
   }
   std::string peaks;
-  for (const OutputSpec& o : study.outputs) peaks += (peaks.empty() ? "" : ", ") + o.column + " = " + o.selector;
+  for (const OutputSpec& o : study.outputs)
+    peaks += (peaks.empty() ? "" : ", ") + o.column + " = " + o.selector;
   std::fprintf(out, "  peaks: %s\n", peaks.c_str());
 }
 
 }  // namespace
 
-CaseRunner::CaseRunner(const Study& study, const ValidatedStudy& validated) : builder_(study), validated_(validated) {
+CaseRunner::CaseRunner(const Study& study, const ValidatedStudy& validated)
+    : builder_(study), validated_(validated) {
   for (const OutputSpec& o : study.outputs) selectors_.push_back(parse_output_selector(o.selector));
 }
 
@@ -214,7 +225,8 @@ RunRecord CaseRunner::run(std::int64_t case_id) const {
     const AnalysisResult result = run_analysis(model, motion.motion, run_options(input.config));
     for (const OutputSelector& selector : selectors_) {
       try {
-        record.values.push_back(evaluate_output(resolve_output(selector, model), result, motion.peaks));
+        record.values.push_back(
+            evaluate_output(resolve_output(selector, model), result, motion.peaks));
       } catch (const std::invalid_argument&) {  // an element this case does not have (validated)
         record.values.push_back(std::numeric_limits<double>::quiet_NaN());
       }
@@ -244,7 +256,8 @@ std::string study_fingerprint(const Study& study) {
   return hex64(h);
 }
 
-int run_sweep(const std::string& study_path, const SweepOptions& options, const RankSession& ranks) {
+int run_sweep(const std::string& study_path, const SweepOptions& options,
+              const RankSession& ranks) {
   const bool root = ranks.rank() == 0;
   const Study study = load_study_file(study_path);
   const int jobs = options.jobs > 0 ? options.jobs : default_jobs(ranks.local_size());
@@ -279,18 +292,21 @@ int run_sweep(const std::string& study_path, const SweepOptions& options, const 
       }
       if (exists && !options.resume)
         throw InputError(db_path, 0, 0, "",
-                         "already exists: add --resume to continue this study, or --overwrite to start it again");
+                         "already exists: add --resume to continue this study, or --overwrite to "
+                         "start it again");
       if (exists) {
         store.emplace(StudyStore::open(db_path, false));
         if (store->meta("study_hash") != fingerprint)
-          throw InputError(db_path, 0, 0, "",
-                           "was made from a different study (the study file '" + store->meta("study_file") +
-                               "', its model or its records changed since); cannot resume it: use --overwrite "
-                               "to start again, or --db for a new database");
+          throw InputError(
+              db_path, 0, 0, "",
+              "was made from a different study (the study file '" + store->meta("study_file") +
+                  "', its model or its records changed since); cannot resume it: use --overwrite "
+                  "to start again, or --db for a new database");
         resumed = true;
       } else {
         if (options.resume && !options.quiet)
-          std::fprintf(stderr, "isopound sweep: %s does not exist yet: starting the study\n", db_path.c_str());
+          std::fprintf(stderr, "isopound sweep: %s does not exist yet: starting the study\n",
+                       db_path.c_str());
         std::error_code abs_ec;
         const std::map<std::string, std::string> meta{
             {"study_file", fs::absolute(study.file, abs_ec).lexically_normal().string()},
@@ -365,7 +381,8 @@ int run_sweep(const std::string& study_path, const SweepOptions& options, const 
       Incoming message;
       while (ranks.active() && ranks.try_receive(message)) {
         if (message.tag == RankMessage::kRequest) {
-          const std::vector<std::int64_t> cases = g_interrupted ? std::vector<std::int64_t>{} : feed.take(chunk);
+          const std::vector<std::int64_t> cases =
+              g_interrupted ? std::vector<std::int64_t>{} : feed.take(chunk);
           ranks.send(message.source, RankMessage::kWork, encode_cases(cases));
           if (cases.empty()) --open_ranks;
         } else if (message.tag == RankMessage::kResults) {
@@ -384,8 +401,10 @@ int run_sweep(const std::string& study_path, const SweepOptions& options, const 
         if (ranks.active()) {  // other ranks may be mid-run: keep what is here and stop them all
           writer.commit_if_due(true);
           progress.finish(writer.finished(), writer.failed());
-          std::fprintf(stderr, "isopound sweep: interrupted; %lld runs committed to %s (continue with --resume)\n",
-                       static_cast<long long>(already + writer.finished()), db_path.c_str());
+          std::fprintf(
+              stderr,
+              "isopound sweep: interrupted; %lld runs committed to %s (continue with --resume)\n",
+              static_cast<long long>(already + writer.finished()), db_path.c_str());
           ranks.abort(130);
         }
         if (pool.finished()) {
@@ -401,20 +420,24 @@ int run_sweep(const std::string& study_path, const SweepOptions& options, const 
   progress.finish(writer.finished(), writer.failed());
   const double seconds = progress.elapsed_seconds();
   if (interrupted) {
-    std::fprintf(stderr, "isopound sweep: interrupted; %lld of %lld runs done in %s (continue with --resume)\n",
-                 static_cast<long long>(already + writer.finished()), static_cast<long long>(study.case_count()),
-                 db_path.c_str());
+    std::fprintf(
+        stderr,
+        "isopound sweep: interrupted; %lld of %lld runs done in %s (continue with --resume)\n",
+        static_cast<long long>(already + writer.finished()),
+        static_cast<long long>(study.case_count()), db_path.c_str());
     return 130;
   }
   if (!options.quiet) {
-    std::printf("isopound sweep: %s: %lld runs in %.1f s (%.1f runs/s; %lld analyses, %lld runs shared an identical "
-                "model), %lld failed%s\n",
-                study.name.c_str(), static_cast<long long>(writer.finished()), seconds,
-                seconds > 0 ? static_cast<double>(writer.finished()) / seconds : 0.0,
-                static_cast<long long>(writer.analyses()),
-                static_cast<long long>(writer.finished() - writer.analyses()),
-                static_cast<long long>(writer.failed()),
-                already > 0 ? (", " + std::to_string(already) + " were done before").c_str() : "");
+    std::printf(
+        "isopound sweep: %s: %lld runs in %.1f s (%.1f runs/s; %lld analyses, %lld runs shared an "
+        "identical "
+        "model), %lld failed%s\n",
+        study.name.c_str(), static_cast<long long>(writer.finished()), seconds,
+        seconds > 0 ? static_cast<double>(writer.finished()) / seconds : 0.0,
+        static_cast<long long>(writer.analyses()),
+        static_cast<long long>(writer.finished() - writer.analyses()),
+        static_cast<long long>(writer.failed()),
+        already > 0 ? (", " + std::to_string(already) + " were done before").c_str() : "");
     std::printf("Results in %s; tables: isopound export %s\n", db_path.c_str(), db_path.c_str());
   }
   return 0;

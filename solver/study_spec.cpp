@@ -28,32 +28,19 @@ constexpr const char* kRecordPath = "ground_motion.record";
 constexpr const char* kRecordAxis = "record";
 constexpr const char* kVariantAxis = "variant";
 
-int line_of(const YAML::Mark& m) { return m.is_null() ? 0 : m.line + 1; }
-int column_of(const YAML::Mark& m) { return m.is_null() ? 0 : m.column + 1; }
+int line_of(const YAML::Mark& m) {
+  return m.is_null() ? 0 : m.line + 1;
+}
+int column_of(const YAML::Mark& m) {
+  return m.is_null() ? 0 : m.column + 1;
+}
 
 std::string read_text(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path, 0, 0, "", "file not found");
-  if (fs::is_directory(path, ec)) throw InputError(path, 0, 0, "", "is a directory, expected a YAML file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, "", "cannot open the file");
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError(path, 0, 0, "", "cannot read the file");
-  return text;
+  return read_input_file(path, "a YAML file");
 }
 
 YAML::Node parse_document(const std::string& text, const std::string& path) {
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, line_of(e.mark), column_of(e.mark), "", "YAML syntax error: " + e.msg);
-  }
-  if (documents.size() > 1) {
-    const YAML::Mark second = documents[1].IsDefined() ? documents[1].Mark() : YAML::Mark::null_mark();
-    throw InputError(path, line_of(second), column_of(second), "", "more than one YAML document ('---')");
-  }
-  return documents.empty() ? YAML::Node() : documents.front();
+  return parse_single_document(text, path, "a study or model file");
 }
 
 std::string canonical_text(const YAML::Node& value) {
@@ -89,7 +76,9 @@ std::string column_name_of(std::string_view text) {
   return out;
 }
 
-bool is_column_name(std::string_view text) { return !text.empty() && column_name_of(text) == text; }
+bool is_column_name(std::string_view text) {
+  return !text.empty() && column_name_of(text) == text;
+}
 
 // SI unit text of a dimension that the unit parser reads back ("kg*s^-2"); "" if dimensionless.
 std::string si_unit_of(const Dimension& d) {
@@ -115,7 +104,8 @@ class StudyReader {
   explicit StudyReader(Study& study) : study_(study) {}
 
   void read(const InputNode& top) {
-    top.expect_keys({"name", "model", "set", "records", "axes", "variants", "outputs", "derived", "statistics"});
+    top.expect_keys({"name", "model", "set", "records", "axes", "variants", "outputs", "derived",
+                     "statistics"});
     study_.name = fs::path(study_.file).stem().string();
     if (const auto name = top.find("name")) {
       study_.name = name->string();
@@ -143,8 +133,9 @@ class StudyReader {
           }
           for (std::size_t a = first + 1; a < study_.axes.size(); ++a) {
             if (study_.axes[a].levels.size() != study_.axes[first].levels.size())
-              study_.axes[a].where.fail("zipped axes must have the same number of values: '" + study_.axes[a].name +
-                                        "' has " + std::to_string(study_.axes[a].levels.size()) + ", '" +
+              study_.axes[a].where.fail("zipped axes must have the same number of values: '" +
+                                        study_.axes[a].name + "' has " +
+                                        std::to_string(study_.axes[a].levels.size()) + ", '" +
                                         study_.axes[first].name + "' has " +
                                         std::to_string(study_.axes[first].levels.size()));
           }
@@ -184,7 +175,8 @@ class StudyReader {
       study_.model_dir = study_.dir;
       return;
     }
-    if (node.is_sequence()) node.fail("expected a model file (path) or an inline model (a map), got a list");
+    if (node.is_sequence())
+      node.fail("expected a model file (path) or an inline model (a map), got a list");
     const std::string written = node.string();
     if (written.empty()) node.fail("must not be empty");
     fs::path path(written);
@@ -198,7 +190,8 @@ class StudyReader {
     study_.model_dir = fs::path(resolved).parent_path().string();
   }
 
-  Override make_override(const InputNode& where, const std::string& path_text, const YAML::Node& value) {
+  Override make_override(const InputNode& where, const std::string& path_text,
+                         const YAML::Node& value) {
     ParameterPath path;
     try {
       path = parse_parameter_path(path_text);
@@ -220,15 +213,19 @@ class StudyReader {
     path = path.lexically_normal();
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) where.fail("record file '" + path.string() + "' not found");
-    const std::string relative = fs::path(path).lexically_relative(study_.dir.empty() ? "." : study_.dir).string();
-    if (std::find(study_.record_files.begin(), study_.record_files.end(), relative) == study_.record_files.end())
+    const std::string relative =
+        fs::path(path).lexically_relative(study_.dir.empty() ? "." : study_.dir).string();
+    if (std::find(study_.record_files.begin(), study_.record_files.end(), relative) ==
+        study_.record_files.end())
       study_.record_files.push_back(relative);
     return fs::absolute(path, ec).lexically_normal().string();
   }
 
   // {path: value, ...} as overrides, in file order.
   std::vector<Override> read_override_map(const InputNode& map) {
-    if (!map.is_map()) map.fail("expected a map of parameter paths to values, e.g. {building.isolator.model: bilinear}");
+    if (!map.is_map())
+      map.fail(
+          "expected a map of parameter paths to values, e.g. {building.isolator.model: bilinear}");
     std::vector<Override> out;
     std::set<std::string> seen;
     for (const std::string& key : keys_of(map)) {
@@ -243,14 +240,17 @@ class StudyReader {
   // Named sets of overrides: {label: {path: value, ...}, ...}.
   std::vector<Level> read_levels(const InputNode& map) {
     if (!map.is_map() || keys_of(map).empty())
-      map.fail("empty axis: expected named sets of overrides, e.g. {BL: {building.isolator.model: bilinear}}");
+      map.fail(
+          "empty axis: expected named sets of overrides, e.g. {BL: {building.isolator.model: "
+          "bilinear}}");
     std::vector<Level> levels;
     for (const std::string& label : keys_of(map)) {
       const InputNode overrides = *map.find(label);
       if (label.empty()) overrides.fail("a level needs a name");
       Level level;
       level.label = label;
-      if (!overrides.yaml().IsNull()) level.overrides = read_override_map(overrides);  // "free: {}" or "base:"
+      if (!overrides.yaml().IsNull())
+        level.overrides = read_override_map(overrides);  // "free: {}" or "base:"
       levels.push_back(std::move(level));
     }
     return levels;
@@ -279,7 +279,8 @@ class StudyReader {
 
   std::vector<Level> read_range(const InputNode& range, const ParameterPath& path) {
     range.expect_keys({"from", "to", "step"});
-    const InputNode from = range.required("from"), to = range.required("to"), step = range.required("step");
+    const InputNode from = range.required("from"), to = range.required("to"),
+                    step = range.required("step");
     const auto quantity = [](const InputNode& node) {
       try {
         return parse_quantity(node.string());
@@ -289,17 +290,19 @@ class StudyReader {
     };
     const Quantity a = quantity(from), b = quantity(to), h = quantity(step);
     const auto dimension = [](const Quantity& q) {
-      return q.dimension == dim::kNone ? std::string("dimensionless") : "of dimension " + q.dimension.to_string();
+      return q.dimension == dim::kNone ? std::string("dimensionless")
+                                       : "of dimension " + q.dimension.to_string();
     };
     for (const auto& [node, q] : {std::pair{&to, b}, std::pair{&step, h}}) {
       if (!(q.dimension == a.dimension))
-        node->fail("unit mismatch: '" + node->string() + "' is " + dimension(q) + " but from: '" + from.string() +
-                   "' is " + dimension(a));
+        node->fail("unit mismatch: '" + node->string() + "' is " + dimension(q) + " but from: '" +
+                   from.string() + "' is " + dimension(a));
     }
     if (h.si == 0.0) step.fail("the step must not be 0");
     if ((b.si > a.si && h.si < 0) || (b.si < a.si && h.si > 0))
-      step.fail("step of wrong sign: going from '" + from.string() + "' to '" + to.string() + "' needs a " +
-                (b.si > a.si ? "positive" : "negative") + " step (got '" + step.string() + "')");
+      step.fail("step of wrong sign: going from '" + from.string() + "' to '" + to.string() +
+                "' needs a " + (b.si > a.si ? "positive" : "negative") + " step (got '" +
+                step.string() + "')");
     const double intervals = (b.si - a.si) / h.si;
     if (!(intervals < static_cast<double>(kMaxAxisValues)))
       step.fail("the range has more than " + std::to_string(kMaxAxisValues) + " values");
@@ -310,23 +313,27 @@ class StudyReader {
       // %.12g drops the last bits of a + i h, so 1 cm + 3 x 0.05 cm is written 0.0115 m.
       char number[40];
       std::snprintf(number, sizeof number, "%.12g", a.si + static_cast<double>(i) * h.si);
-      const std::string text = unit.empty() ? std::string(number) : std::string(number) + " " + unit;
+      const std::string text =
+          unit.empty() ? std::string(number) : std::string(number) + " " + unit;
       levels.push_back(value_level(range, path, YAML::Node(text)));
     }
     return levels;
   }
 
   Axis read_axis(const InputNode& item, int group) {
-    if (!item.is_map()) item.fail("expected an axis {path, values | range} or {name, levels} or {zip: [...]}");
+    if (!item.is_map())
+      item.fail("expected an axis {path, values | range} or {name, levels} or {zip: [...]}");
     item.expect_keys({"name", "path", "values", "range", "levels"});
     Axis axis{"", {}, group, item};
     if (const auto name = item.find("name")) {
       axis.name = name->string();
-      if (!is_column_name(axis.name)) name->fail("an axis name may hold letters, digits and '_' only (it names a column)");
+      if (!is_column_name(axis.name))
+        name->fail("an axis name may hold letters, digits and '_' only (it names a column)");
     }
     if (const auto levels = item.find("levels")) {
       for (const char* key : {"path", "values", "range"})
-        if (const auto other = item.find(key)) other->fail("give either levels or path with values/range");
+        if (const auto other = item.find(key))
+          other->fail("give either levels or path with values/range");
       if (axis.name.empty()) item.fail_at_key("name", "an axis with levels needs a name");
       axis.levels = read_levels(*levels);
       return axis;
@@ -349,7 +356,8 @@ class StudyReader {
     const auto values = item.find("values");
     const auto range = item.find("range");
     if (values && range) range->fail("give either values or range, not both");
-    if (!values && !range) item.fail_at_key("values", "missing 'values' (a list) or 'range' ({from, to, step})");
+    if (!values && !range)
+      item.fail_at_key("values", "missing 'values' (a list) or 'range' ({from, to, step})");
     if (values) {
       const std::vector<InputNode> list = values->elements();
       if (list.empty()) values->fail("empty axis: give at least one value");
@@ -390,8 +398,8 @@ class StudyReader {
     if (!entry.is_map()) {
       files.emplace_back(entry, entry.string());
     } else {
-      entry.expect_keys({"file", "files", "folder", "glob", "components", "scale", "format", "column",
-                         "time_column", "dt", "unit"});
+      entry.expect_keys({"file", "files", "folder", "glob", "components", "scale", "format",
+                         "column", "time_column", "dt", "unit"});
       const auto file = entry.find("file");
       const auto list = entry.find("files");
       const auto folder = entry.find("folder");
@@ -404,7 +412,8 @@ class StudyReader {
         base = fs::path(folder->string());
         if (base.is_relative()) base = fs::path(study_.dir) / base;
         std::error_code ec;
-        if (!fs::is_directory(base, ec)) folder->fail("folder '" + base.lexically_normal().string() + "' not found");
+        if (!fs::is_directory(base, ec))
+          folder->fail("folder '" + base.lexically_normal().string() + "' not found");
       }
       const auto relative_to_study = [&](const std::string& name) {
         return (folder ? (fs::path(folder->string()) / name) : fs::path(name)).string();
@@ -413,7 +422,8 @@ class StudyReader {
       if (list) {
         const std::vector<InputNode> items = list->elements();
         if (items.empty()) list->fail("empty list of record files");
-        for (const InputNode& item : items) files.emplace_back(item, relative_to_study(item.string()));
+        for (const InputNode& item : items)
+          files.emplace_back(item, relative_to_study(item.string()));
       }
       if (glob) {
         const std::string pattern = glob->string();
@@ -422,14 +432,18 @@ class StudyReader {
         for (const auto& f : fs::directory_iterator(base))
           if (f.is_regular_file() && fnmatch(pattern.c_str(), f.path().filename().c_str(), 0) == 0)
             names.push_back(f.path().filename().string());
-        std::sort(names.begin(), names.end());  // the order of cases must not depend on the file system
-        if (names.empty()) glob->fail("no file in '" + base.lexically_normal().string() + "' matches '" + pattern + "'");
+        std::sort(names.begin(),
+                  names.end());  // the order of cases must not depend on the file system
+        if (names.empty())
+          glob->fail("no file in '" + base.lexically_normal().string() + "' matches '" + pattern +
+                     "'");
         for (const std::string& name : names) files.emplace_back(*glob, relative_to_study(name));
       }
       for (const char* key : {"scale", "format", "column", "time_column", "dt", "unit"})
         if (const auto option = entry.find(key)) {
           if (!option->yaml().IsScalar()) option->fail("expected a single value");
-          options.push_back(make_override(*option, std::string("ground_motion.") + key, option->yaml()));
+          options.push_back(
+              make_override(*option, std::string("ground_motion.") + key, option->yaml()));
         }
       if (const auto list_of_components = entry.find("components")) {
         if (entry.has("column")) list_of_components->fail("give either column or components");
@@ -438,7 +452,8 @@ class StudyReader {
         for (const std::string& name : keys_of(*list_of_components)) {
           const InputNode column = *list_of_components->find(name);
           column.integer(0, std::numeric_limits<int>::max());
-          if (!is_column_name(name)) column.fail("a component name may hold letters, digits and '_' only");
+          if (!is_column_name(name))
+            column.fail("a component name may hold letters, digits and '_' only");
           components.emplace_back(name, column);
         }
       }
@@ -464,17 +479,20 @@ class StudyReader {
   void check_axis_names() {
     for (std::size_t a = 0; a < study_.axes.size(); ++a) {
       const Axis& axis = study_.axes[a];
-      if (axis.name.empty()) axis.where.fail_at_key("name", "give the axis a name (it names a column)");
+      if (axis.name.empty())
+        axis.where.fail_at_key("name", "give the axis a name (it names a column)");
       if (is_reserved_column(axis.name))
-        axis.where.fail_at_key("name", "'" + axis.name + "' names a fixed column of the results; choose another name");
+        axis.where.fail_at_key(
+            "name", "'" + axis.name + "' names a fixed column of the results; choose another name");
       for (std::size_t b = 0; b < a; ++b)
         if (study_.axes[b].name == axis.name)
-          axis.where.fail_at_key("name", "two axes are named '" + axis.name + "'" +
-                                             (axis.name == kRecordAxis || axis.name == kVariantAxis
-                                                  ? " ('" + axis.name + "' is the axis of `" +
-                                                        (axis.name == kRecordAxis ? "records" : "variants") + "`)"
-                                                  : "") +
-                                             ": give one a different `name:`");
+          axis.where.fail_at_key(
+              "name", "two axes are named '" + axis.name + "'" +
+                          (axis.name == kRecordAxis || axis.name == kVariantAxis
+                               ? " ('" + axis.name + "' is the axis of `" +
+                                     (axis.name == kRecordAxis ? "records" : "variants") + "`)"
+                               : "") +
+                          ": give one a different `name:`");
     }
   }
 
@@ -484,24 +502,28 @@ class StudyReader {
     } catch (const std::invalid_argument& e) {
       where.fail(e.what());
     }
-    if (!is_column_name(column)) where.fail("column name '" + column + "' may hold letters, digits and '_' only");
+    if (!is_column_name(column))
+      where.fail("column name '" + column + "' may hold letters, digits and '_' only");
     if (is_reserved_column(column) || study_.axis_index(column) >= 0)
       where.fail("column '" + column + "' is already used by " +
                  (is_reserved_column(column) ? std::string("a fixed column") : "an axis") +
                  "; name the peak with {name: selector}");
     for (const OutputSpec& o : study_.outputs)
-      if (o.column == column) where.fail("two peaks give the column '" + column + "'; name one with {name: selector}");
+      if (o.column == column)
+        where.fail("two peaks give the column '" + column + "'; name one with {name: selector}");
     study_.outputs.push_back({column, selector, where});
   }
 
   void read_outputs(const std::optional<InputNode>& node, const InputNode& top) {
     if (!node) {
-      for (const char* selector : {"base.displacement", "stories.drift_ratio", "floors.absolute_acceleration"})
+      for (const char* selector :
+           {"base.displacement", "stories.drift_ratio", "floors.absolute_acceleration"})
         add_output(top, column_name_of(selector), selector);
       return;
     }
     if (node->is_map()) {
-      for (const std::string& column : keys_of(*node)) add_output(*node->find(column), column, node->find(column)->string());
+      for (const std::string& column : keys_of(*node))
+        add_output(*node->find(column), column, node->find(column)->string());
     } else {
       for (const InputNode& item : node->elements()) {
         if (item.is_map()) {
@@ -513,25 +535,29 @@ class StudyReader {
         }
       }
     }
-    if (study_.outputs.empty()) node->fail("no peaks to keep: list at least one, e.g. base.displacement");
+    if (study_.outputs.empty())
+      node->fail("no peaks to keep: list at least one, e.g. base.displacement");
   }
 
   void read_ratios(const InputNode& node) {
-    if (!node.is_map()) node.fail("expected {name: {ratio: [numerator, denominator], axis: variant}, ...}");
+    if (!node.is_map())
+      node.fail("expected {name: {ratio: [numerator, denominator], axis: variant}, ...}");
     for (const std::string& name : keys_of(node)) {
       const InputNode item = *node.find(name);
       item.expect_keys({"ratio", "axis"});
       RatioSpec r{name, kVariantAxis, "", ""};
       if (const auto axis = item.find("axis")) r.axis = axis->string();
       const int a = study_.axis_index(r.axis);
-      if (a < 0) (item.has("axis") ? *item.find("axis") : item).fail("no axis named '" + r.axis + "'");
+      if (a < 0)
+        (item.has("axis") ? *item.find("axis") : item).fail("no axis named '" + r.axis + "'");
       const Axis& axis = study_.axes[a];
       int members = 0;
       for (const Axis& other : study_.axes) members += other.group == axis.group ? 1 : 0;
       if (members > 1) item.fail("ratios between levels of a zipped axis are not supported");
       const InputNode ratio = item.required("ratio");
       const std::vector<InputNode> pair = ratio.elements();
-      if (pair.size() != 2) ratio.fail("expected [numerator, denominator], two labels of axis '" + r.axis + "'");
+      if (pair.size() != 2)
+        ratio.fail("expected [numerator, denominator], two labels of axis '" + r.axis + "'");
       r.numerator = pair[0].string();
       r.denominator = pair[1].string();
       for (const InputNode& label : pair) {
@@ -540,12 +566,14 @@ class StudyReader {
         if (found == axis.levels.end()) {
           std::string labels;
           for (const Level& l : axis.levels) labels += (labels.empty() ? "" : ", ") + l.label;
-          label.fail("axis '" + r.axis + "' has no level '" + label.string() + "' (levels: " + labels + ")");
+          label.fail("axis '" + r.axis + "' has no level '" + label.string() +
+                     "' (levels: " + labels + ")");
         }
       }
       if (r.numerator == r.denominator) ratio.fail("numerator and denominator are the same level");
       for (const Level& l : axis.levels)
-        if (l.label == name) item.fail("'" + name + "' is also a level of axis '" + r.axis + "': choose another name");
+        if (l.label == name)
+          item.fail("'" + name + "' is also a level of axis '" + r.axis + "': choose another name");
       for (const RatioSpec& other : study_.ratios)
         if (other.name == name) item.fail("two ratios are named '" + name + "'");
       study_.ratios.push_back(r);
@@ -566,18 +594,22 @@ class StudyReader {
       item.expect_keys({"over", "std"});
       StatisticsSpec s;
       const InputNode over = item.required("over");
-      const std::vector<InputNode> names = over.is_sequence() ? over.elements() : std::vector<InputNode>{over};
+      const std::vector<InputNode> names =
+          over.is_sequence() ? over.elements() : std::vector<InputNode>{over};
       if (names.empty()) over.fail("name at least one axis to take statistics over");
       for (const InputNode& name : names) {
         if (study_.axis_index(name.string()) < 0) {
           std::string axes;
           for (const Axis& a : study_.axes) axes += (axes.empty() ? "" : ", ") + a.name;
-          name.fail("no axis named '" + name.string() + "' (axes: " + (axes.empty() ? "none" : axes) + ")");
+          name.fail("no axis named '" + name.string() +
+                    "' (axes: " + (axes.empty() ? "none" : axes) + ")");
         }
-        if (std::find(s.over.begin(), s.over.end(), name.string()) != s.over.end()) name.fail("named twice");
+        if (std::find(s.over.begin(), s.over.end(), name.string()) != s.over.end())
+          name.fail("named twice");
         s.over.push_back(name.string());
       }
-      if (const auto std_kind = item.find("std")) s.sample_std = std_kind->choice<bool>({{"sample", true}, {"population", false}});
+      if (const auto std_kind = item.find("std"))
+        s.sample_std = std_kind->choice<bool>({{"sample", true}, {"population", false}});
       study_.statistics.push_back(s);
     }
   }
@@ -588,10 +620,11 @@ class StudyReader {
 }  // namespace
 
 bool is_reserved_column(const std::string& name) {
-  static const char* const kReserved[] = {"case_id", "status",  "steps", "wall_seconds",   "session",
-                                          "error",   "over",    "output", "n",             "mean",
-                                          "std",     "mean_minus_std", "mean_plus_std", "min", "max", "median"};
-  return std::any_of(std::begin(kReserved), std::end(kReserved), [&](const char* r) { return name == r; });
+  static const char* const kReserved[] = {
+      "case_id", "status", "steps", "wall_seconds",   "session",       "error", "over", "output",
+      "n",       "mean",   "std",   "mean_minus_std", "mean_plus_std", "min",   "max",  "median"};
+  return std::any_of(std::begin(kReserved), std::end(kReserved),
+                     [&](const char* r) { return name == r; });
 }
 
 std::vector<std::int64_t> Study::group_sizes() const {
@@ -631,7 +664,8 @@ Study load_study_file(const std::string& path) {
   study.text = read_text(path);
   const YAML::Node root = parse_document(study.text, path);
   const InputNode top(root, path);
-  if (!root.IsDefined() || root.IsNull()) top.fail("the document is empty; expected a study (model, axes, ...)");
+  if (!root.IsDefined() || root.IsNull())
+    top.fail("the document is empty; expected a study (model, axes, ...)");
   try {
     StudyReader(study).read(top);
   } catch (const YAML::Exception& e) {

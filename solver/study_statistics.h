@@ -7,9 +7,9 @@
 namespace isopound {
 
 struct SummaryStatistics {
-  int n = 0;            // values used (NaN values are skipped)
+  int n = 0;  // values used (NaN values are skipped)
   double mean = 0.0;
-  double std = 0.0;     // sample (n - 1) or population (n); NaN for a sample of one
+  double std = 0.0;  // sample (n - 1) or population (n); NaN for a sample of one
   double min = 0.0;
   double max = 0.0;
   double median = 0.0;  // the middle value, or the mean of the two middle ones

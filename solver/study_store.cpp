@@ -1,14 +1,15 @@
 // SQLite store of a study (schema in study_store.h). journal_mode=WAL with synchronous=NORMAL: a
-// committed transaction survives the process being killed (SIGKILL); only power loss may lose the last ones.
+// committed transaction survives the process being killed (SIGKILL); only power loss may lose the
+// last ones.
 #include "solver/study_store.h"
 
 #include <cmath>
 #include <ctime>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <system_error>
-#include <filesystem>
 
 namespace isopound {
 namespace {
@@ -36,16 +37,23 @@ std::string utc_now() {
 // A prepared statement, finalized on scope exit.
 class Statement {
  public:
-  Statement(sqlite3* db, const std::string& sql, const std::function<void(const std::string&)>& fail) : fail_(fail) {
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt_, nullptr) != SQLITE_OK) fail_(sqlite3_errmsg(db));
+  Statement(sqlite3* db, const std::string& sql,
+            const std::function<void(const std::string&)>& fail)
+      : fail_(fail) {
+    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt_, nullptr) != SQLITE_OK)
+      fail_(sqlite3_errmsg(db));
   }
   ~Statement() { sqlite3_finalize(stmt_); }
   Statement(const Statement&) = delete;
   Statement& operator=(const Statement&) = delete;
 
   void bind(int i, std::int64_t v) { check(sqlite3_bind_int64(stmt_, i, v)); }
-  void bind(int i, double v) { check(std::isnan(v) ? sqlite3_bind_null(stmt_, i) : sqlite3_bind_double(stmt_, i, v)); }
-  void bind(int i, const std::string& v) { check(sqlite3_bind_text(stmt_, i, v.c_str(), static_cast<int>(v.size()), SQLITE_TRANSIENT)); }
+  void bind(int i, double v) {
+    check(std::isnan(v) ? sqlite3_bind_null(stmt_, i) : sqlite3_bind_double(stmt_, i, v));
+  }
+  void bind(int i, const std::string& v) {
+    check(sqlite3_bind_text(stmt_, i, v.c_str(), static_cast<int>(v.size()), SQLITE_TRANSIENT));
+  }
   void bind_null(int i) { check(sqlite3_bind_null(stmt_, i)); }
   // true while a row is available.
   bool step() {
@@ -81,7 +89,10 @@ std::string StoreLayout::to_json() const {
   j["outputs"] = outputs;
   j["ratios"] = nlohmann::json::array();
   for (const RatioSpec& r : ratios)
-    j["ratios"].push_back({{"name", r.name}, {"axis", r.axis}, {"numerator", r.numerator}, {"denominator", r.denominator}});
+    j["ratios"].push_back({{"name", r.name},
+                           {"axis", r.axis},
+                           {"numerator", r.numerator},
+                           {"denominator", r.denominator}});
   j["statistics"] = nlohmann::json::array();
   for (const StatisticsSpec& s : statistics)
     j["statistics"].push_back({{"over", s.over}, {"std", s.sample_std ? "sample" : "population"}});
@@ -109,11 +120,14 @@ StoreLayout StoreLayout::of(const Study& study) {
   return l;
 }
 
-StudyStore::StudyStore(std::unique_ptr<sqlite3, Closer> db, std::string path) : db_(std::move(db)), path_(std::move(path)) {}
+StudyStore::StudyStore(std::unique_ptr<sqlite3, Closer> db, std::string path)
+    : db_(std::move(db)), path_(std::move(path)) {}
 
 StudyStore::~StudyStore() = default;
 
-void StudyStore::fail(const std::string& what) const { throw StoreError(path_ + ": " + what); }
+void StudyStore::fail(const std::string& what) const {
+  throw StoreError(path_ + ": " + what);
+}
 
 void StudyStore::execute(const std::string& sql) const {
   char* message = nullptr;
@@ -125,30 +139,40 @@ void StudyStore::execute(const std::string& sql) const {
 }
 
 StudyStore StudyStore::create(const std::string& path, const StoreLayout& layout,
-                              const std::map<std::string, std::string>& meta, std::int64_t case_count,
+                              const std::map<std::string, std::string>& meta,
+                              std::int64_t case_count,
                               const std::function<std::vector<Cell>(std::int64_t)>& labels) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) throw StoreError(path + ": already exists");
   sqlite3* raw = nullptr;
-  const int rc = sqlite3_open_v2(path.c_str(), &raw, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr);
+  const int rc =
+      sqlite3_open_v2(path.c_str(), &raw,
+                      SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr);
   std::unique_ptr<sqlite3, Closer> db(raw);
-  if (rc != SQLITE_OK) throw StoreError(path + ": cannot create the database: " + (raw ? sqlite3_errmsg(raw) : "out of memory"));
+  if (rc != SQLITE_OK)
+    throw StoreError(
+        path + ": cannot create the database: " + (raw ? sqlite3_errmsg(raw) : "out of memory"));
   StudyStore store(std::move(db), path);
   store.layout_ = layout;
   store.execute("PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL; PRAGMA busy_timeout=10000;");
   std::string runs = "CREATE TABLE runs(case_id INTEGER PRIMARY KEY";
   for (const std::string& a : layout.axes) runs += ", " + quoted(a);
-  runs += ", status TEXT NOT NULL DEFAULT 'pending', steps INTEGER, wall_seconds REAL, session INTEGER";
+  runs +=
+      ", status TEXT NOT NULL DEFAULT 'pending', steps INTEGER, wall_seconds REAL, session INTEGER";
   for (const std::string& o : layout.outputs) runs += ", " + quoted(o) + " REAL";
   runs += ", error TEXT)";
   store.execute("BEGIN");
   store.execute("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)");
   store.execute(runs);
   store.execute("CREATE INDEX runs_status ON runs(status)");
-  store.execute("CREATE TABLE sessions(session INTEGER PRIMARY KEY, started_utc TEXT, jobs INTEGER, ranks INTEGER, "
-                "resumed INTEGER, runs_to_do INTEGER)");
-  store.execute("CREATE TABLE computations(id INTEGER PRIMARY KEY, case_id INTEGER NOT NULL, session INTEGER NOT NULL, "
-                "rank INTEGER NOT NULL)");
+  store.execute(
+      "CREATE TABLE sessions(session INTEGER PRIMARY KEY, started_utc TEXT, jobs INTEGER, ranks "
+      "INTEGER, "
+      "resumed INTEGER, runs_to_do INTEGER)");
+  store.execute(
+      "CREATE TABLE computations(id INTEGER PRIMARY KEY, case_id INTEGER NOT NULL, session INTEGER "
+      "NOT NULL, "
+      "rank INTEGER NOT NULL)");
   const auto fail = [&](const std::string& what) { store.fail(what); };
   {
     Statement put(store.db_.get(), "INSERT INTO meta(key, value) VALUES(?, ?)", fail);
@@ -192,10 +216,13 @@ StudyStore StudyStore::open(const std::string& path, bool read_only) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw StoreError(path + ": no such database");
   sqlite3* raw = nullptr;
-  const int flags = (read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE) | SQLITE_OPEN_NOMUTEX;
+  const int flags =
+      (read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE) | SQLITE_OPEN_NOMUTEX;
   const int rc = sqlite3_open_v2(path.c_str(), &raw, flags, nullptr);
   std::unique_ptr<sqlite3, Closer> db(raw);
-  if (rc != SQLITE_OK) throw StoreError(path + ": cannot open the database: " + (raw ? sqlite3_errmsg(raw) : "out of memory"));
+  if (rc != SQLITE_OK)
+    throw StoreError(
+        path + ": cannot open the database: " + (raw ? sqlite3_errmsg(raw) : "out of memory"));
   StudyStore store(std::move(db), path);
   store.execute("PRAGMA busy_timeout=10000;");
   if (!read_only) store.execute("PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;");
@@ -205,7 +232,8 @@ StudyStore StudyStore::open(const std::string& path, bool read_only) {
   } catch (const StoreError&) {
     throw StoreError(path + ": not an isopound study database");
   }
-  if (format != kFormat) throw StoreError(path + ": not an isopound study database (format '" + format + "')");
+  if (format != kFormat)
+    throw StoreError(path + ": not an isopound study database (format '" + format + "')");
   try {
     store.layout_ = StoreLayout::from_json(store.meta("layout"));
   } catch (const std::exception& e) {
@@ -221,7 +249,8 @@ bool StudyStore::has_schema(const std::string& path) {
   if (rc != SQLITE_OK) return true;  // let open() report the problem
   sqlite3_stmt* stmt = nullptr;
   bool tables = true;
-  if (sqlite3_prepare_v2(raw, "SELECT COUNT(*) FROM sqlite_master", -1, &stmt, nullptr) == SQLITE_OK &&
+  if (sqlite3_prepare_v2(raw, "SELECT COUNT(*) FROM sqlite_master", -1, &stmt, nullptr) ==
+          SQLITE_OK &&
       sqlite3_step(stmt) == SQLITE_ROW)
     tables = sqlite3_column_int64(stmt, 0) > 0;
   sqlite3_finalize(stmt);
@@ -229,7 +258,8 @@ bool StudyStore::has_schema(const std::string& path) {
 }
 
 std::string StudyStore::meta(const std::string& key) const {
-  Statement get(db_.get(), "SELECT value FROM meta WHERE key = ?", [&](const std::string& w) { fail(w); });
+  Statement get(db_.get(), "SELECT value FROM meta WHERE key = ?",
+                [&](const std::string& w) { fail(w); });
   get.bind(1, key);
   return get.step() ? column_text(get.get(), 0) : "";
 }
@@ -241,7 +271,8 @@ std::int64_t StudyStore::case_count() const {
 }
 
 std::int64_t StudyStore::count_with_status(const std::string& status) const {
-  Statement count(db_.get(), "SELECT COUNT(*) FROM runs WHERE status = ?", [&](const std::string& w) { fail(w); });
+  Statement count(db_.get(), "SELECT COUNT(*) FROM runs WHERE status = ?",
+                  [&](const std::string& w) { fail(w); });
   count.bind(1, status);
   count.step();
   return sqlite3_column_int64(count.get(), 0);
@@ -256,9 +287,10 @@ std::vector<std::int64_t> StudyStore::unfinished_cases() const {
 }
 
 std::int64_t StudyStore::begin_session(int jobs, int ranks, bool resumed, std::int64_t runs_to_do) {
-  Statement add(db_.get(),
-                "INSERT INTO sessions(started_utc, jobs, ranks, resumed, runs_to_do) VALUES(?, ?, ?, ?, ?)",
-                [&](const std::string& w) { fail(w); });
+  Statement add(
+      db_.get(),
+      "INSERT INTO sessions(started_utc, jobs, ranks, resumed, runs_to_do) VALUES(?, ?, ?, ?, ?)",
+      [&](const std::string& w) { fail(w); });
   add.bind(1, utc_now());
   add.bind(2, static_cast<std::int64_t>(jobs));
   add.bind(3, static_cast<std::int64_t>(ranks));
@@ -271,13 +303,15 @@ std::int64_t StudyStore::begin_session(int jobs, int ranks, bool resumed, std::i
 void StudyStore::commit(const std::vector<RunRecord>& runs, std::int64_t session) {
   if (runs.empty()) return;
   const auto fail_with = [&](const std::string& w) { fail(w); };
-  std::string sql = "UPDATE runs SET status = ?, steps = ?, wall_seconds = ?, session = ?, error = ?";
+  std::string sql =
+      "UPDATE runs SET status = ?, steps = ?, wall_seconds = ?, session = ?, error = ?";
   for (const std::string& o : layout_.outputs) sql += ", " + quoted(o) + " = ?";
   sql += " WHERE case_id = ?";
   execute("BEGIN IMMEDIATE");
   try {
     Statement update(db_.get(), sql, fail_with);
-    Statement log(db_.get(), "INSERT INTO computations(case_id, session, rank) VALUES(?, ?, ?)", fail_with);
+    Statement log(db_.get(), "INSERT INTO computations(case_id, session, rank) VALUES(?, ?, ?)",
+                  fail_with);
     for (const RunRecord& run : runs) {
       update.bind(1, std::string(run.ok ? "done" : "failed"));
       update.bind(2, run.steps);
@@ -288,7 +322,8 @@ void StudyStore::commit(const std::vector<RunRecord>& runs, std::int64_t session
       else
         update.bind(5, run.error);
       for (std::size_t k = 0; k < layout_.outputs.size(); ++k) {
-        const double v = run.ok && k < run.values.size() ? run.values[k] : std::numeric_limits<double>::quiet_NaN();
+        const double v = run.ok && k < run.values.size() ? run.values[k]
+                                                         : std::numeric_limits<double>::quiet_NaN();
         update.bind(static_cast<int>(k) + 6, v);
       }
       update.bind(static_cast<int>(layout_.outputs.size()) + 6, run.case_id);
@@ -334,12 +369,14 @@ std::vector<RunRow> StudyStore::read_runs() const {
       row.axes.push_back(std::move(cell));
     }
     row.status = column_text(s, 1 + axes);
-    row.steps = sqlite3_column_type(s, 2 + axes) == SQLITE_NULL ? -1 : sqlite3_column_int64(s, 2 + axes);
+    row.steps =
+        sqlite3_column_type(s, 2 + axes) == SQLITE_NULL ? -1 : sqlite3_column_int64(s, 2 + axes);
     row.wall_seconds = sqlite3_column_double(s, 3 + axes);
     for (int k = 0; k < outputs; ++k) {
       const int column = 4 + axes + k;
-      row.values.push_back(sqlite3_column_type(s, column) == SQLITE_NULL ? std::numeric_limits<double>::quiet_NaN()
-                                                                          : sqlite3_column_double(s, column));
+      row.values.push_back(sqlite3_column_type(s, column) == SQLITE_NULL
+                               ? std::numeric_limits<double>::quiet_NaN()
+                               : sqlite3_column_double(s, column));
     }
     row.error = column_text(s, 4 + axes + outputs);
     rows.push_back(std::move(row));

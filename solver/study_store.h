@@ -50,7 +50,7 @@ struct RunRecord {
   std::int64_t case_id = 0;
   bool ok = false;
   bool computed = true;
-  int rank = 0;                // MPI rank that computed it
+  int rank = 0;  // MPI rank that computed it
   std::string error;
   std::int64_t steps = 0;
   double wall_seconds = 0.0;
@@ -61,8 +61,8 @@ struct RunRecord {
 struct RunRow {
   std::int64_t case_id = 0;
   std::vector<Cell> axes;
-  std::string status;          // pending | done | failed
-  std::int64_t steps = -1;     // -1: NULL
+  std::string status;       // pending | done | failed
+  std::int64_t steps = -1;  // -1: NULL
   double wall_seconds = 0.0;
   std::vector<double> values;  // NaN for NULL
   std::string error;

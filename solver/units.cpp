@@ -13,12 +13,14 @@ namespace {
 
 constexpr double kTolerance = 1e-9;
 constexpr double kStandardGravity = 9.81;  // m/s^2, THEORY "Units"
-constexpr double kMaxExponent = 100.0;      // keeps dimensions and scales finite
+constexpr double kMaxExponent = 100.0;     // keeps dimensions and scales finite
 
 Dimension operator+(const Dimension& a, const Dimension& b) {
   return {a.length + b.length, a.mass + b.mass, a.time + b.time};
 }
-Dimension operator*(const Dimension& a, double k) { return {a.length * k, a.mass * k, a.time * k}; }
+Dimension operator*(const Dimension& a, double k) {
+  return {a.length * k, a.mass * k, a.time * k};
+}
 
 struct Symbol {
   std::string_view name;
@@ -52,7 +54,8 @@ constexpr std::array<Symbol, 23> kSymbols{{
     {"\xC2\xB0", std::numbers::pi / 180.0, dim::kNone},  // the degree sign
     {"rad", 1.0, dim::kNone},
 }};
-constexpr const char* kKnownSymbols = "m cm mm km, kg t, s ms min, N kN MN GN, Pa kPa MPa GPa, Hz, g (gravity), %, deg, rad";
+constexpr const char* kKnownSymbols =
+    "m cm mm km, kg t, s ms min, N kN MN GN, Pa kPa MPa GPa, Hz, g (gravity), %, deg, rad";
 
 struct NamedDimension {
   Dimension dimension;
@@ -82,9 +85,15 @@ std::string describe(const Dimension& d) {
   return "of dimension " + d.to_string();
 }
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
-bool is_ascii_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
+bool is_ascii_letter(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
 
 // "'text'". Built by appending: "'" + std::string(...) trips GCC 12's false -Wrestrict at -O3.
 std::string quoted(std::string_view s) {
@@ -156,7 +165,8 @@ SplitQuantity split_quantity(std::string_view text) {
   SplitQuantity out;
   const std::size_t used = parse_number(trimmed, out.number);
   if (used == 0)
-    throw UnitError(quoted(trimmed) + " is not a quantity: expected a number, optionally with a unit (e.g. '20 cm')");
+    throw UnitError(quoted(trimmed) +
+                    " is not a quantity: expected a number, optionally with a unit (e.g. '20 cm')");
   if (!std::isfinite(out.number)) throw UnitError(quoted(trimmed) + " is not a finite number");
   out.unit = trim(trimmed.substr(used));
   return out;
@@ -187,7 +197,8 @@ double parse_exponent(std::string_view unit, std::string_view& rest) {
     std::size_t n = 0;
     while (n < rest.size() && (is_digit(rest[n]) || rest[n] == '.')) ++n;
     double e = 0.0;
-    const auto [ptr, ec] = std::from_chars(rest.data(), rest.data() + n, e, std::chars_format::fixed);
+    const auto [ptr, ec] =
+        std::from_chars(rest.data(), rest.data() + n, e, std::chars_format::fixed);
     if (ec != std::errc() || ptr != rest.data() + n)
       fail_unit(unit, "bad exponent '" + std::string(rest.substr(0, n)) + "'");
     rest.remove_prefix(n);
@@ -220,8 +231,8 @@ struct UnitValue {
 UnitValue parse_unit(std::string_view unit) {
   UnitValue result;
   std::string_view rest = unit;
-  bool divide = false;         // the next factor is a divisor
-  bool expect_factor = true;   // at the start or after an operator
+  bool divide = false;        // the next factor is a divisor
+  bool expect_factor = true;  // at the start or after an operator
   while (true) {
     while (!rest.empty() && is_space(rest.front())) rest.remove_prefix(1);
     if (rest.empty()) break;
@@ -248,7 +259,8 @@ UnitValue parse_unit(std::string_view unit) {
       if (s.name == name) symbol = &s;
     if (symbol == nullptr) {
       const std::string where = name == unit ? "" : " in " + quoted(unit);
-      throw UnitError("unknown unit " + quoted(name) + where + " (known: " + kKnownSymbols + "; combine with * / ^)");
+      throw UnitError("unknown unit " + quoted(name) + where + " (known: " + kKnownSymbols +
+                      "; combine with * / ^)");
     }
     rest.remove_prefix(n);
     const double exponent = parse_exponent(unit, rest) * (divide ? -1.0 : 1.0);
@@ -259,7 +271,8 @@ UnitValue parse_unit(std::string_view unit) {
     expect_factor = false;
     // "m2s" or "kg(": a factor must be followed by a space, an operator, or the end.
     if (!rest.empty() && !is_space(rest.front()) && operator_length(rest) == 0)
-      fail_unit(unit, "unexpected " + quoted(rest) + " after " + quoted(unit.substr(0, unit.size() - rest.size())));
+      fail_unit(unit, "unexpected " + quoted(rest) + " after " +
+                          quoted(unit.substr(0, unit.size() - rest.size())));
   }
   if (expect_factor) fail_unit(unit, "ends with an operator");
   return result;

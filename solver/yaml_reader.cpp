@@ -3,9 +3,12 @@
 #include "solver/yaml_reader.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 
 namespace isopound {
@@ -23,7 +26,9 @@ std::string format_message(const std::string& file, int line, int column, const 
   return out + what;
 }
 
-bool has_position(const YAML::Mark& mark) { return !mark.is_null() && mark.line >= 0; }
+bool has_position(const YAML::Mark& mark) {
+  return !mark.is_null() && mark.line >= 0;
+}
 
 // Node::Mark() throws on an invalid node; such nodes simply have no position.
 YAML::Mark mark_of(const YAML::Node& node) {
@@ -73,7 +78,8 @@ InputError::InputError(std::string file, int line, int column, std::string key, 
       detail_(std::move(what)) {}
 
 InputNode::InputNode(YAML::Node root, std::string file)
-    : InputNode(std::move(root), std::move(file), "", YAML::Mark::null_mark(), YAML::Mark::null_mark()) {}
+    : InputNode(std::move(root), std::move(file), "", YAML::Mark::null_mark(),
+                YAML::Mark::null_mark()) {}
 
 InputNode::InputNode(YAML::Node node, std::string file, std::string path, YAML::Mark key_mark,
                      YAML::Mark parent_mark)
@@ -99,7 +105,9 @@ void InputNode::fail_at(const std::string& file, const YAML::Mark& mark, const s
   throw InputError(file, mark.line + 1, mark.column + 1, key, what);
 }
 
-void InputNode::fail(const std::string& what) const { fail_at(file_, mark(), path_, what); }
+void InputNode::fail(const std::string& what) const {
+  fail_at(file_, mark(), path_, what);
+}
 
 void InputNode::fail_at_key(std::string_view key, const std::string& what) const {
   fail_at(file_, mark(), child_path(key), what);
@@ -127,16 +135,21 @@ void InputNode::expect_keys(const std::vector<std::string_view>& names) const {
   }
   if (!node_.IsMap()) fail("expected a map with keys: " + join(names) + "; got " + kind());
   std::vector<std::pair<std::string, YAML::Mark>> seen;
-  for (const auto& entry : node_) {  // by value per element: it->first would dangle (iterator proxy)
+  for (const auto& entry :
+       node_) {  // by value per element: it->first would dangle (iterator proxy)
     const YAML::Node& key = entry.first;
     YAML::Mark key_mark = mark_of(key);
     if (!has_position(key_mark)) key_mark = mark();
-    if (!key.IsScalar()) fail_at(file_, key_mark, path_, "keys must be plain names, got " + InputNode(key, file_).kind());
+    if (!key.IsScalar())
+      fail_at(file_, key_mark, path_,
+              "keys must be plain names, got " + InputNode(key, file_).kind());
     const std::string& name = key.Scalar();
     for (const auto& [previous, previous_mark] : seen) {
       if (previous != name) continue;
       const std::string first_line =
-          has_position(previous_mark) ? " (first at line " + std::to_string(previous_mark.line + 1) + ")" : "";
+          has_position(previous_mark)
+              ? " (first at line " + std::to_string(previous_mark.line + 1) + ")"
+              : "";
       fail_at(file_, key_mark, child_path(name), "duplicate key '" + name + "'" + first_line);
     }
     seen.emplace_back(name, key_mark);
@@ -150,8 +163,10 @@ void InputNode::expect_keys(const std::vector<std::string_view>& names) const {
         suggestion = candidate;
       }
     }
-    const std::string hint = suggestion.empty() ? "" : " (did you mean '" + std::string(suggestion) + "'?)";
-    fail_at(file_, key_mark, child_path(name), "unknown key '" + name + "'" + hint + "; allowed: " + join(names));
+    const std::string hint =
+        suggestion.empty() ? "" : " (did you mean '" + std::string(suggestion) + "'?)";
+    fail_at(file_, key_mark, child_path(name),
+            "unknown key '" + name + "'" + hint + "; allowed: " + join(names));
   }
 }
 
@@ -164,7 +179,9 @@ std::optional<InputNode> InputNode::find(std::string_view key) const {
   return std::nullopt;
 }
 
-bool InputNode::has(std::string_view key) const { return find(key).has_value(); }
+bool InputNode::has(std::string_view key) const {
+  return find(key).has_value();
+}
 
 InputNode InputNode::required(std::string_view key) const {
   std::optional<InputNode> child = find(key);
@@ -178,7 +195,8 @@ std::vector<InputNode> InputNode::elements() const {
   out.reserve(node_.size());
   const YAML::Mark here = mark();
   for (const auto& element : node_)
-    out.push_back(InputNode(element, file_, path_ + "[" + std::to_string(out.size()) + "]", YAML::Mark::null_mark(), here));
+    out.push_back(InputNode(element, file_, path_ + "[" + std::to_string(out.size()) + "]",
+                            YAML::Mark::null_mark(), here));
   return out;
 }
 
@@ -219,33 +237,38 @@ double InputNode::quantity(const Dimension& expected, Bound bound) const {
 }
 
 int InputNode::integer(int min, int max) const {
-  if (node_.IsDefined() && (node_.IsMap() || node_.IsSequence())) fail("expected an integer, got " + kind());
+  if (node_.IsDefined() && (node_.IsMap() || node_.IsSequence()))
+    fail("expected an integer, got " + kind());
   const std::string text = string();
   std::string_view digits = text;
-  while (!digits.empty() && std::isspace(static_cast<unsigned char>(digits.back()))) digits.remove_suffix(1);
+  while (!digits.empty() && std::isspace(static_cast<unsigned char>(digits.back())))
+    digits.remove_suffix(1);
   if (digits.starts_with("+")) digits.remove_prefix(1);
   long long value = 0;
   const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (digits.empty() || ec != std::errc() || ptr != digits.data() + digits.size())
     fail("expected an integer, got '" + text + "'");
   if (value < min || value > max) {
-    const std::string range = max == std::numeric_limits<int>::max()
-                                  ? ">= " + std::to_string(min)
-                                  : "between " + std::to_string(min) + " and " + std::to_string(max);
+    const std::string range =
+        max == std::numeric_limits<int>::max()
+            ? ">= " + std::to_string(min)
+            : "between " + std::to_string(min) + " and " + std::to_string(max);
     fail("must be " + range + " (got " + text + ")");
   }
   return static_cast<int>(value);
 }
 
 bool InputNode::boolean() const {
-  if (node_.IsDefined() && (node_.IsMap() || node_.IsSequence())) fail("expected true or false, got " + kind());
+  if (node_.IsDefined() && (node_.IsMap() || node_.IsSequence()))
+    fail("expected true or false, got " + kind());
   const std::string text = lower(string());
   if (text == "true" || text == "yes" || text == "on") return true;
   if (text == "false" || text == "no" || text == "off") return false;
   fail("expected true or false, got '" + string() + "'");
 }
 
-void InputNode::read_quantity(std::string_view key, const Dimension& expected, Bound bound, double& out) const {
+void InputNode::read_quantity(std::string_view key, const Dimension& expected, Bound bound,
+                              double& out) const {
   if (const auto child = find(key)) out = child->quantity(expected, bound);
 }
 void InputNode::read_number(std::string_view key, Bound bound, double& out) const {
@@ -261,11 +284,43 @@ void InputNode::read_string(std::string_view key, std::string& out) const {
   if (const auto child = find(key)) out = child->string();
 }
 
-void InputNode::fail_unknown_choice(const std::string& text, const std::vector<std::string_view>& names) const {
+void InputNode::fail_unknown_choice(const std::string& text,
+                                    const std::vector<std::string_view>& names) const {
   const std::size_t dot = path_.find_last_of('.');
   std::string noun = dot == std::string::npos ? path_ : path_.substr(dot + 1);
   if (noun.empty()) noun = "value";
   fail("unknown " + noun + " '" + text + "'; allowed: " + join(names));
+}
+
+std::string read_input_file(const std::string& path, std::string_view expected) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path, 0, 0, "", "file not found");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, 0, "", "is a directory, expected " + std::string(expected));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, 0, "", "cannot open the file");
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw InputError(path, 0, 0, "", "cannot read the file");
+  return text;
+}
+
+YAML::Node parse_single_document(const std::string& text, const std::string& path,
+                                 std::string_view what) {
+  const auto line = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.line + 1; };
+  const auto column = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.column + 1; };
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, line(e.mark), column(e.mark), "", "YAML syntax error: " + e.msg);
+  }
+  if (documents.size() > 1) {
+    const YAML::Mark second =
+        documents[1].IsDefined() ? documents[1].Mark() : YAML::Mark::null_mark();
+    throw InputError(path, line(second), column(second), "",
+                     "more than one YAML document ('---'); " + std::string(what) + " holds one");
+  }
+  return documents.empty() ? YAML::Node() : documents.front();
 }
 
 }  // namespace isopound

@@ -1,5 +1,6 @@
 // Typed reads from a YAML tree (quantity, number, integer, bool, string, enum) whose errors name
-// "file:line:col: key.path: what". yaml-cpp marks are 0-based; here lines/columns are 1-based, 0 = unknown.
+// "file:line:col: key.path: what". yaml-cpp marks are 0-based; here lines/columns are 1-based, 0 =
+// unknown.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -34,6 +35,14 @@ class InputError : public std::runtime_error {
   std::string key_;
   std::string detail_;
 };
+
+// Reads a whole input file; a missing, unreadable or directory path is an InputError (line 0).
+// `expected` names what the file should be, for the message ("a YAML model file").
+std::string read_input_file(const std::string& path, std::string_view expected);
+// Parses text holding one YAML document (none gives a null node). A syntax error, or a second
+// document ("---"), is an InputError at its line; `what` names the file's kind for the message.
+YAML::Node parse_single_document(const std::string& text, const std::string& path,
+                                 std::string_view what);
 
 // Bounds checked by InputNode::quantity/number, with the message they give.
 enum class Bound {
@@ -91,7 +100,8 @@ class InputNode {
   }
 
   // --- optional keys of this map: each sets `out` only when `key` is present ---
-  void read_quantity(std::string_view key, const Dimension& expected, Bound bound, double& out) const;
+  void read_quantity(std::string_view key, const Dimension& expected, Bound bound,
+                     double& out) const;
   void read_number(std::string_view key, Bound bound, double& out) const;
   void read_integer(std::string_view key, int min, int max, int& out) const;
   void read_boolean(std::string_view key, bool& out) const;
@@ -104,17 +114,20 @@ class InputNode {
   [[noreturn]] void fail_at_key(std::string_view key, const std::string& what) const;
 
  private:
-  InputNode(YAML::Node node, std::string file, std::string path, YAML::Mark key_mark, YAML::Mark parent_mark);
+  InputNode(YAML::Node node, std::string file, std::string path, YAML::Mark key_mark,
+            YAML::Mark parent_mark);
   YAML::Mark mark() const;  // the best known 0-based position, possibly null
   std::string child_path(std::string_view key) const;
-  [[noreturn]] void fail_unknown_choice(const std::string& text, const std::vector<std::string_view>& names) const;
-  [[noreturn]] static void fail_at(const std::string& file, const YAML::Mark& mark, const std::string& key,
-                                   const std::string& what);
+  [[noreturn]] void fail_unknown_choice(const std::string& text,
+                                        const std::vector<std::string_view>& names) const;
+  [[noreturn]] static void fail_at(const std::string& file, const YAML::Mark& mark,
+                                   const std::string& key, const std::string& what);
 
   YAML::Node node_;
   std::string file_;
   std::string path_;
-  YAML::Mark key_mark_;     // where the key naming this node is written; null for the root and list items
+  YAML::Mark
+      key_mark_;  // where the key naming this node is written; null for the root and list items
   YAML::Mark parent_mark_;  // the parent's best known position, the fallback
 };
 

@@ -17,7 +17,8 @@ BuildingConfig thesis_building(int storeys, IsolatorConfig::Model isolator) {
   BuildingConfig b;
   b.name = std::to_string(storeys) + "-storey";
   b.base_mass = 340e3;
-  for (int i = 0; i < storeys; ++i) b.floors.push_back({i + 1 < storeys ? 340e3 : 250e3, 600e6, 3.2});
+  for (int i = 0; i < storeys; ++i)
+    b.floors.push_back({i + 1 < storeys ? 340e3 : 250e3, 600e6, 3.2});
   b.isolator.model = isolator;  // Tb 2 s, QW 5 %, uy 1 cm (the defaults)
   return b;
 }
@@ -117,7 +118,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Modes, ThesisFixedBasePeriods) {
   // THEORY section 1: fixed-base fundamental periods 0.31 s (3-storey) and 0.50 s (5-storey).
   for (const auto& [storeys, period] : {std::pair{3, 0.31}, std::pair{5, 0.50}}) {
-    const ShearStick s = fixed_base_superstructure(thesis_building(storeys, IsolatorConfig::Model::kBoucWen));
+    const ShearStick s =
+        fixed_base_superstructure(thesis_building(storeys, IsolatorConfig::Model::kBoucWen));
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(s.stiffness, s.mass);
     const double t1 = 2.0 * M_PI / std::sqrt(eig.eigenvalues()[0]);
     EXPECT_NEAR(t1, period, 0.005) << storeys << " storeys";

@@ -17,26 +17,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Command {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
+using Command = test::CommandResult;
 
 Command run(const std::string& args) {
-  const std::string cmd = std::string(ISOPOUND_BINARY) + " " + args + " 2>&1";
-  Command result{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  return test::run_isopound(args);
 }
 
 fs::path scratch_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("isopound-cli-" + name + "-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("isopound-cli-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -83,7 +72,8 @@ TEST(CliBadInput, TruncatedRecordNamesItsFileAndLine) {
                                        "  floors: {count: 3, mass: 340 t, roof_mass: 250 t, "
                                        "stiffness: 600 MN/m, height: 3.2 m}\n"
                                        "ground_motion:\n  record: short.AT2\n";
-  const Command c = run("run -q '" + (dir / "model.yaml").string() + "' -o '" + (dir / "out").string() + "'");
+  const Command c =
+      run("run -q '" + (dir / "model.yaml").string() + "' -o '" + (dir / "out").string() + "'");
   EXPECT_EQ(c.exit_code, 2) << c.output;
   EXPECT_NE(c.output.find("short.AT2:5:"), std::string::npos) << c.output;
   fs::remove_all(dir);
@@ -97,9 +87,13 @@ TEST(CliDivergence, StopsWithTimeAndDof) {
                                        "  floors: {count: 3, mass: 340 t, roof_mass: 250 t, "
                                        "stiffness: 600 MN/m, height: 3.2 m}\n"
                                        "ground_motion:\n  pulse: {amplitude: 100000 m/s}\n";
-  const Command c = run("run '" + (dir / "model.yaml").string() + "' -o '" + (dir / "out").string() + "'");
+  const Command c =
+      run("run '" + (dir / "model.yaml").string() + "' -o '" + (dir / "out").string() + "'");
   EXPECT_EQ(c.exit_code, 3) << c.output;
-  EXPECT_TRUE(std::regex_search(c.output, std::regex(R"(diverged at t = [0-9.e+-]+ s, DOF '3-storey|diverged at t = [0-9.e+-]+ s, DOF 'building)")))
+  EXPECT_TRUE(std::regex_search(
+      c.output,
+      std::regex(
+          R"(diverged at t = [0-9.e+-]+ s, DOF '3-storey|diverged at t = [0-9.e+-]+ s, DOF 'building)")))
       << c.output;
   EXPECT_NE(c.output.find("Hint"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "out" / "summary.json"));
@@ -126,7 +120,8 @@ TEST(CliDemo, WritesSummaryAndHistoriesWithConsistentPeaks) {
   std::ifstream csv(dir / "histories.csv");
   std::string header, line;
   std::getline(csv, header);
-  EXPECT_EQ(header.rfind("time [s],ground_acceleration [m/s2],3-storey/base u [m]", 0), 0u) << header;
+  EXPECT_EQ(header.rfind("time [s],ground_acceleration [m/s2],3-storey/base u [m]", 0), 0u)
+      << header;
   double max_u = 0.0;
   std::size_t rows = 0;
   while (std::getline(csv, line)) {
@@ -141,7 +136,8 @@ TEST(CliDemo, WritesSummaryAndHistoriesWithConsistentPeaks) {
 }
 
 TEST(CliModes, ThesisBuildingPeriods) {
-  const Command c = run("modes '" + (test::source_dir() / "configs" / "tutorial.yaml").string() + "'");
+  const Command c =
+      run("modes '" + (test::source_dir() / "configs" / "tutorial.yaml").string() + "'");
   ASSERT_EQ(c.exit_code, 0) << c.output;
   EXPECT_NE(c.output.find("0.3115"), std::string::npos) << c.output;  // fixed-base T1
   EXPECT_NE(c.output.find("2.0166"), std::string::npos) << c.output;  // isolated, K_post
@@ -151,7 +147,8 @@ TEST(CliRun, ThesisConfigsRunOnTheirRecord) {
   ISOPOUND_REQUIRE_RECORDS();
   for (const char* name : {"thesis-3storey-bw.yaml", "thesis-5storey-bl.yaml"}) {
     const fs::path dir = scratch_dir("thesis");
-    const Command c = run("run -q '" + (test::source_dir() / "configs" / name).string() + "' -o '" + dir.string() + "'");
+    const Command c = run("run -q '" + (test::source_dir() / "configs" / name).string() + "' -o '" +
+                          dir.string() + "'");
     ASSERT_EQ(c.exit_code, 0) << name << ": " << c.output;
     std::ifstream in(dir / "summary.json");
     const nlohmann::json s = nlohmann::json::parse(in);

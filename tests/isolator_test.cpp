@@ -284,8 +284,8 @@ TEST(BoucWenSkeleton, MatchesClosedFormsAndReference) {
     double n;
     double tol;
   };
-  for (const Case c : {Case{1.0, 2e-5}, Case{2.0, 2e-5}, Case{5.0, 2e-5}, Case{25.0, 3e-4},
-                       Case{100.0, 1e-3}}) {
+  for (const Case c :
+       {Case{1.0, 2e-5}, Case{2.0, 2e-5}, Case{5.0, 2e-5}, Case{25.0, 3e-4}, Case{100.0, 1e-3}}) {
     SCOPED_TRACE(c.n);
     std::vector<double> ref;
     if (c.n == 2.0) {
@@ -449,8 +449,8 @@ double max_excess_jump(const BoucWenMaterial& m, double z0, double dx_end, doubl
   auto prev = m.integrate(z0, sign * delta);
   for (int k = 2; k <= count; ++k) {
     const auto cur = m.integrate(z0, sign * delta * k);
-    const double excess = std::abs(cur.z - prev.z) -
-                          delta * std::max(std::abs(cur.dz_dx), std::abs(prev.dz_dx));
+    const double excess =
+        std::abs(cur.z - prev.z) - delta * std::max(std::abs(cur.dz_dx), std::abs(prev.dz_dx));
     if (excess > worst) {
       worst = excess;
       *where = sign * delta * k;
@@ -543,9 +543,10 @@ TEST(BoucWenVsBilinear, SharpLimitCornerGap) {
     const double ref_gap = 1.0 - reference_skeleton(n, 1.0, 1)[1];
     const auto gaps = leg_gaps(n);
     for (const double g : gaps) {
-      std::printf("[ n = %5.1f ] max |F_bw - F_bl| on a leg: %.4f %% of F_y, %.4f %% of Q "
-                  "(RK4 corner gap %.4f %% of Q, ln2/n = %.4f %%)\n",
-                  n, 100 * g / kThesisFy, 100 * g / q, 100 * ref_gap, 100 * std::log(2.0) / n);
+      std::printf(
+          "[ n = %5.1f ] max |F_bw - F_bl| on a leg: %.4f %% of F_y, %.4f %% of Q "
+          "(RK4 corner gap %.4f %% of Q, ln2/n = %.4f %%)\n",
+          n, 100 * g / kThesisFy, 100 * g / q, 100 * ref_gap, 100 * std::log(2.0) / n);
       if (n == 100.0) {
         EXPECT_LT(g, 0.01 * kThesisFy);
         EXPECT_GT(g / q, 0.005);
@@ -637,9 +638,10 @@ TEST(BoucWenTangent, MatchesCentralDifference) {
     EXPECT_EQ(failures, 0) << "relative tangent error > 1e-6; first {sample, kind, z_c, dx, K, "
                               "K_fd} = "
                            << first_failure;
-    std::printf("[ n = %5.1f ] tangent vs Richardson FD, max rel err: one sub-step %.1e (%d), "
-                "several %.1e (%d), crossing %.1e (%d); %d skipped\n",
-                n, max_err[0], count[0], max_err[1], count[1], max_err[2], count[2], skipped);
+    std::printf(
+        "[ n = %5.1f ] tangent vs Richardson FD, max rel err: one sub-step %.1e (%d), "
+        "several %.1e (%d), crossing %.1e (%d); %d skipped\n",
+        n, max_err[0], count[0], max_err[1], count[1], max_err[2], count[2], skipped);
     EXPECT_LE(skipped, samples / 50);
     for (const int c : count) EXPECT_GE(c, samples / 3 - samples / 50);
   }
@@ -760,10 +762,10 @@ TEST(BilinearLoop, ForcesAtKeyPointsByHand) {
   struct Point {
     double d, f, k;
   };
-  const std::vector<Point> path = {
-      {0.005, 1e5, 2e7},  {0.01, 2e5, 0.0},    {0.03, 2.4e5, 2e6}, {0.05, 2.8e5, 2e6},
-      {0.04, 8e4, 2e7},   {0.03, -1.2e5, 0.0}, {0.0, -1.8e5, 2e6}, {-0.05, -2.8e5, 2e6},
-      {-0.04, -8e4, 2e7}, {-0.03, 1.2e5, 0.0}, {0.05, 2.8e5, 2e6}};
+  const std::vector<Point> path = {{0.005, 1e5, 2e7},   {0.01, 2e5, 0.0},     {0.03, 2.4e5, 2e6},
+                                   {0.05, 2.8e5, 2e6},  {0.04, 8e4, 2e7},     {0.03, -1.2e5, 0.0},
+                                   {0.0, -1.8e5, 2e6},  {-0.05, -2.8e5, 2e6}, {-0.04, -8e4, 2e7},
+                                   {-0.03, 1.2e5, 0.0}, {0.05, 2.8e5, 2e6}};
   for (const Point& p : path) {
     SCOPED_TRACE(p.d);
     drive(m, p.d, 1e-4);
@@ -892,10 +894,11 @@ TEST(BoucWenEnergy, DissipationEqualsLoopArea) {
     EXPECT_GT(dissipated, 0.0);
     EXPECT_NEAR(dissipated, area, 1e-3 * area);
     EXPECT_NEAR(half, 0.5 * area, 1e-3 * area);  // symmetric loop: half per half cycle
-    std::printf("[ n = %3.1f ] cycle +-%.0f u_y: dissipated %.3f J, loop area %.3f J (rel %.1e); "
-                "first loading %.3f J vs %.3f J (rel %.1e)\n",
-                n, x_m, dissipated, area, std::abs(dissipated / area - 1), first, first_expected,
-                std::abs(first / first_expected - 1));
+    std::printf(
+        "[ n = %3.1f ] cycle +-%.0f u_y: dissipated %.3f J, loop area %.3f J (rel %.1e); "
+        "first loading %.3f J vs %.3f J (rel %.1e)\n",
+        n, x_m, dissipated, area, std::abs(dissipated / area - 1), first, first_expected,
+        std::abs(first / first_expected - 1));
   }
 }
 

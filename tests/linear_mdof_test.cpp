@@ -1,5 +1,6 @@
-// Thesis 3-storey building on linear isolators (non-classical damping) through run_analysis, checked
-// against the exact state-space solution (matrix exponential, piecewise-linear a_g): peaks to 1e-6.
+// Thesis 3-storey building on linear isolators (non-classical damping) through run_analysis,
+// checked against the exact state-space solution (matrix exponential, piecewise-linear a_g): peaks
+// to 1e-6.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -23,7 +24,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kG = 9.81;
-constexpr double kRecordDt = 0.005;  // s
+constexpr double kRecordDt = 0.005;    // s
 constexpr double kRecordLength = 6.0;  // s
 constexpr double kExtraTime = 2.0;     // s of free vibration after the record
 
@@ -51,7 +52,8 @@ struct LinearSystem {
 
 LinearSystem reference_system(const BuildingConfig& b) {
   const int nf = static_cast<int>(b.floors.size()), n = nf + 1;
-  LinearSystem s{Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
+  LinearSystem s{Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n),
+                 Eigen::MatrixXd::Zero(n, n)};
   double m_total = b.base_mass;
   s.M(0, 0) = b.base_mass;
   for (int i = 0; i < nf; ++i) {
@@ -103,12 +105,13 @@ GroundMotion synthetic_record() {
   gm.acceleration.resize(n);
   for (int i = 0; i < n; ++i) {
     const double t = i * kRecordDt;
-    const double taper_in = std::min(1.0, t / 1.0), taper_out = std::min(1.0, (kRecordLength - t) / 1.0);
+    const double taper_in = std::min(1.0, t / 1.0),
+                 taper_out = std::min(1.0, (kRecordLength - t) / 1.0);
     const double taper = std::sin(0.5 * kPi * taper_in) * std::sin(0.5 * kPi * taper_out);
-    gm.acceleration[i] = taper * kG *
-                         (0.12 * std::sin(2.0 * kPi * t / 1.4) +
-                          0.10 * std::sin(2.0 * kPi * t / 0.31 + 0.7) +
-                          0.08 * std::sin(2.0 * kPi * t / 0.18 + 1.3));
+    gm.acceleration[i] =
+        taper * kG *
+        (0.12 * std::sin(2.0 * kPi * t / 1.4) + 0.10 * std::sin(2.0 * kPi * t / 0.31 + 0.7) +
+         0.08 * std::sin(2.0 * kPi * t / 0.18 + 1.3));
   }
   gm.acceleration.back() = 0.0;
   return gm;
@@ -146,7 +149,8 @@ struct ExactStepper {
 
 // Response quantities at one instant: u (n), drifts (n - 1 stories), absolute accelerations (n).
 // Absolute acceleration = a + a_g = -M^-1 (C v + K u) from the equation of motion.
-Eigen::VectorXd quantities(const LinearSystem& s, const Eigen::MatrixXd& Minv, const Eigen::VectorXd& x) {
+Eigen::VectorXd quantities(const LinearSystem& s, const Eigen::MatrixXd& Minv,
+                           const Eigen::VectorXd& x) {
   const int n = static_cast<int>(s.M.rows());
   const Eigen::VectorXd u = x.head(n), v = x.tail(n);
   Eigen::VectorXd q(3 * n - 1);
@@ -172,8 +176,8 @@ std::vector<Eigen::VectorXd> exact_at_samples(const LinearSystem& s, const std::
 
 // Exact peaks over every analysis step (the record interval split into `per_sample` steps,
 // a_g linear within the interval as the solver samples it): the grid of AnalysisResult peaks.
-Eigen::VectorXd exact_peaks_on_steps(const LinearSystem& s, const std::vector<double>& ag, double dt,
-                                     int per_sample) {
+Eigen::VectorXd exact_peaks_on_steps(const LinearSystem& s, const std::vector<double>& ag,
+                                     double dt, int per_sample) {
   const double h = dt / per_sample;
   const ExactStepper big(s, dt), small(s, h);
   const Eigen::MatrixXd Minv = s.M.inverse();
@@ -305,8 +309,8 @@ struct Fixture {
   BuildingConfig building = thesis_building();
   LinearSystem system = reference_system(building);
   GroundMotion motion = synthetic_record();
-  std::vector<double> ag;                // the record followed by kExtraTime of zeros
-  std::vector<Eigen::VectorXd> exact;    // quantities at every sample
+  std::vector<double> ag;              // the record followed by kExtraTime of zeros
+  std::vector<Eigen::VectorXd> exact;  // quantities at every sample
   Eigen::VectorXd exact_peak;
   int n = 0, nq = 0;
 
@@ -399,9 +403,10 @@ TEST(LinearMdofExact, RichardsonPeaksMatchStateSpaceSolution) {
   const Eigen::VectorXd es = series_error(rich);
   const Eigen::VectorXd ep_fine = peak_error(peaks_of_rows(fine.rows), f.exact_peak);
   for (int i = 0; i < f.nq; ++i) {
-    std::printf("[ mdof ] %-14s exact peak %.6e  peak err: dt/%d %.2e, Richardson %.2e "
-                "(series %.2e)\n",
-                quantity_name(i, f.n).c_str(), f.exact_peak[i], kFine, ep_fine[i], ep[i], es[i]);
+    std::printf(
+        "[ mdof ] %-14s exact peak %.6e  peak err: dt/%d %.2e, Richardson %.2e "
+        "(series %.2e)\n",
+        quantity_name(i, f.n).c_str(), f.exact_peak[i], kFine, ep_fine[i], ep[i], es[i]);
     // 1e-6 relative, as required; the O(h^4) remainder measures ~1e-8.
     EXPECT_LE(ep[i], 1e-6) << quantity_name(i, f.n);
     // The whole history too (catches a time shift that the peaks alone might hide).

@@ -76,8 +76,8 @@ struct NigamJennings {
     const double sn = std::sin(wd * dt), cs = std::cos(wd * dt);
     A = e * (xi / s1 * sn + cs);
     B = e * sn / wd;
-    C = (2.0 * xi / (w * dt) +
-         e * (((1.0 - 2.0 * xi * xi) / (wd * dt) - xi / s1) * sn - (1.0 + 2.0 * xi / (w * dt)) * cs)) /
+    C = (2.0 * xi / (w * dt) + e * (((1.0 - 2.0 * xi * xi) / (wd * dt) - xi / s1) * sn -
+                                    (1.0 + 2.0 * xi / (w * dt)) * cs)) /
         k;
     D = (1.0 - 2.0 * xi / (w * dt) +
          e * ((2.0 * xi * xi - 1.0) / (wd * dt) * sn + 2.0 * xi / (w * dt) * cs)) /
@@ -125,8 +125,9 @@ TEST(LinearSdofReference, NigamJenningsIsExactForStepAndRamp) {
     double es = 0.0, er = 0.0, ps = 0.0, pr = 0.0;
     for (int i = 0; i <= n; ++i) {
       const double t = i * dt, e = std::exp(-xi * kOmega * t);
-      const double xs = p0 / kStiffness *
-                        (1.0 - e * (std::cos(wd * t) + xi / std::sqrt(1 - xi * xi) * std::sin(wd * t)));
+      const double xs =
+          p0 / kStiffness *
+          (1.0 - e * (std::cos(wd * t) + xi / std::sqrt(1 - xi * xi) * std::sin(wd * t)));
       const double xr = r / kStiffness *
                         (t - 2.0 * xi / kOmega +
                          e * (2.0 * xi / kOmega * std::cos(wd * t) -
@@ -217,8 +218,9 @@ TEST(LinearSdofFreeVibration, MatchesClosedFormAtTOver200) {
         peak = std::max(peak, std::abs(exact(static_cast<double>(i) * run.h)));
       const double err = free_error(xi, run);
       const double predicted = predicted_free_error(xi, run.h, kFreePeriods * kPeriod);
-      std::printf("[ sdof free ] xi=%.2f %s h=T/200: max err %.3e m = %.3e of peak (predicted %.3e)\n",
-                  xi, as_element ? "element" : "K      ", err, err / peak, predicted / peak);
+      std::printf(
+          "[ sdof free ] xi=%.2f %s h=T/200: max err %.3e m = %.3e of peak (predicted %.3e)\n", xi,
+          as_element ? "element" : "K      ", err, err / peak, predicted / peak);
       // 10 % over the leading-order error: the next term is O((w h)^4) ~ 1e-6 relative to it.
       EXPECT_LE(err, 1.1 * predicted);
       // And not suspiciously small either (a different, e.g. higher-order, scheme): the
@@ -280,10 +282,11 @@ TEST(LinearSdofFreeVibration, TinyStepIsNotLessAccurateThanCoarseStep) {
         err = std::max(err, std::abs(stepper.u()[0] - exact(i * h)));
       }
       const double amplitude = exact.amplitude(0.0);
-      std::printf("[ sdof tiny ] %s h=T/%d: max err %.3e of amplitude (truncation %.3e), "
-                  "predictor accepted without correction in %ld of %d steps\n",
-                  as_element ? "element" : "K      ", steps, err / amplitude,
-                  kOmega * kPeriod * std::pow(kOmega * h, 2) / 12.0, predictor_only, steps);
+      std::printf(
+          "[ sdof tiny ] %s h=T/%d: max err %.3e of amplitude (truncation %.3e), "
+          "predictor accepted without correction in %ld of %d steps\n",
+          as_element ? "element" : "K      ", steps, err / amplitude,
+          kOmega * kPeriod * std::pow(kOmega * h, 2) / 12.0, predictor_only, steps);
       return err;
     };
     const double coarse = one_period(2000), tiny = one_period(400000);
@@ -326,7 +329,8 @@ GroundMotion resampled_half(const GroundMotion& gm) {
   out.acceleration.resize(2 * n - 1);
   for (std::size_t i = 0; i < n; ++i) {
     out.acceleration[2 * i] = gm.acceleration[i];
-    if (i + 1 < n) out.acceleration[2 * i + 1] = 0.5 * (gm.acceleration[i] + gm.acceleration[i + 1]);
+    if (i + 1 < n)
+      out.acceleration[2 * i + 1] = 0.5 * (gm.acceleration[i] + gm.acceleration[i + 1]);
   }
   return out;
 }
@@ -392,9 +396,10 @@ TEST(LinearSdofForced, MatchesNigamJenningsWithSecondOrder) {
       double d23 = 0.0;
       for (std::size_t i = 0; i < u3.size(); ++i) d23 = std::max(d23, std::abs(u3[i] - u2[2 * i]));
       const double order = std::log2(e1 / e2);
-      std::printf("[ sdof forced ] xi=%.2f %s peak %.4e m, err dt %.3e (%.3e of peak), "
-                  "dt/2 %.3e, order %.4f, substep-vs-resampled %.1e\n",
-                  xi, as_element ? "element" : "K      ", peak, e1, e1 / peak, e2, order, d23);
+      std::printf(
+          "[ sdof forced ] xi=%.2f %s peak %.4e m, err dt %.3e (%.3e of peak), "
+          "dt/2 %.3e, order %.4f, substep-vs-resampled %.1e\n",
+          xi, as_element ? "element" : "K      ", peak, e1, e1 / peak, e2, order, d23);
       // Error budget (trapezoidal rule, eigenvalue error lambda (lambda h)^2/12): the response
       // at the natural frequency accumulates a phase error w t (w h)^2/12 over its memory time
       // t (t_end = 24 s undamped, ~1/(xi w) = 6.4 s at 5 %); the forced part at 1.3 s errs by

@@ -161,7 +161,8 @@ building:
 
   // Without roof_mass every floor has `mass`.
   const ModelConfig same = load_text(
-      "building: {base: {mass: 1 t}, floors: {count: 2, mass: 5 t, stiffness: 1 MN/m, height: 3 m}}");
+      "building: {base: {mass: 1 t}, floors: {count: 2, mass: 5 t, stiffness: 1 MN/m, height: 3 "
+      "m}}");
   EXPECT_DOUBLE_EQ(same.building.floors[1].mass, 5e3);
 }
 
@@ -200,15 +201,20 @@ building:
   EXPECT_EQ(m.building.damping.type, SuperstructureDamping::Type::kModal);
   EXPECT_DOUBLE_EQ(m.building.damping.ratio, 0.05);
 
-  const std::string base = "building: {base: {mass: 1 t}, floors: {count: 2, mass: 1 t, stiffness: 1 MN/m, height: 3 m}, ";
+  const std::string base =
+      "building: {base: {mass: 1 t}, floors: {count: 2, mass: 1 t, stiffness: 1 MN/m, height: 3 "
+      "m}, ";
   EXPECT_DOUBLE_EQ(load_text(base + "isolator: {QW: 5 %}}").building.isolator.strength_ratio, 0.05);
-  EXPECT_DOUBLE_EQ(load_text(base + "isolator: {QW: 0.05}}").building.isolator.strength_ratio, 0.05);
+  EXPECT_DOUBLE_EQ(load_text(base + "isolator: {QW: 0.05}}").building.isolator.strength_ratio,
+                   0.05);
   // A linear isolator needs no strength.
-  EXPECT_DOUBLE_EQ(load_text(base + "isolator: {model: linear, QW: 0}}").building.isolator.strength_ratio, 0.0);
+  EXPECT_DOUBLE_EQ(
+      load_text(base + "isolator: {model: linear, QW: 0}}").building.isolator.strength_ratio, 0.0);
 }
 
 TEST(ModelInputValid, RecordPathRelativeToTheModelFile) {
-  const fs::path dir = fs::temp_directory_path() / ("isopound_model_input_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("isopound_model_input_" + std::to_string(::getpid()));
   fs::create_directories(dir / "cases");
   const fs::path file = dir / "cases" / "model.yaml";
   {
@@ -226,7 +232,8 @@ TEST(ModelInputValid, RecordPathRelativeToTheModelFile) {
 
   // An absolute record path is kept as written.
   const ModelConfig absolute = load_text(
-      "building: {base: {mass: 1 t}, floors: {count: 2, mass: 1 t, stiffness: 1 MN/m, height: 3 m}}\n"
+      "building: {base: {mass: 1 t}, floors: {count: 2, mass: 1 t, stiffness: 1 MN/m, height: 3 "
+      "m}}\n"
       "ground_motion: {record: /data/records/x.AT2}\n",
       "/models");
   EXPECT_EQ(absolute.ground_motion.record_path, "/data/records/x.AT2");
@@ -241,13 +248,15 @@ TEST(ModelInputErrors, MissingFileIsLineZero) {
 }
 
 TEST(ModelInputErrors, FieldsAndMessageFormat) {
-  const InputError e = input_error_of([] { load_model_file((kBadModels / "negative_mass.yaml").string()); });
+  const InputError e =
+      input_error_of([] { load_model_file((kBadModels / "negative_mass.yaml").string()); });
   EXPECT_EQ(e.line(), 6);
   EXPECT_EQ(e.column(), 14);  // the value "-250 t" in "    - {mass: -250 t, ..."
   EXPECT_EQ(e.key(), "building.floors[1].mass");
   EXPECT_EQ(e.detail(), "must be > 0 (got '-250 t')");
   EXPECT_EQ(std::string(e.what()),
-            (kBadModels / "negative_mass.yaml").string() + ":6:14: building.floors[1].mass: must be > 0 (got '-250 t')");
+            (kBadModels / "negative_mass.yaml").string() +
+                ":6:14: building.floors[1].mass: must be > 0 (got '-250 t')");
 }
 
 // Nodes built in code have no position: the error points at the nearest parent that has one.
@@ -268,7 +277,8 @@ TEST(ModelInputErrors, NodesWithoutMarkUseTheNearestParent) {
       "  base: {mass: 340 t}\n"
       "  floors:\n"
       "    - {mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}\n");
-  loaded["building"]["floors"][0]["height"] = "-3 m";  // replaces a parsed value by one without a mark
+  loaded["building"]["floors"][0]["height"] =
+      "-3 m";  // replaces a parsed value by one without a mark
   const InputError mixed = input_error_of([&] { load_model(loaded, "mixed.yaml", "."); });
   EXPECT_EQ(mixed.line(), 4);
   EXPECT_EQ(mixed.key(), "building.floors[0].height");
@@ -301,7 +311,9 @@ struct BadModel {
   const char* what;
 };
 
-void PrintTo(const BadModel& m, std::ostream* os) { *os << m.file; }
+void PrintTo(const BadModel& m, std::ostream* os) {
+  *os << m.file;
+}
 
 class ModelInputBadModels : public ::testing::TestWithParam<BadModel> {};
 
@@ -311,8 +323,9 @@ TEST_P(ModelInputBadModels, IsAnInputErrorWithFileLineAndKey) {
   ASSERT_TRUE(fs::exists(path)) << path;
   const InputError e = input_error_of([&] { load_model_file(path); });
   const std::string message = e.what();
-  const std::string location = bad.line > 0 ? std::string(bad.file) + ":" + std::to_string(bad.line) + ":"
-                                            : std::string(bad.file) + ": ";
+  const std::string location = bad.line > 0
+                                   ? std::string(bad.file) + ":" + std::to_string(bad.line) + ":"
+                                   : std::string(bad.file) + ": ";
   EXPECT_NE(message.find(location), std::string::npos) << message;
   EXPECT_EQ(e.line(), bad.line) << message;
   EXPECT_EQ(e.key(), bad.key) << message;
@@ -326,55 +339,78 @@ TEST_P(ModelInputBadModels, IsAnInputErrorWithFileLineAndKey) {
 INSTANTIATE_TEST_SUITE_P(
     ModelInputFiles, ModelInputBadModels,
     ::testing::Values(
-        BadModel{"unknown_key.yaml", 9, "building.isolator.Tbb", "unknown key 'Tbb' (did you mean 'Tb'?); allowed: model, Tb, QW"},
+        BadModel{"unknown_key.yaml", 9, "building.isolator.Tbb",
+                 "unknown key 'Tbb' (did you mean 'Tb'?); allowed: model, Tb, QW"},
         BadModel{"negative_mass.yaml", 6, "building.floors[1].mass", "must be > 0 (got '-250 t')"},
-        BadModel{"wrong_dimension.yaml", 8, "building.isolator.uy", "unit 'kg' is a mass (kg), expected a length (m)"},
+        BadModel{"wrong_dimension.yaml", 8, "building.isolator.uy",
+                 "unit 'kg' is a mass (kg), expected a length (m)"},
         BadModel{"unknown_unit.yaml", 7, "building.floors[0].stiffness", "unknown unit 'furlong'"},
         BadModel{"garbage_mass.yaml", 3, "building.base.mass", "'abc' is not a quantity"},
-        BadModel{"stiffness_as_text.yaml", 4, "building.floors[0].stiffness", "'stiff' is not a quantity"},
+        BadModel{"stiffness_as_text.yaml", 4, "building.floors[0].stiffness",
+                 "'stiff' is not a quantity"},
         BadModel{"map_for_number.yaml", 5, "building.isolator.Tb", "got a map"},
         BadModel{"missing_floors.yaml", 3, "building.floors", "missing required key 'floors'"},
         BadModel{"missing_base.yaml", 3, "building.base", "missing required key 'base'"},
         BadModel{"missing_building.yaml", 2, "building", "missing required key 'building'"},
-        BadModel{"fixed_base_with_isolator.yaml", 4, "building.isolator", "not allowed for a fixed-base building"},
-        BadModel{"rayleigh_one_storey.yaml", 8, "building.damping.superstructure.type", "use type: modal"},
-        BadModel{"rayleigh_default_one_storey.yaml", 1, "building.damping.superstructure", "use type: modal"},
-        BadModel{"rayleigh_same_modes.yaml", 5, "building.damping.superstructure.modes", "must differ"},
-        BadModel{"rayleigh_mode_out_of_range.yaml", 8, "building.damping.superstructure.modes[1]", "mode 4 does not exist"},
-        BadModel{"damping_ratio_too_large.yaml", 6, "building.damping.isolation", "must be in [0, 1)"},
-        BadModel{"unknown_model.yaml", 5, "building.isolator.model", "unknown model 'boucwen'; allowed: linear, bilinear, bouc_wen"},
-        BadModel{"qw_zero_bilinear.yaml", 7, "building.isolator.QW", "must be > 0 for the bilinear and bouc_wen models"},
+        BadModel{"fixed_base_with_isolator.yaml", 4, "building.isolator",
+                 "not allowed for a fixed-base building"},
+        BadModel{"rayleigh_one_storey.yaml", 8, "building.damping.superstructure.type",
+                 "use type: modal"},
+        BadModel{"rayleigh_default_one_storey.yaml", 1, "building.damping.superstructure",
+                 "use type: modal"},
+        BadModel{"rayleigh_same_modes.yaml", 5, "building.damping.superstructure.modes",
+                 "must differ"},
+        BadModel{"rayleigh_mode_out_of_range.yaml", 8, "building.damping.superstructure.modes[1]",
+                 "mode 4 does not exist"},
+        BadModel{"damping_ratio_too_large.yaml", 6, "building.damping.isolation",
+                 "must be in [0, 1)"},
+        BadModel{"unknown_model.yaml", 5, "building.isolator.model",
+                 "unknown model 'boucwen'; allowed: linear, bilinear, bouc_wen"},
+        BadModel{"qw_zero_bilinear.yaml", 7, "building.isolator.QW",
+                 "must be > 0 for the bilinear and bouc_wen models"},
         BadModel{"beta_gamma.yaml", 6, "building.isolator.gamma", "beta + gamma must be > 0"},
         BadModel{"n_zero.yaml", 4, "building.isolator.n", "must be > 0"},
         BadModel{"empty_floors.yaml", 3, "building.floors", "no floors"},
-        BadModel{"count_zero.yaml", 4, "building.floors.count", "must be between 1 and 1000 (got 0)"},
+        BadModel{"count_zero.yaml", 4, "building.floors.count",
+                 "must be between 1 and 1000 (got 0)"},
         BadModel{"floors_scalar.yaml", 3, "building.floors", "expected a list of floors"},
         BadModel{"zero_height.yaml", 6, "building.floors[2].height", "must be > 0"},
-        BadModel{"duplicate_key.yaml", 7, "building.floors[0].mass", "duplicate key 'mass' (first at line 4)"},
+        BadModel{"duplicate_key.yaml", 7, "building.floors[0].mass",
+                 "duplicate key 'mass' (first at line 4)"},
         BadModel{"bad_bool.yaml", 2, "building.isolated", "expected true or false, got 'maybe'"},
-        BadModel{"unknown_stepping.yaml", 5, "analysis.stepping", "unknown stepping 'implicit'; allowed: adaptive, fixed"},
+        BadModel{"unknown_stepping.yaml", 5, "analysis.stepping",
+                 "unknown stepping 'implicit'; allowed: adaptive, fixed"},
         BadModel{"negative_dt.yaml", 6, "analysis.dt", "must be >= 0 (got '-0.01 s')"},
         BadModel{"tolerance_zero.yaml", 5, "analysis.tolerance", "must be > 0"},
         BadModel{"max_iterations_zero.yaml", 6, "analysis.max_iterations", "must be >= 1 (got 0)"},
         BadModel{"record_and_pulse.yaml", 6, "ground_motion.pulse", "either 'record' or 'pulse'"},
-        BadModel{"unknown_acceleration_unit.yaml", 8, "ground_motion.unit", "unknown unit 'ft/s2'; allowed: g, m/s2"},
-        BadModel{"unknown_format.yaml", 6, "ground_motion.format", "unknown format 'csv'; allowed: auto, peer, columns"},
+        BadModel{"unknown_acceleration_unit.yaml", 8, "ground_motion.unit",
+                 "unknown unit 'ft/s2'; allowed: g, m/s2"},
+        BadModel{"unknown_format.yaml", 6, "ground_motion.format",
+                 "unknown format 'csv'; allowed: auto, peer, columns"},
         BadModel{"columns_without_dt.yaml", 4, "ground_motion.dt", "needs 'dt'"},
         BadModel{"pulse_gamma.yaml", 7, "ground_motion.pulse.gamma", "must be > 1"},
-        BadModel{"record_option_without_record.yaml", 5, "ground_motion.scale", "no 'record' is given"},
+        BadModel{"record_option_without_record.yaml", 5, "ground_motion.scale",
+                 "no 'record' is given"},
         BadModel{"unknown_top_level.yaml", 4, "anaysis", "(did you mean 'analysis'?)"},
         BadModel{"syntax_error.yaml", 4, "", "YAML syntax error"},
         BadModel{"empty.yaml", 0, "", "the document is empty"},
         BadModel{"wall_negative_gap.yaml", 5, "building.walls.gap", "must be >= 0 (got '-5 cm')"},
-        BadModel{"wall_restitution_above_one.yaml", 8, "building.walls.e", "coefficient of restitution must be in (0, 1]"},
+        BadModel{"wall_restitution_above_one.yaml", 8, "building.walls.e",
+                 "coefficient of restitution must be in (0, 1]"},
         BadModel{"wall_restitution_zero.yaml", 8, "building.walls[0].e", "must be > 0 (got '0')"},
         BadModel{"wall_k_zero.yaml", 8, "building.walls.k", "must be > 0 (got '0 kN/mm')"},
         BadModel{"wall_k_negative.yaml", 8, "building.walls.k", "must be > 0 (got '-2500 kN/mm')"},
-        BadModel{"wall_unknown_law.yaml", 7, "building.walls.law", "unknown law 'kelvin_voight'; allowed: linear, kelvin_voigt"},
-        BadModel{"wall_unknown_material.yaml", 8, "building.walls.material", "unknown material 'granite'; allowed: none, concrete"},
-        BadModel{"wall_gap_and_gap_left.yaml", 7, "building.walls.gap_left", "give either gap (both sides) or gap_left/gap_right"},
-        BadModel{"neighbour_without_gap.yaml", 6, "neighbours[0].gap", "missing required key 'gap'"},
-        BadModel{"wall_level_beyond_building.yaml", 5, "building.walls.level", "level 4 does not exist (levels 0..3)"}),
+        BadModel{"wall_unknown_law.yaml", 7, "building.walls.law",
+                 "unknown law 'kelvin_voight'; allowed: linear, kelvin_voigt"},
+        BadModel{"wall_unknown_material.yaml", 8, "building.walls.material",
+                 "unknown material 'granite'; allowed: none, concrete"},
+        BadModel{"wall_gap_and_gap_left.yaml", 7, "building.walls.gap_left",
+                 "give either gap (both sides) or gap_left/gap_right"},
+        BadModel{"neighbour_without_gap.yaml", 6, "neighbours[0].gap",
+                 "missing required key 'gap'"},
+        BadModel{"wall_level_beyond_building.yaml", 5, "building.walls.level",
+                 "level 4 does not exist (levels 0..3)"}),
     [](const ::testing::TestParamInfo<BadModel>& info) {
       return fs::path(info.param.file).stem().string();
     });

@@ -89,7 +89,9 @@ ModelConfig fixed_step(ModelConfig c, double dt) {
   return c;
 }
 
-GroundMotion record() { return read_record((test::records_dir() / kRecord).string()); }
+GroundMotion record() {
+  return read_record((test::records_dir() / kRecord).string());
+}
 
 GroundMotion negated(GroundMotion g) {
   for (double& a : g.acceleration) a = -a;
@@ -136,7 +138,8 @@ const Contact1D* as_contact(const Model& model, std::size_t e) {
 std::vector<std::size_t> contacts(const Model& model, std::string_view tag) {
   std::vector<std::size_t> out;
   for (std::size_t e = 0; e < model.elements.size(); ++e)
-    if (as_contact(model, e) != nullptr && model.elements[e]->label().find(tag) != std::string::npos)
+    if (as_contact(model, e) != nullptr &&
+        model.elements[e]->label().find(tag) != std::string::npos)
       out.push_back(e);
   return out;
 }
@@ -166,7 +169,8 @@ std::vector<NamedPeak> peaks_of(const Outcome& r, int s = 0) {
   std::vector<NamedPeak> p;
   if (info.has_base) p.push_back({"base displacement", a.displacement[info.level_dofs[0]].value});
   for (std::size_t k = 0; k < a.stories.size(); ++k)
-    if (a.stories[k].label.rfind(info.name + "/", 0) == 0) p.push_back({a.stories[k].label + " drift", a.drift[k].value});
+    if (a.stories[k].label.rfind(info.name + "/", 0) == 0)
+      p.push_back({a.stories[k].label + " drift", a.drift[k].value});
   for (int dof : info.level_dofs)
     p.push_back({r.model.dofs[dof].label + " a_abs", a.absolute_acceleration[dof].value});
   if (s == 0)
@@ -207,7 +211,9 @@ std::vector<std::string> law_names() {
   return names;
 }
 
-std::string law_test_name(const ::testing::TestParamInfo<std::string>& info) { return info.param; }
+std::string law_test_name(const ::testing::TestParamInfo<std::string>& info) {
+  return info.param;
+}
 
 // ---------------------------------------------------------------------------------------------
 // 1. Convergence of the default stepping, per law (the acceptance).
@@ -221,7 +227,8 @@ std::string law_test_name(const ::testing::TestParamInfo<std::string>& info) { r
 
 class PoundingBuildingConvergence : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(PoundingBuildingConvergence, DefaultPeaksWithinOnePercentOfFixedStepWithTwentyTimesFewerSteps) {
+TEST_P(PoundingBuildingConvergence,
+       DefaultPeaksWithinOnePercentOfFixedStepWithTwentyTimesFewerSteps) {
   ISOPOUND_REQUIRE_RECORDS();
   const std::string law = GetParam();
   const GroundMotion motion = record();
@@ -244,17 +251,18 @@ TEST_P(PoundingBuildingConvergence, DefaultPeaksWithinOnePercentOfFixedStepWithT
   EXPECT_GE(ratio, 20.0) << law << ": " << steps << " steps (" << def.result.stats.rejected_steps
                          << " rejected)";
 
-  std::printf("[convergence] %-22s | worst %.3e at %-34s | steps %7ld (rej %5ld) | ratio %6.1f | "
-              "impacts %d | t_def %.2f s t_ref %.2f s\n",
-              law.c_str(), c.worst, c.where.c_str(), steps, def.result.stats.rejected_steps, ratio,
-              total_impacts(def, "/wall "), def.seconds, ref.seconds);
+  std::printf(
+      "[convergence] %-22s | worst %.3e at %-34s | steps %7ld (rej %5ld) | ratio %6.1f | "
+      "impacts %d | t_def %.2f s t_ref %.2f s\n",
+      law.c_str(), c.worst, c.where.c_str(), steps, def.result.stats.rejected_steps, ratio,
+      total_impacts(def, "/wall "), def.seconds, ref.seconds);
   RecordProperty("worst_peak_error", std::to_string(c.worst));
   RecordProperty("worst_peak", c.where);
   RecordProperty("step_ratio", std::to_string(ratio));
 }
 
-INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingConvergence, ::testing::ValuesIn(law_names()),
-                         law_test_name);
+INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingConvergence,
+                         ::testing::ValuesIn(law_names()), law_test_name);
 
 TEST(PoundingBuildingReference, FixedStepOfTenMicrosecondsIsConvergedForKelvinVoigt) {
   ISOPOUND_REQUIRE_RECORDS();
@@ -267,7 +275,8 @@ TEST(PoundingBuildingReference, FixedStepOfTenMicrosecondsIsConvergedForKelvinVo
   // within ~(4/3) of this difference of the limit; 2e-3 leaves the 1 % test a 5x margin.
   const Comparison c = compare(peaks_of(ref), peaks_of(fine));
   EXPECT_LT(c.worst, 2e-3) << "worst at " << c.where;
-  std::printf("[reference] kelvin_voigt fixed 1e-5 vs 5e-6 s: worst %.3e at %s\n", c.worst, c.where.c_str());
+  std::printf("[reference] kelvin_voigt fixed 1e-5 vs 5e-6 s: worst %.3e at %s\n", c.worst,
+              c.where.c_str());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -291,8 +300,8 @@ TEST_P(PoundingBuildingGapShift, OneNanometreChangesNoPeakByMoreThanOneThousandt
   std::printf("[gap shift] %-22s | worst %.3e at %s\n", law.c_str(), c.worst, c.where.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingGapShift, ::testing::ValuesIn(law_names()),
-                         law_test_name);
+INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingGapShift,
+                         ::testing::ValuesIn(law_names()), law_test_name);
 
 // ---------------------------------------------------------------------------------------------
 // 3. The walls bring the expected physics.
@@ -325,8 +334,8 @@ TEST_P(PoundingBuildingWallCap, BaseDisplacementStopsAtGapPlusPenetration) {
   EXPECT_LT(walled.result.displacement[base].value, free.result.displacement[base].value);
 }
 
-INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingWallCap, ::testing::ValuesIn(law_names()),
-                         law_test_name);
+INSTANTIATE_TEST_SUITE_P(PoundingBuilding, PoundingBuildingWallCap,
+                         ::testing::ValuesIn(law_names()), law_test_name);
 
 // A wall out of reach (2 m, beyond any displacement of this building) must leave the analysis
 // untouched: same steps, bit-identical peaks up to 1e-12 relative, no impact.
@@ -347,7 +356,9 @@ TEST(PoundingBuildingWalls, WallOutOfReachChangesNothing) {
     for (std::size_t i = 0; i < a.displacement.size(); ++i) {
       EXPECT_LE(relative_difference(a.displacement[i].value, b.displacement[i].value), 1e-12) << i;
       EXPECT_LE(relative_difference(a.velocity[i].value, b.velocity[i].value), 1e-12) << i;
-      EXPECT_LE(relative_difference(a.absolute_acceleration[i].value, b.absolute_acceleration[i].value), 1e-12)
+      EXPECT_LE(
+          relative_difference(a.absolute_acceleration[i].value, b.absolute_acceleration[i].value),
+          1e-12)
           << i;
     }
     ASSERT_EQ(a.drift.size(), b.drift.size());
@@ -355,7 +366,8 @@ TEST(PoundingBuildingWalls, WallOutOfReachChangesNothing) {
       EXPECT_LE(relative_difference(a.drift[i].value, b.drift[i].value), 1e-12) << i;
     }
     for (std::size_t k = 0; k < b.element_outputs[0].size(); ++k) {
-      EXPECT_LE(relative_difference(a.element_outputs[0][k].value, b.element_outputs[0][k].value), 1e-12)
+      EXPECT_LE(relative_difference(a.element_outputs[0][k].value, b.element_outputs[0][k].value),
+                1e-12)
           << "isolator output " << k;
     }
   }
@@ -381,7 +393,7 @@ TEST(PoundingBuildingWalls, FlexibleWallMovesWhenHitAndAVeryStiffWallActsRigid) 
   };
   const Outcome hit = analyse(flexible(kGap, 1e9), motion);
   const Outcome missed = analyse(flexible(2.0, 1e9), motion);  // the same walls, out of reach
-  ASSERT_EQ(hit.model.structures.size(), 3u);  // building + one oscillator per wall
+  ASSERT_EQ(hit.model.structures.size(), 3u);                  // building + one oscillator per wall
   ASSERT_GT(total_impacts(hit, "/wall "), 0);
   EXPECT_EQ(total_impacts(missed, "/wall "), 0);
   for (const char* side : {"left", "right"}) {
@@ -390,8 +402,8 @@ TEST(PoundingBuildingWalls, FlexibleWallMovesWhenHitAndAVeryStiffWallActsRigid) 
     ASSERT_GE(dof, 0);
     const double moved = hit.result.displacement[dof].value;
     const double shaken = missed.result.displacement[wall_dof(missed.model, side)].value;
-    std::printf("[flexible wall] %s: peak displacement hit %.4e m, ground motion only %.4e m\n", side, moved,
-                shaken);
+    std::printf("[flexible wall] %s: peak displacement hit %.4e m, ground motion only %.4e m\n",
+                side, moved, shaken);
     EXPECT_GT(moved, 0.0);
     // The ground alone shakes a 0.14 s oscillator by a few mm at most; an impact of several MN on
     // a 1e9 N/m wall pushes it by mm to cm: being hit must at least double its peak.
@@ -401,7 +413,8 @@ TEST(PoundingBuildingWalls, FlexibleWallMovesWhenHitAndAVeryStiffWallActsRigid) 
     // spectrum of a step). The wall is hit by the force the contact reports, not more.
     const std::size_t e = contacts(hit.model, std::string("/wall ") + side).at(0);
     const double force = contact_output(hit, e, kForce);
-    std::printf("[flexible wall] %s: peak impact force %.4e N, 2 F / k = %.4e m\n", side, force, 2.0 * force / 1e9);
+    std::printf("[flexible wall] %s: peak impact force %.4e N, 2 F / k = %.4e m\n", side, force,
+                2.0 * force / 1e9);
     EXPECT_LT(moved, 2.0 * force / 1e9 + shaken);
   }
   // Series springs: a 1e13 N/m wall adds 2.5e9/1e13 = 2.5e-4 of the contact compliance; its own
@@ -410,7 +423,8 @@ TEST(PoundingBuildingWalls, FlexibleWallMovesWhenHitAndAVeryStiffWallActsRigid) 
   const Outcome stiff = analyse(flexible(kGap, 1e13), motion);
   const Outcome rigid = analyse(walled_building("kelvin_voigt", kGap), motion);
   const int base = rigid.model.structures[0].level_dofs[0];
-  const double d = relative_difference(stiff.result.displacement[base].value, rigid.result.displacement[base].value);
+  const double d = relative_difference(stiff.result.displacement[base].value,
+                                       rigid.result.displacement[base].value);
   std::printf("[flexible wall] base displacement 1e13 N/m wall vs rigid: %.3e relative\n", d);
   EXPECT_LT(d, 0.01);
   EXPECT_GT(total_impacts(stiff, "/wall "), 0);
@@ -428,7 +442,9 @@ NeighbourConfig neighbour(const std::string& name, bool right, double gap) {
   return n;
 }
 
-GroundMotion pulse() { return make_pulse(PulseParameters{}); }
+GroundMotion pulse() {
+  return make_pulse(PulseParameters{});
+}
 
 TEST(PoundingBuildingNeighbour, FixedBaseNeighbourPoundsAtTheThreeFloorsOnly) {
   const GroundMotion motion = pulse();
@@ -440,11 +456,13 @@ TEST(PoundingBuildingNeighbour, FixedBaseNeighbourPoundsAtTheThreeFloorsOnly) {
   const std::vector<std::size_t> pairs = contacts(both.model, "~");
   ASSERT_EQ(pairs.size(), 3u);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    EXPECT_EQ(both.model.elements[pairs[k]]->label(), "3-storey~neighbour/floor " + std::to_string(k + 1));
+    EXPECT_EQ(both.model.elements[pairs[k]]->label(),
+              "3-storey~neighbour/floor " + std::to_string(k + 1));
   }
   EXPECT_EQ(contacts(both.model, "/wall ").size(), 0u);
   int contact_count = 0;
-  for (std::size_t e = 0; e < both.model.elements.size(); ++e) contact_count += as_contact(both.model, e) != nullptr;
+  for (std::size_t e = 0; e < both.model.elements.size(); ++e)
+    contact_count += as_contact(both.model, e) != nullptr;
   EXPECT_EQ(contact_count, 3);
 
   ASSERT_EQ(both.model.structures.size(), 2u);
@@ -465,7 +483,8 @@ TEST(PoundingBuildingNeighbour, FixedBaseNeighbourPoundsAtTheThreeFloorsOnly) {
     const double without = alone.result.absolute_acceleration[alone_dofs[k]].value;
     EXPECT_GT(both.result.displacement[with_dofs[k]].value, 0.0);
     largest_change = std::max(largest_change, relative_difference(with, without));
-    std::printf("[neighbour] floor %zu a_abs with pounding %.3f m/s2, alone %.3f m/s2\n", k + 1, with, without);
+    std::printf("[neighbour] floor %zu a_abs with pounding %.3f m/s2, alone %.3f m/s2\n", k + 1,
+                with, without);
   }
   // Impacts of a heavy isolated building at up to ~1 m/s amplify the neighbour's floor
   // accelerations several times; 50 % is a loose floor for "excited by the impacts".
@@ -482,12 +501,14 @@ std::vector<NamedPeak> all_peaks(const Outcome& r) {
     p.push_back({dof + " v", a.velocity[i].value});
     p.push_back({dof + " a_abs", a.absolute_acceleration[i].value});
   }
-  for (std::size_t k = 0; k < a.stories.size(); ++k) p.push_back({a.stories[k].label + " drift", a.drift[k].value});
+  for (std::size_t k = 0; k < a.stories.size(); ++k)
+    p.push_back({a.stories[k].label + " drift", a.drift[k].value});
   for (std::size_t e = 0; e < r.model.elements.size(); ++e)
     for (int k = 0; k < r.model.elements[e]->output_count(); ++k)
       p.push_back({r.model.elements[e]->label() + " " + r.model.elements[e]->output_name(k),
                    a.element_outputs[e][k].value});
-  std::sort(p.begin(), p.end(), [](const NamedPeak& x, const NamedPeak& y) { return x.name < y.name; });
+  std::sort(p.begin(), p.end(),
+            [](const NamedPeak& x, const NamedPeak& y) { return x.name < y.name; });
   return p;
 }
 
@@ -521,9 +542,11 @@ TEST(PoundingBuildingNeighbour, ListOrderAndMirrorSymmetry) {
   EXPECT_LT(mirror.worst, 1e-9) << "mirror: worst at " << mirror.where;
   const Comparison unflipped = compare(all_peaks(analyse(mirrored, motion)), reference);
   EXPECT_GT(unflipped.worst, 1e-2) << unflipped.where;
-  std::printf("[neighbour symmetry] order %.3e (%s), mirror %.3e (%s), sides exchanged without flip %.3e (%s)\n",
-              order.worst, order.where.c_str(), mirror.worst, mirror.where.c_str(), unflipped.worst,
-              unflipped.where.c_str());
+  std::printf(
+      "[neighbour symmetry] order %.3e (%s), mirror %.3e (%s), sides exchanged without flip %.3e "
+      "(%s)\n",
+      order.worst, order.where.c_str(), mirror.worst, mirror.where.c_str(), unflipped.worst,
+      unflipped.where.c_str());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -540,7 +563,8 @@ std::vector<double> wall_force_history(const Outcome& r) {
     EXPECT_NE(it, h.columns.end()) << column;
     if (it == h.columns.end()) continue;
     const std::size_t c = static_cast<std::size_t>(it - h.columns.begin());
-    for (std::size_t row = 0; row < h.rows(); ++row) forces.push_back(h.values[row * h.columns.size() + c]);
+    for (std::size_t row = 0; row < h.rows(); ++row)
+      forces.push_back(h.values[row * h.columns.size() + c]);
   }
   return forces;
 }
@@ -564,8 +588,8 @@ TEST(PoundingBuildingModifiedKelvinVoigt, NoTensionAndResidualIndentation) {
   const double min_mkv = *std::min_element(f_mkv.begin(), f_mkv.end());
   const double max_mkv = *std::max_element(f_mkv.begin(), f_mkv.end());
   const double min_kv = *std::min_element(f_kv.begin(), f_kv.end());
-  std::printf("[modified KV] %zu force samples: min %.4e N, max %.4e N; plain KV min %.4e N\n", f_mkv.size(),
-              min_mkv, max_mkv, min_kv);
+  std::printf("[modified KV] %zu force samples: min %.4e N, max %.4e N; plain KV min %.4e N\n",
+              f_mkv.size(), min_mkv, max_mkv, min_kv);
   EXPECT_GE(min_mkv, 0.0);
   EXPECT_GT(max_mkv, 0.0);
   EXPECT_LT(min_kv, 0.0);  // KV pulls near separation (THEORY section 4, law 2)

@@ -34,7 +34,8 @@ struct Collision {
   long steps;
 };
 
-Collision collide(const std::string& law, double e, double steps_per_contact = AnalysisConfig{}.steps_per_contact) {
+Collision collide(const std::string& law, double e,
+                  double steps_per_contact = AnalysisConfig{}.steps_per_contact) {
   Model model;
   model.mass = Eigen::Vector2d(kM1, kM2).asDiagonal();
   model.damping = Eigen::Matrix2d::Zero();
@@ -48,9 +49,9 @@ Collision collide(const std::string& law, double e, double steps_per_contact = A
   c.k_h = kKh;
   c.mass_1 = kM1;
   c.mass_2 = kM2;
-  auto contact = std::make_unique<Contact1D>("contact", ContactBody{0, 1.0}, ContactBody{1, -1.0},
-                                             0.01, make_impact_law(c), effective_mass(kM1, kM2),
-                                             steps_per_contact);
+  auto contact =
+      std::make_unique<Contact1D>("contact", ContactBody{0, 1.0}, ContactBody{1, -1.0}, 0.01,
+                                  make_impact_law(c), effective_mass(kM1, kM2), steps_per_contact);
   const Contact1D* probe = contact.get();
   model.elements.push_back(std::move(contact));
   RunOptions o;
@@ -105,15 +106,16 @@ INSTANTIATE_TEST_SUITE_P(Laws, TwoMassSolver,
                                            "jankowski", "hertz_damp_muthukumar", "hertz_damp_ye"));
 
 TEST(TwoMassSolver, ElasticLawsGiveRestitutionOne) {
-  for (const char* law : {"linear", "hertz"}) EXPECT_NEAR(collide(law, 0.7).restitution, 1.0, 1e-4) << law;
+  for (const char* law : {"linear", "hertz"})
+    EXPECT_NEAR(collide(law, 0.7).restitution, 1.0, 1e-4) << law;
 }
 
 TEST(TwoMassSolver, RestitutionConvergesWithStepsPerContact) {
   // 4x the steps per contact: second order cuts the error 16x (>= 8x asked for KV); Hertz
   // (delta^1.5: a slope starting at 0) measured 6.4x, >= 5x asked; Jankowski's damping
   // ~ delta^(1/4) has an infinite slope at onset, which lowers the order (>= 3x asked).
-  for (const auto& [law, factor] : {std::pair{"kelvin_voigt", 8.0}, std::pair{"hertz", 5.0},
-                                    std::pair{"jankowski", 3.0}}) {
+  for (const auto& [law, factor] :
+       {std::pair{"kelvin_voigt", 8.0}, std::pair{"hertz", 5.0}, std::pair{"jankowski", 3.0}}) {
     const double ref = test::reference_collision(law, 0.7, kM1, kM2, kV0, kK, kKh).restitution;
     const double coarse = std::abs(collide(law, 0.7, 25).restitution - ref);
     const double fine = std::abs(collide(law, 0.7, 100).restitution - ref);
@@ -161,7 +163,8 @@ Bounce bounce(const std::string& law, double e, double duration) {
   const double* last = &b.result.history.values[b.result.history.values.size() - cols];
   const double u = last[2], v = last[3];
   b.initial_energy = 0.5 * m * v0 * v0;
-  b.final_energy = 0.5 * m * v * v + 0.5 * k * u * u + walls[0]->stored_energy() + walls[1]->stored_energy();
+  b.final_energy =
+      0.5 * m * v * v + 0.5 * k * u * u + walls[0]->stored_energy() + walls[1]->stored_energy();
   b.energy_error = std::abs(b.final_energy - b.initial_energy) / b.initial_energy;
   b.impacts = walls[0]->impacts() + walls[1]->impacts();
   return b;
@@ -185,7 +188,8 @@ TEST(RigidWallBounce, DissipativeImpactsKeepTheBalance) {
 TEST(ModifiedKelvinVoigt, NeverTensileAndIndentationWidensTheGap) {
   const Bounce b = bounce("modified_kelvin_voigt", 0.6, 12.0);
   const History& h = b.result.history;
-  // Columns: time, ag, u, v, a_abs, then per wall: force, penetration, impacts, v_imp, indentation, energy.
+  // Columns: time, ag, u, v, a_abs, then per wall: force, penetration, impacts, v_imp, indentation,
+  // energy.
   const std::size_t cols = h.columns.size();
   ASSERT_EQ(h.columns[5], "right force [N]");
   ASSERT_EQ(h.columns[9], "right indentation [m]");

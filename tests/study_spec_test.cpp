@@ -16,15 +16,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A scratch directory removed when the test process exits.
+struct ScratchDir {
+  fs::path path = test::study_scratch("spec");
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
 // Writes `text` as <scratch>/<name> and loads it.
 Study load_study_text(const std::string& name, const std::string& text) {
-  static const fs::path dir = test::study_scratch("spec");
-  const fs::path path = dir / name;
+  static const ScratchDir dir;
+  const fs::path path = dir.path / name;
   test::write_file(path, text);
   return load_study_file(path.string());
 }
 
-std::string model_line() { return "model: " + test::thesis_model() + "\n"; }
+std::string model_line() {
+  return "model: " + test::thesis_model() + "\n";
+}
 
 TEST(StudyPath, ParsesKeysAndListIndices) {
   const ParameterPath p = parse_parameter_path("building.floors[2].mass");
@@ -36,12 +47,15 @@ TEST(StudyPath, ParsesKeysAndListIndices) {
   EXPECT_EQ(p.text, "building.floors[2].mass");
   for (const char* bad : {"", "a..b", "a.", ".a", "a[x]", "a[-1]", "a[1", "a b"})
     EXPECT_THROW(parse_parameter_path(bad), std::invalid_argument) << bad;
-  EXPECT_TRUE(is_prefix_of(parse_parameter_path("building.walls"), parse_parameter_path("building.walls.gap")));
-  EXPECT_FALSE(is_prefix_of(parse_parameter_path("building.wall"), parse_parameter_path("building.walls.gap")));
+  EXPECT_TRUE(is_prefix_of(parse_parameter_path("building.walls"),
+                           parse_parameter_path("building.walls.gap")));
+  EXPECT_FALSE(is_prefix_of(parse_parameter_path("building.wall"),
+                            parse_parameter_path("building.walls.gap")));
 }
 
 TEST(StudyPath, OverridesSetCreateAndRemoveNodes) {
-  YAML::Node tree = YAML::Load("building: {isolator: {uy: 1 cm}, floors: [{mass: 1 t}, {mass: 2 t}]}");
+  YAML::Node tree =
+      YAML::Load("building: {isolator: {uy: 1 cm}, floors: [{mass: 1 t}, {mass: 2 t}]}");
   apply_override(tree, parse_parameter_path("building.isolator.uy"), YAML::Node("2 cm"));
   apply_override(tree, parse_parameter_path("building.walls.gap"), YAML::Node("20 cm"));
   apply_override(tree, parse_parameter_path("building.floors[1].mass"), YAML::Node("3 t"));
@@ -52,10 +66,12 @@ TEST(StudyPath, OverridesSetCreateAndRemoveNodes) {
   EXPECT_FALSE(tree["building"]["walls"].IsDefined());
   EXPECT_THROW(apply_override(tree, parse_parameter_path("building.floors.count"), YAML::Node("3")),
                std::invalid_argument);
-  EXPECT_THROW(apply_override(tree, parse_parameter_path("building.floors[5].mass"), YAML::Node("3 t")),
-               std::invalid_argument);
-  EXPECT_THROW(apply_override(tree, parse_parameter_path("building.isolator.uy.x"), YAML::Node("1")),
-               std::invalid_argument);
+  EXPECT_THROW(
+      apply_override(tree, parse_parameter_path("building.floors[5].mass"), YAML::Node("3 t")),
+      std::invalid_argument);
+  EXPECT_THROW(
+      apply_override(tree, parse_parameter_path("building.isolator.uy.x"), YAML::Node("1")),
+      std::invalid_argument);
 }
 
 TEST(StudySpec, RangeWithUnitsIsInclusiveAndWrittenInSi) {
@@ -103,7 +119,8 @@ variants:
 }
 
 TEST(StudySpec, DefaultsForOutputsAndStatistics) {
-  const Study s = load_study_text("defaults.yaml", model_line() + "axes: [{path: building.isolator.Tb, values: [2 s]}]\n");
+  const Study s = load_study_text(
+      "defaults.yaml", model_line() + "axes: [{path: building.isolator.Tb, values: [2 s]}]\n");
   ASSERT_EQ(s.outputs.size(), 3u);
   EXPECT_EQ(s.outputs[0].column, "base_displacement");
   EXPECT_EQ(s.outputs[1].selector, "stories.drift_ratio");
@@ -114,9 +131,16 @@ TEST(StudySpec, DefaultsForOutputsAndStatistics) {
 TEST(StudySpec, RecordSetsFromFilesFoldersAndComponents) {
   ISOPOUND_REQUIRE_RECORDS();
   const std::string records = test::records_dir().string();
-  const Study s = load_study_text("records.yaml", model_line() + "records:\n"
-                                  "  - {folder: " + records + ", glob: \"RSN1084_*.AT2\", scale: 0.5}\n"
-                                  "  - {file: " + records + "/erzikan.txt, format: columns, dt: 0.005 s, unit: cm/s2, components: {NS: 0, EW: 1}}\n");
+  const Study s = load_study_text(
+      "records.yaml",
+      model_line() +
+          "records:\n"
+          "  - {folder: " +
+          records +
+          ", glob: \"RSN1084_*.AT2\", scale: 0.5}\n"
+          "  - {file: " +
+          records +
+          "/erzikan.txt, format: columns, dt: 0.005 s, unit: cm/s2, components: {NS: 0, EW: 1}}\n");
   ASSERT_EQ(s.axes.size(), 1u);
   EXPECT_EQ(s.axes[0].name, "record");
   ASSERT_EQ(s.axes[0].levels.size(), 4u);
@@ -177,29 +201,35 @@ variants:
 // A malformed study's InputError: its "file:line:col: key" prefix and a piece of the message.
 struct Malformed {
   const char* name;
-  const char* body;        // after the model line (line 1)
-  const char* located;     // expected "line:col: key" after the file name
+  const char* body;     // after the model line (line 1)
+  const char* located;  // expected "line:col: key" after the file name
   const char* fragment;
 };
 
 TEST(StudyErrors, MalformedStudiesNameFileLineAndKeyBeforeAnyRun) {
   const Malformed cases[] = {
-      {"unknown_path", "axes:\n  - {path: building.isolator.uyy, values: [1 cm]}\n", "3:44: axes[0].values[0]",
-       "building.isolator.uyy: unknown key 'uyy' (did you mean 'uy'?)"},
-      {"empty_axis", "axes:\n  - path: building.isolator.uy\n    values: []\n", "4:5: axes[0].values", "empty axis"},
-      {"wrong_sign", "axes:\n  - path: building.isolator.uy\n    range: {from: 1 cm, to: 3 cm, step: -0.05 cm}\n",
+      {"unknown_path", "axes:\n  - {path: building.isolator.uyy, values: [1 cm]}\n",
+       "3:44: axes[0].values[0]", "building.isolator.uyy: unknown key 'uyy' (did you mean 'uy'?)"},
+      {"empty_axis", "axes:\n  - path: building.isolator.uy\n    values: []\n",
+       "4:5: axes[0].values", "empty axis"},
+      {"wrong_sign",
+       "axes:\n  - path: building.isolator.uy\n    range: {from: 1 cm, to: 3 cm, step: -0.05 cm}\n",
        "4:41: axes[0].range.step", "step of wrong sign"},
-      {"unit_mismatch_range", "axes:\n  - path: building.walls.gap\n    range: {from: 10 cm, to: 30 s, step: 0.2 cm}\n",
+      {"unit_mismatch_range",
+       "axes:\n  - path: building.walls.gap\n    range: {from: 10 cm, to: 30 s, step: 0.2 cm}\n",
        "4:30: axes[0].range.to", "unit mismatch"},
       {"unit_mismatch_model", "axes:\n  - path: building.isolator.Tb\n    values: [2 s, 2 cm]\n",
-       "4:19: axes[0].values[1]", "building.isolator.Tb: unit 'cm' is a length (m), expected a time (s)"},
-      {"zero_step", "axes:\n  - {path: building.isolator.uy, range: {from: 1 cm, to: 2 cm, step: 0 cm}}\n",
+       "4:19: axes[0].values[1]",
+       "building.isolator.Tb: unit 'cm' is a length (m), expected a time (s)"},
+      {"zero_step",
+       "axes:\n  - {path: building.isolator.uy, range: {from: 1 cm, to: 2 cm, step: 0 cm}}\n",
        "3:70: axes[0].range.step", "must not be 0"},
       {"zip_lengths",
        "axes:\n  - zip:\n    - {path: building.isolator.QW, values: [5 %, 10 %]}\n"
        "    - {path: building.isolator.uy, values: [1 cm]}\n",
        "5:7: axes[0].zip[1]", "same number of values"},
-      {"list_by_key", "axes:\n  - {path: building.damping.superstructure.modes.first, values: [1]}\n",
+      {"list_by_key",
+       "axes:\n  - {path: building.damping.superstructure.modes.first, values: [1]}\n",
        "3:66: axes[0].values[0]", "building.damping.superstructure.modes is a list, not a map"},
       {"unknown_statistics_axis",
        "axes:\n  - {path: building.isolator.uy, values: [1 cm]}\nstatistics: {over: [record]}\n",
@@ -208,12 +238,15 @@ TEST(StudyErrors, MalformedStudiesNameFileLineAndKeyBeforeAnyRun) {
        "variants: {BL: {building.isolator.model: bilinear}}\nderived: {r: {ratio: [BL, BW]}}\n",
        "3:27: derived.r.ratio[1]", "no level 'BW'"},
       {"duplicate_axis",
-       "axes:\n  - {path: building.isolator.uy, values: [1 cm]}\n  - {path: building.walls.uy, values: [1 cm]}\n",
+       "axes:\n  - {path: building.isolator.uy, values: [1 cm]}\n  - {path: building.walls.uy, "
+       "values: [1 cm]}\n",
        "4:5: axes[1].name", "two axes are named 'uy'"},
       {"bad_peak", "outputs: [base.drift]\n", "2:11: outputs[0]", "drifts belong to stories"},
-      {"missing_floor", "outputs: [floor7.displacement]\n", "2:11: outputs[0]", "the building has 3 floors"},
+      {"missing_floor", "outputs: [floor7.displacement]\n", "2:11: outputs[0]",
+       "the building has 3 floors"},
       {"unknown_key", "axis: []\n", "2:1: axis", "unknown key 'axis' (did you mean 'axes'?)"},
-      {"model_combination", "axes:\n  - {name: storeys, path: building.floors.count, values: [3, 1]}\n",
+      {"model_combination",
+       "axes:\n  - {name: storeys, path: building.floors.count, values: [3, 1]}\n",
        "9:22: building.damping.superstructure.type", "(case 1: storeys=1)"},
   };
   for (const Malformed& c : cases) {
@@ -227,8 +260,10 @@ TEST(StudyErrors, MalformedStudiesNameFileLineAndKeyBeforeAnyRun) {
     }
     ASSERT_FALSE(message.empty()) << c.name << ": no error";
     // Combination errors of the base model point into the model file, others into the study.
-    const std::string where = std::string(c.name) == "model_combination" ? test::thesis_model() : file;
-    EXPECT_NE(message.find(where + ":" + c.located + ": "), std::string::npos) << c.name << ": " << message;
+    const std::string where =
+        std::string(c.name) == "model_combination" ? test::thesis_model() : file;
+    EXPECT_NE(message.find(where + ":" + c.located + ": "), std::string::npos)
+        << c.name << ": " << message;
     EXPECT_NE(message.find(c.fragment), std::string::npos) << c.name << ": " << message;
   }
 }

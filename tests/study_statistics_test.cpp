@@ -84,10 +84,13 @@ TEST(StudyStatistics, GroupedTablesMatchHandComputation) {
   const std::vector<double> uy{0.01, 0.02};
   const std::vector<std::string> variants{"BL", "BW"};
   // u_base[record][uy][variant]
-  const double u[3][2][2] = {{{0.30, 0.20}, {0.40, 0.25}}, {{0.50, 0.40}, {0.60, 0.30}}, {{0.10, 0.05}, {0.20, 0.10}}};
-  StudyStore store = StudyStore::create((dir / "hand.db").string(), layout, {}, 12, [&](std::int64_t c) {
-    return std::vector<Cell>{{false, 0, records[c / 4]}, {true, uy[(c / 2) % 2], ""}, {false, 0, variants[c % 2]}};
-  });
+  const double u[3][2][2] = {
+      {{0.30, 0.20}, {0.40, 0.25}}, {{0.50, 0.40}, {0.60, 0.30}}, {{0.10, 0.05}, {0.20, 0.10}}};
+  StudyStore store =
+      StudyStore::create((dir / "hand.db").string(), layout, {}, 12, [&](std::int64_t c) {
+        return std::vector<Cell>{
+            {false, 0, records[c / 4]}, {true, uy[(c / 2) % 2], ""}, {false, 0, variants[c % 2]}};
+      });
   std::vector<RunRecord> runs;
   for (std::int64_t c = 0; c < 12; ++c) {
     RunRecord r;
@@ -105,8 +108,10 @@ TEST(StudyStatistics, GroupedTablesMatchHandComputation) {
   const ExportTables t = export_tables(store, ExportOptions{});
   const auto run_rows = parse_csv(t.runs);
   ASSERT_EQ(run_rows.size(), 13u);
-  EXPECT_EQ(run_rows[0], (std::vector<std::string>{"case_id", "record", "uy", "variant", "status", "steps", "u_base", "error"}));
-  EXPECT_EQ(run_rows[12], (std::vector<std::string>{"11", "C", "0.02", "BW", "failed", "100", "", "diverged"}));
+  EXPECT_EQ(run_rows[0], (std::vector<std::string>{"case_id", "record", "uy", "variant", "status",
+                                                   "steps", "u_base", "error"}));
+  EXPECT_EQ(run_rows[12],
+            (std::vector<std::string>{"11", "C", "0.02", "BW", "failed", "100", "", "diverged"}));
 
   // Ratios BL/BW, other axes equal: A 0.01 -> 0.30/0.20 = 1.5.
   const auto ratio_rows = parse_csv(t.ratios);
@@ -118,14 +123,16 @@ TEST(StudyStatistics, GroupedTablesMatchHandComputation) {
 
   // Statistics over records, grouped by (uy, variant); the ratio rows form their own groups.
   const auto stats = parse_csv(t.statistics);
-  ASSERT_EQ(stats[0], (std::vector<std::string>{"record", "uy", "variant", "over", "output", "n", "mean", "std",
-                                                "mean_minus_std", "mean_plus_std", "min", "max", "median"}));
+  ASSERT_EQ(stats[0], (std::vector<std::string>{"record", "uy", "variant", "over", "output", "n",
+                                                "mean", "std", "mean_minus_std", "mean_plus_std",
+                                                "min", "max", "median"}));
   const auto find = [&](const std::string& uy_text, const std::string& variant) {
     for (const auto& row : stats)
       if (row[1] == uy_text && row[2] == variant) return row;
     return std::vector<std::string>{};
   };
-  // uy 0.01, BL: 0.30, 0.50, 0.10 -> mean 0.3, sample std sqrt((0 + 0.04 + 0.04) / 2) = 0.2, median 0.3.
+  // uy 0.01, BL: 0.30, 0.50, 0.10 -> mean 0.3, sample std sqrt((0 + 0.04 + 0.04) / 2) = 0.2, median
+  // 0.3.
   const auto bl = find("0.01", "BL");
   ASSERT_EQ(bl.size(), 13u);
   EXPECT_EQ(bl[0], "");
@@ -139,7 +146,8 @@ TEST(StudyStatistics, GroupedTablesMatchHandComputation) {
   EXPECT_DOUBLE_EQ(std::stod(bl[10]), 0.10);
   EXPECT_DOUBLE_EQ(std::stod(bl[11]), 0.50);
   EXPECT_DOUBLE_EQ(std::stod(bl[12]), 0.30);
-  // uy 0.02, BW: 0.25, 0.30 and a failed run -> n 2, mean 0.275, std sqrt(2 * 0.025^2) , median 0.275.
+  // uy 0.02, BW: 0.25, 0.30 and a failed run -> n 2, mean 0.275, std sqrt(2 * 0.025^2) , median
+  // 0.275.
   const auto bw = find("0.02", "BW");
   ASSERT_EQ(bw.size(), 13u);
   EXPECT_EQ(bw[5], "2");
@@ -152,6 +160,7 @@ TEST(StudyStatistics, GroupedTablesMatchHandComputation) {
   EXPECT_NEAR(std::stod(ratio[6]), 4.75 / 3, 1e-15);
   EXPECT_NEAR(std::stod(ratio[12]), 1.5, 1e-15);
   EXPECT_EQ(stats.size(), 1u + 6u);  // 4 run groups + 2 ratio groups, one peak each
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
@@ -76,11 +77,12 @@ TEST(StudySweep, TablesAreByteIdenticalForOneAndTwoThreads) {
   const fs::path dir = test::study_scratch("determinism");
   test::write_file(dir / "study.yaml", determinism_study());
   for (const char* jobs : {"1", "2"}) {
-    const auto r = run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q -j " + jobs + " --db '" +
-                                (dir / ("j" + std::string(jobs) + ".db")).string() + "'");
+    const auto r =
+        run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q -j " + jobs + " --db '" +
+                     (dir / ("j" + std::string(jobs) + ".db")).string() + "'");
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    const auto e = run_isopound("export '" + (dir / ("j" + std::string(jobs) + ".db")).string() + "' -o '" +
-                                (dir / ("j" + std::string(jobs))).string() + "'");
+    const auto e = run_isopound("export '" + (dir / ("j" + std::string(jobs) + ".db")).string() +
+                                "' -o '" + (dir / ("j" + std::string(jobs))).string() + "'");
     ASSERT_EQ(e.exit_code, 0) << e.output;
   }
   expect_same_tables(dir / "j1", dir / "j2");
@@ -94,9 +96,11 @@ TEST(StudySweep, TablesAreByteIdenticalForOneAndTwoThreads) {
   EXPECT_EQ(query_int(dir / "j2.db", "SELECT COUNT(DISTINCT case_id) FROM computations"), 216);
 
   // --timing adds the one column that differs from run to run.
-  const auto timed = run_isopound("export '" + (dir / "j1.db").string() + "' --table runs --timing");
+  const auto timed =
+      run_isopound("export '" + (dir / "j1.db").string() + "' --table runs --timing");
   ASSERT_EQ(timed.exit_code, 0);
   EXPECT_NE(timed.output.find(",wall_seconds,error\n"), std::string::npos);
+  fs::remove_all(dir);  // kept when an assertion failed above
 }
 
 pid_t spawn_isopound(const std::vector<std::string>& args) {
@@ -138,9 +142,12 @@ TEST(StudySweep, KilledStudyResumesWithoutRecomputingFinishedRuns) {
   }
   ASSERT_FALSE(exited) << "the study finished before it could be killed";
   // While it runs, a second sweep on the same database is refused.
-  const auto second = run_isopound("sweep '" + study.string() + "' -q --resume --db '" + db.string() + "'");
+  const auto second =
+      run_isopound("sweep '" + study.string() + "' -q --resume --db '" + db.string() + "'");
   EXPECT_EQ(second.exit_code, 2) << second.output;
-  EXPECT_NE(second.output.find("another isopound sweep is writing this database"), std::string::npos) << second.output;
+  EXPECT_NE(second.output.find("another isopound sweep is writing this database"),
+            std::string::npos)
+      << second.output;
   ASSERT_EQ(kill(pid, SIGKILL), 0);
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
@@ -148,18 +155,23 @@ TEST(StudySweep, KilledStudyResumesWithoutRecomputingFinishedRuns) {
   const long long before = query_int(db, "SELECT COUNT(*) FROM runs WHERE status = 'done'");
   ASSERT_GE(before, 40);
   ASSERT_LT(before, kTotal) << "killed too late to test a resume";
+  std::printf("killed after %lld of %lld runs\n", before, kTotal);
   EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM runs WHERE status = 'pending'"), kTotal - before);
   EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM computations"), before);
 
-  // Without --resume an existing database is refused; with it only the unfinished runs are computed.
+  // Without --resume an existing database is refused; with it only the unfinished runs are
+  // computed.
   const auto refused = run_isopound("sweep '" + study.string() + "' -q --db '" + db.string() + "'");
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
-  EXPECT_NE(refused.output.find("already exists: add --resume"), std::string::npos) << refused.output;
-  const auto resumed = run_isopound("sweep '" + study.string() + "' -q -j 2 --resume --db '" + db.string() + "'");
+  EXPECT_NE(refused.output.find("already exists: add --resume"), std::string::npos)
+      << refused.output;
+  const auto resumed =
+      run_isopound("sweep '" + study.string() + "' -q -j 2 --resume --db '" + db.string() + "'");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
 
   EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM runs WHERE status = 'done'"), kTotal);
-  EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM computations"), kTotal) << "a run was computed twice";
+  EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM computations"), kTotal)
+      << "a run was computed twice";
   EXPECT_EQ(query_int(db, "SELECT COUNT(DISTINCT case_id) FROM computations"), kTotal);
   EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM computations WHERE session = 1"), before);
   EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM runs WHERE session = 1"), before);
@@ -168,15 +180,20 @@ TEST(StudySweep, KilledStudyResumesWithoutRecomputingFinishedRuns) {
 
   // The resumed table equals an uninterrupted run's.
   const fs::path clean = dir / "clean.db";
-  const auto full = run_isopound("sweep '" + study.string() + "' -q -j 2 --db '" + clean.string() + "' --export '" +
-                                 (dir / "clean").string() + "'");
+  const auto full = run_isopound("sweep '" + study.string() + "' -q -j 2 --db '" + clean.string() +
+                                 "' --export '" + (dir / "clean").string() + "'");
   ASSERT_EQ(full.exit_code, 0) << full.output;
-  ASSERT_EQ(run_isopound("export '" + db.string() + "' -o '" + (dir / "killed").string() + "'").exit_code, 0);
+  ASSERT_EQ(
+      run_isopound("export '" + db.string() + "' -o '" + (dir / "killed").string() + "'").exit_code,
+      0);
   expect_same_tables(dir / "killed", dir / "clean");
 
   // A resume of a finished study computes nothing.
-  ASSERT_EQ(run_isopound("sweep '" + study.string() + "' -q --resume --db '" + db.string() + "'").exit_code, 0);
+  ASSERT_EQ(run_isopound("sweep '" + study.string() + "' -q --resume --db '" + db.string() + "'")
+                .exit_code,
+            0);
   EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM computations"), kTotal);
+  fs::remove_all(dir);  // kept when an assertion failed above
 }
 
 TEST(StudySweep, RunsWithIdenticalModelsAreComputedOnce) {
@@ -190,12 +207,17 @@ variants:
 outputs: [base.displacement]
 )");
   const fs::path db = dir / "s.db";
-  const auto r = run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --db '" + db.string() + "'");
+  const auto r =
+      run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --db '" + db.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM runs WHERE status = 'done'"), 6);
   EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM computations"), 4);
-  EXPECT_EQ(query_int(db, "SELECT COUNT(DISTINCT base_displacement) FROM runs WHERE variant = 'fixed'"), 1);
-  EXPECT_EQ(query_int(db, "SELECT COUNT(DISTINCT base_displacement) FROM runs WHERE variant = 'own'"), 3);
+  EXPECT_EQ(
+      query_int(db, "SELECT COUNT(DISTINCT base_displacement) FROM runs WHERE variant = 'fixed'"),
+      1);
+  EXPECT_EQ(
+      query_int(db, "SELECT COUNT(DISTINCT base_displacement) FROM runs WHERE variant = 'own'"), 3);
+  fs::remove_all(dir);  // kept when an assertion failed above
 }
 
 TEST(StudySweep, ResumeRefusesAChangedStudy) {
@@ -205,20 +227,26 @@ TEST(StudySweep, ResumeRefusesAChangedStudy) {
                            "axes: [{path: building.isolator.uy, values: [1 cm, 2 cm]}]\n";
   test::write_file(dir / "study.yaml", base);
   const std::string db = (dir / "s.db").string();
-  ASSERT_EQ(run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --db '" + db + "'").exit_code, 0);
+  ASSERT_EQ(
+      run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --db '" + db + "'").exit_code,
+      0);
   test::write_file(dir / "study.yaml", base + "outputs: [base.displacement]\n");
-  const auto r = run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --resume --db '" + db + "'");
+  const auto r =
+      run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --resume --db '" + db + "'");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("was made from a different study"), std::string::npos) << r.output;
-  const auto again = run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --overwrite --db '" + db + "'");
+  const auto again = run_isopound("sweep '" + (dir / "study.yaml").string() +
+                                  "' -q --overwrite --db '" + db + "'");
   EXPECT_EQ(again.exit_code, 0) << again.output;
 
   // A database file without tables (a sweep killed while creating it) is simply started again.
   const fs::path empty = dir / "empty.db";
   test::write_file(empty, "");
-  const auto fresh = run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --resume --db '" + empty.string() + "'");
+  const auto fresh = run_isopound("sweep '" + (dir / "study.yaml").string() +
+                                  "' -q --resume --db '" + empty.string() + "'");
   EXPECT_EQ(fresh.exit_code, 0) << fresh.output;
   EXPECT_EQ(query_int(empty, "SELECT COUNT(*) FROM runs WHERE status = 'done'"), 2);
+  fs::remove_all(dir);  // kept when an assertion failed above
 }
 
 TEST(StudySweep, MalformedStudiesExitWithCode2BeforeAnyRun) {
@@ -233,11 +261,13 @@ TEST(StudySweep, MalformedStudiesExitWithCode2BeforeAnyRun) {
     const auto r = run_isopound("sweep '" + entry.path().string() + "' --db '" + db.string() + "'");
     EXPECT_EQ(r.exit_code, 2) << name << ": " << r.output;
     const std::string escaped = std::regex_replace(name, std::regex(R"(\.)"), R"(\.)");
-    const std::regex located(escaped + R"(:[1-9][0-9]*:[1-9][0-9]*: [A-Za-z_][A-Za-z_0-9.\[\]]*: )");
+    const std::regex located(escaped +
+                             R"(:[1-9][0-9]*:[1-9][0-9]*: [A-Za-z_][A-Za-z_0-9.\[\]]*: )");
     EXPECT_TRUE(std::regex_search(r.output, located)) << name << ": " << r.output;
     EXPECT_FALSE(fs::exists(db)) << name << ": a database was created";
   }
   EXPECT_GE(count, 8);
+  fs::remove_all(dir);  // kept when an assertion failed above
 }
 
 #ifdef ISOPOUND_HAVE_MPI
@@ -246,26 +276,32 @@ TEST(StudySweep, MpiRanksGiveTheSameTableAsOneThread) {
   test::write_file(dir / "study.yaml", determinism_study());
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);  // CI runs as root
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  const auto mpi = test::run_command(std::string(ISOPOUND_MPIEXEC) + " -np 2 --oversubscribe " + ISOPOUND_BINARY +
-                                     " sweep '" + (dir / "study.yaml").string() + "' -q -j 1 --db '" +
-                                     (dir / "mpi.db").string() + "' --export '" + (dir / "mpi").string() + "'");
+  const auto mpi = test::run_command(std::string(ISOPOUND_MPIEXEC) + " -np 2 --oversubscribe " +
+                                     ISOPOUND_BINARY + " sweep '" + (dir / "study.yaml").string() +
+                                     "' -q -j 1 --db '" + (dir / "mpi.db").string() +
+                                     "' --export '" + (dir / "mpi").string() + "'");
   ASSERT_EQ(mpi.exit_code, 0) << mpi.output;
-  const auto one = run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q -j 1 --db '" +
-                                (dir / "one.db").string() + "' --export '" + (dir / "one").string() + "'");
+  const auto one =
+      run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q -j 1 --db '" +
+                   (dir / "one.db").string() + "' --export '" + (dir / "one").string() + "'");
   ASSERT_EQ(one.exit_code, 0) << one.output;
   expect_same_tables(dir / "mpi", dir / "one");
   EXPECT_EQ(query_int(dir / "mpi.db", "SELECT ranks FROM sessions"), 2);
-  EXPECT_GT(query_int(dir / "mpi.db", "SELECT COUNT(*) FROM computations WHERE rank = 1"), 0) << "rank 1 did nothing";
+  EXPECT_GT(query_int(dir / "mpi.db", "SELECT COUNT(*) FROM computations WHERE rank = 1"), 0)
+      << "rank 1 did nothing";
   EXPECT_EQ(query_int(dir / "mpi.db", "SELECT COUNT(*) FROM computations"), 216);
+  fs::remove_all(dir);  // kept when an assertion failed above
 }
 #endif
 
 TEST(StudyConfigs, Chapter2StudyValidates) {
   ISOPOUND_REQUIRE_RECORDS();
-  const auto r = run_isopound("sweep '" + (test::source_dir() / "configs" / "studies" / "chapter2.yaml").string() +
-                              "' --dry-run");
+  const auto r = run_isopound(
+      "sweep '" + (test::source_dir() / "configs" / "studies" / "chapter2.yaml").string() +
+      "' --dry-run");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("8856 runs (8856 distinct models, 2 ground motions)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("8856 runs (8856 distinct models, 2 ground motions)"), std::string::npos)
+      << r.output;
 }
 
 }  // namespace

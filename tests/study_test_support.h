@@ -18,29 +18,9 @@
 
 namespace isopound::test {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-inline CommandResult run_command(const std::string& command) {
-  CommandResult result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-inline CommandResult run_isopound(const std::string& args) {
-  return run_command(std::string(ISOPOUND_BINARY) + " " + args);
-}
-
 inline std::filesystem::path study_scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("isopound-study-" + name + "-" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("isopound-study-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -63,7 +43,8 @@ inline long long query_int(const std::filesystem::path& db_path, const std::stri
   if (sqlite3_open_v2(db_path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
     sqlite3_busy_timeout(db, 5000);
     sqlite3_stmt* stmt = nullptr;
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) == SQLITE_OK && sqlite3_step(stmt) == SQLITE_ROW)
+    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) == SQLITE_OK &&
+        sqlite3_step(stmt) == SQLITE_ROW)
       value = sqlite3_column_int64(stmt, 0);
     sqlite3_finalize(stmt);
   }
@@ -72,6 +53,8 @@ inline long long query_int(const std::filesystem::path& db_path, const std::stri
 }
 
 // The model every end-to-end study test starts from.
-inline std::string thesis_model() { return (source_dir() / "configs" / "thesis-3storey-bw.yaml").string(); }
+inline std::string thesis_model() {
+  return (source_dir() / "configs" / "thesis-3storey-bw.yaml").string();
+}
 
 }  // namespace isopound::test
