@@ -259,7 +259,6 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   };
   stepper.start(initial(options.initial_displacement, "displacement"),
                 initial(options.initial_velocity, "velocity"), ground(0, 0.0));
-  for (auto& e : model.elements) e->begin_step(0.0, false);
   record(0.0, ground(0, 0.0), 0.0);
 
   // Pseudocode of the stepping inside analysis interval i (position pos in [0, 1]):
@@ -272,10 +271,6 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   st.min_step = H;
   int level = 0;
   int settles_here = 0;
-  const auto restart_power = [&]() {
-    p_elem_prev = 0.0;
-    for (const auto& el : model.elements) p_elem_prev += el->power(stepper.v());
-  };
   const double min_fraction = std::ldexp(1.0, -max_level);
   const auto level_step = [&](int l) { return H * std::ldexp(1.0, -l); };
   // Raises the level until the step respects every element's limit; returns the limit.
@@ -288,6 +283,18 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   };
   std::vector<double> event_theta(model.elements.size(), 1.0);
   std::vector<char> settling(model.elements.size(), 0);
+  // The settling elements switch status at the committed state; if a force jumped, the stepper
+  // restarts from equilibrium (ground acceleration ag) and so does the power integrand.
+  const auto settle_events = [&](double ag) {
+    bool jumped = false;
+    for (std::size_t k = 0; k < model.elements.size(); ++k)
+      if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
+    if (!jumped) return;
+    stepper.restart(ag);
+    ++st.restarts;
+    p_elem_prev = 0.0;
+    for (const auto& el : model.elements) p_elem_prev += el->power(stepper.v());
+  };
   for (long i = 0; i < intervals; ++i) {
     double pos = 0.0;
     double forced = 0.0;  // > 0: the fraction of H of a step cut at an event
@@ -344,15 +351,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
             settling[k] =
                 event_theta[k] <= std::max(theta * (1.0 + 1e-12), theta < tol ? tol : 0.0);
           if (theta < tol) {
-            bool jumped = false;
-            for (std::size_t k = 0; k < model.elements.size(); ++k)
-              if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
-            if (jumped) {
-              stepper.restart(ground(i, pos));
-              ++st.restarts;
-              restart_power();
-            }
-            refine_to_limit();
+            settle_events(ground(i, pos));
+            refine_to_limit();  // a contact that just started wants its own step from the start
             if (++settles_here > 4)
               throw AnalysisError((static_cast<double>(i) + pos) * H, "",
                                   "event loop: contact status does not settle");
@@ -379,22 +379,10 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
                                 "': displacement exceeds 1000 m. Hint: check the units of "
                                 "stiffnesses and masses, and the record's unit and scale.");
       }
-      record(t, ag1, h);  // the step just taken, with the forces before any switch
-      if (at_event) {
-        // The step ended at an event: the elements switch status now; if a force jumped the
-        // stepper restarts from equilibrium and the power integrand restarts too.
-        bool jumped = false;
-        for (std::size_t k = 0; k < model.elements.size(); ++k)
-          if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
-        if (jumped) {
-          stepper.restart(ag1);
-          ++st.restarts;
-          restart_power();
-        }
-        refine_to_limit();  // a contact that just started wants its own step from the start
-      }
+      record(t, ag1, h);                 // the step just taken, with the forces before any switch
+      if (at_event) settle_events(ag1);  // the step ended at an event: switch status there
       if (adaptive) {
-        const double limit = refine_to_limit();
+        const double limit = refine_to_limit();  // also gives a new contact its own step
         if (level > 0 && err < 0.1 && level_step(level - 1) <= limit) --level;
       } else {
         level = 0;  // fixed stepping: back to the fixed step after a Newton-failure halving

@@ -294,20 +294,9 @@ void Contact1D::outputs(double* out) const {
 }
 
 double Contact1D::output(int i) const {
-  switch (i) {
-    case 0:
-      return trial_.force;
-    case 1:
-      return std::max(trial_.delta, 0.0);
-    case 2:
-      return trial_impacts();
-    case 3:
-      return std::max(max_impact_velocity_, trial_.started ? trial_.phase.impact_velocity : 0.0);
-    case 4:
-      return indentation_ + (trial_.ended ? trial_.end_indentation : 0.0);
-    default:
-      return trial_work_ - trial_stored_;
-  }
+  double values[6];
+  outputs(values);
+  return values[i];
 }
 
 }  // namespace isopound

@@ -32,7 +32,6 @@ void NewmarkStepper::start(double ag0) {
 void NewmarkStepper::start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0, double ag0) {
   u0_ = u0;
   v0_ = v0;
-  for (auto& e : model_.elements) e->begin_step(0.0, false);
   restart(ag0);
 }
 
@@ -70,12 +69,6 @@ const Eigen::MatrixXd& NewmarkStepper::effective_linear(double h, bool cache) {
   k_hat_cache_.emplace_back(
       h, model_.stiffness + (2.0 / h) * model_.damping + (4.0 / (h * h)) * model_.mass);
   return k_hat_cache_.back().second;
-}
-
-void NewmarkStepper::set_trial(const Eigen::VectorXd& u1) {
-  // v1 = 2/h (u1 - u0) - v0
-  v1_ = (2.0 / h_) * (u1 - u0_) - v0_;
-  for (auto& e : model_.elements) e->set_trial(u1, v1_);
 }
 
 StepOutcome NewmarkStepper::try_step(double h, double ag1, bool cache, bool freeze) {

@@ -58,7 +58,6 @@ class NewmarkStepper {
 
  private:
   const Eigen::MatrixXd& effective_linear(double h, bool cache);
-  void set_trial(const Eigen::VectorXd& u1);
 
   Model& model_;
   NewtonSettings settings_;

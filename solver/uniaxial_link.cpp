@@ -44,14 +44,9 @@ std::string UniaxialLink::output_unit(int i) const {
 }
 
 double UniaxialLink::output(int i) const {
-  switch (i) {
-    case 0:
-      return law_->force();
-    case 1:
-      return law_->deformation();
-    default:
-      return law_->internal();
-  }
+  double values[3];
+  outputs(values);
+  return values[i];
 }
 
 }  // namespace isopound
