@@ -5,10 +5,10 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "solver/analysis.h"
-#include "solver/building2d.h"
-#include "solver/ground_motion.h"
-#include "solver/pounding2d.h"
+#include "solver/core/analysis.h"
+#include "solver/excitation/ground_motion.h"
+#include "solver/structures/building2d.h"
+#include "solver/structures/pounding2d.h"
 
 namespace {
 

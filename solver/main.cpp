@@ -5,13 +5,13 @@
 #include <filesystem>
 #include <iostream>
 
-#include "solver/building2d.h"
-#include "solver/isolator.h"
-#include "solver/job.h"
-#include "solver/model_input.h"
-#include "solver/modes.h"
-#include "solver/report.h"
-#include "solver/study_cli.h"  // study commands (sweep, export)
+#include "solver/core/modes.h"
+#include "solver/io/model_input.h"
+#include "solver/io/report.h"
+#include "solver/structures/building2d.h"
+#include "solver/structures/isolator.h"
+#include "solver/structures/job.h"
+#include "solver/study/study_cli.h"  // study commands (sweep, export)
 
 namespace fs = std::filesystem;
 using namespace isopound;

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
-#include "solver/analysis.h"
-#include "solver/building2d.h"
-#include "solver/ground_motion.h"
+#include "solver/core/analysis.h"
+#include "solver/excitation/ground_motion.h"
+#include "solver/structures/building2d.h"
 #include "tests/test_support.h"
 
 namespace isopound {

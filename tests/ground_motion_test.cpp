@@ -1,6 +1,6 @@
 // Tests of solver/ground_motion: the real records in ../shared/records, PEER header variants,
 // column files, file:line errors, exact peak integration, and the near-fault pulse.
-#include "solver/ground_motion.h"
+#include "solver/excitation/ground_motion.h"
 
 #include <gtest/gtest.h>
 

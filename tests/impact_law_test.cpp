@@ -1,6 +1,6 @@
 // Tests of the 2D impact laws (THEORY section 4): forces and partials vs finite differences and
 // vs an independent re-implementation, helpers by hand, and free two-mass collisions (Fig. 3.14).
-#include "solver/impact_law.h"
+#include "solver/materials/impact_law.h"
 
 #include <gtest/gtest.h>
 

@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "solver/bilinear.h"
-#include "solver/bouc_wen.h"
-#include "solver/config.h"
-#include "solver/isolator.h"
-#include "solver/linear_material.h"
+#include "solver/materials/bilinear.h"
+#include "solver/materials/bouc_wen.h"
+#include "solver/materials/linear_material.h"
+#include "solver/structures/config.h"
+#include "solver/structures/isolator.h"
 
 namespace isopound {
 namespace {

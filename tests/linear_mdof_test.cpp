@@ -13,11 +13,11 @@
 #include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
-#include "solver/analysis.h"
-#include "solver/building2d.h"
-#include "solver/config.h"
-#include "solver/ground_motion.h"
-#include "solver/model.h"
+#include "solver/core/analysis.h"
+#include "solver/core/model.h"
+#include "solver/excitation/ground_motion.h"
+#include "solver/structures/building2d.h"
+#include "solver/structures/config.h"
 
 namespace isopound {
 namespace {

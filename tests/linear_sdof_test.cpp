@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "solver/analysis.h"
-#include "solver/config.h"
-#include "solver/ground_motion.h"
-#include "solver/linear_material.h"
-#include "solver/model.h"
-#include "solver/newmark.h"
-#include "solver/uniaxial_link.h"
+#include "solver/core/analysis.h"
+#include "solver/core/model.h"
+#include "solver/core/newmark.h"
+#include "solver/elements/uniaxial_link.h"
+#include "solver/excitation/ground_motion.h"
+#include "solver/materials/linear_material.h"
+#include "solver/structures/config.h"
 
 namespace isopound {
 namespace {

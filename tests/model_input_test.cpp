@@ -1,6 +1,6 @@
 // Tests of the model file reader: a full model parses to SI values, and every malformed model in
 // tests/data/bad_models/ is an InputError naming the file, the line and the key path.
-#include "solver/model_input.h"
+#include "solver/io/model_input.h"
 
 #include <gtest/gtest.h>
 

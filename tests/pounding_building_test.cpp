@@ -21,11 +21,11 @@
 #include <string_view>
 #include <vector>
 
-#include "solver/analysis.h"
-#include "solver/contact.h"
-#include "solver/ground_motion.h"
-#include "solver/impact_law.h"
-#include "solver/job.h"
+#include "solver/core/analysis.h"
+#include "solver/elements/contact.h"
+#include "solver/excitation/ground_motion.h"
+#include "solver/materials/impact_law.h"
+#include "solver/structures/job.h"
 #include "tests/test_support.h"
 
 namespace isopound {

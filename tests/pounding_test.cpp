@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
-#include "solver/analysis.h"
-#include "solver/contact.h"
-#include "solver/impact_law.h"
+#include "solver/core/analysis.h"
+#include "solver/elements/contact.h"
+#include "solver/materials/impact_law.h"
 #include "tests/two_mass_reference.h"
 
 namespace isopound {

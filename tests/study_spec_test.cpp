@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <string>
 
-#include "solver/study_cases.h"
-#include "solver/study_path.h"
-#include "solver/study_spec.h"
+#include "solver/study/study_cases.h"
+#include "solver/study/study_path.h"
+#include "solver/study/study_spec.h"
 #include "tests/study_test_support.h"
 
 namespace isopound {

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "solver/study_csv.h"
-#include "solver/study_export.h"
-#include "solver/study_statistics.h"
-#include "solver/study_store.h"
+#include "solver/study/study_csv.h"
+#include "solver/study/study_export.h"
+#include "solver/study/study_statistics.h"
+#include "solver/study/study_store.h"
 #include "tests/study_test_support.h"
 
 namespace isopound {

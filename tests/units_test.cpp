@@ -1,6 +1,6 @@
 // Tests of parse_quantity / parse_quantity_as: SI values of the unit forms used in model files,
 // dimension checks, and rejection of unknown units, garbage and non-finite numbers.
-#include "solver/units.h"
+#include "solver/io/units.h"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,403 @@
+// Time-history analysis driver: walks the record interval by interval; inside an interval the
+// step is halved where the local error estimate says so (steps stay aligned with the samples).
+#include "solver/core/analysis.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "solver/core/constants.h"
+#include "solver/core/modes.h"
+#include "solver/core/newmark.h"
+
+namespace isopound {
+
+std::vector<Story> stories_of(const Model& model) {
+  std::vector<Story> stories;
+  for (const StructureInfo& s : model.structures) {
+    // Story k links the level below (or the ground) and level k + first_floor; a structure
+    // with no story heights (e.g. a moat-wall oscillator) has no stories.
+    const std::size_t first_floor = s.has_base ? 1 : 0;
+    for (std::size_t k = 0; k < s.story_heights.size(); ++k) {
+      const std::size_t level = k + first_floor;
+      Story story;
+      story.label = s.name + "/story " + std::to_string(k + 1);
+      story.upper = s.level_dofs[level];
+      story.lower = level == 0 ? -1 : s.level_dofs[level - 1];
+      story.height = s.story_heights[k];
+      stories.push_back(story);
+    }
+  }
+  return stories;
+}
+
+namespace {
+
+void update(Peak& peak, double value, double t) {
+  const double a = std::abs(value);
+  if (a > peak.value) {
+    peak.value = a;
+    peak.time = t;
+  }
+}
+
+// Ground acceleration at a fraction `frac` in [0, 1] of analysis interval `interval`.
+struct GroundSampler {
+  const GroundMotion& motion;
+  int per_sample;  // analysis intervals per record interval
+
+  double operator()(long interval, double frac_of_interval) const {
+    long k = interval / per_sample;
+    const long j = interval % per_sample;
+    double frac = (static_cast<double>(j) + frac_of_interval) / per_sample;
+    if (frac >= 1.0) {
+      ++k;
+      frac = 0.0;
+    }
+    const auto& a = motion.acceleration;
+    const long n = static_cast<long>(a.size());
+    const double a0 = k < n ? a[k] : 0.0;
+    const double a1 = k + 1 < n ? a[k + 1] : 0.0;
+    return a0 + frac * (a1 - a0);
+  }
+};
+
+std::string divergence_message(const Model& model, const NewmarkStepper& stepper, double t,
+                               double h, int iterations, int& dof) {
+  const Eigen::VectorXd& u = stepper.trial_u();
+  const Eigen::VectorXd& r = stepper.residual();
+  dof = 0;
+  bool nonfinite = false;
+  for (int i = 0; i < u.size(); ++i) {
+    if (!std::isfinite(u[i]) || !std::isfinite(r[i])) {
+      dof = i;
+      nonfinite = true;
+      break;
+    }
+  }
+  if (!nonfinite) r.cwiseAbs().maxCoeff(&dof);
+  std::ostringstream msg;
+  msg << "analysis diverged at t = " << t << " s, DOF '" << model.dofs[dof].label << "': ";
+  if (nonfinite)
+    msg << "displacement or force became NaN/inf";
+  else
+    msg << "Newton did not converge in " << iterations << " iterations at step " << h
+        << " s (residual " << std::abs(r[dof]) << " N, displacement " << u[dof] << " m)";
+  msg << ". Hint: check units of masses and stiffnesses, the isolator parameters (Tb, QW, uy), "
+         "or allow more halvings (analysis.max_halvings) / iterations.";
+  return msg.str();
+}
+
+}  // namespace
+
+double shortest_period(Model& model) {
+  const int n = model.size();
+  Eigen::MatrixXd k = model.stiffness;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  for (auto& e : model.elements) {
+    e->set_trial(zero, zero);
+    e->add_tangent(k, 0.0);
+    e->revert();
+  }
+  try {
+    return compute_modes(k, model.mass, model.influence).period.minCoeff();
+  } catch (const std::invalid_argument&) {
+    return 0.0;  // a mechanism at rest (e.g. only contacts hold a DOF): no period rule
+  }
+}
+
+AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const AnalysisConfig& cfg = options.analysis;
+  const int n = model.size();
+  const int n_elements = static_cast<int>(model.elements.size());
+  if (motion.acceleration.size() < 2 || !(motion.dt > 0))
+    throw std::invalid_argument("ground motion '" + motion.name + "' has fewer than 2 samples");
+
+  AnalysisResult res;
+  res.stories = stories_of(model);
+  res.displacement.resize(n);
+  res.velocity.resize(n);
+  res.absolute_acceleration.resize(n);
+  res.drift.resize(res.stories.size());
+  res.drift_ratio.resize(res.stories.size());
+  res.element_outputs.resize(n_elements);
+  for (int e = 0; e < n_elements; ++e)
+    res.element_outputs[e].resize(model.elements[e]->output_count());
+
+  NewmarkStepper stepper(model, {cfg.newton_tolerance, cfg.max_iterations});
+
+  // Analysis interval H divides the record interval so that H <= the largest step.
+  const bool adaptive = cfg.stepping == AnalysisConfig::Stepping::kAdaptive;
+  double max_step = cfg.dt;
+  if (adaptive && max_step <= 0 && cfg.steps_per_period > 0)
+    max_step = shortest_period(model) / cfg.steps_per_period;
+  int per_sample = 1;
+  if (max_step > 0)
+    per_sample = std::max(1, static_cast<int>(std::ceil(motion.dt / max_step - 1e-9)));
+  const double H = motion.dt / per_sample;
+  const double total = motion.duration() + options.extra_time;
+  const long intervals = static_cast<long>(std::ceil(total / H - 1e-9));
+  const int max_level = cfg.max_halvings;
+  const GroundSampler ground{motion, per_sample};
+
+  // Error scale per DOF: the weight of the DOF's mass times the tolerance (see newmark.h).
+  Eigen::VectorXd force_scale(n);
+  for (int i = 0; i < n; ++i)
+    force_scale[i] = cfg.tolerance * kGravity * std::max(model.mass(i, i), 1e-12);
+
+  // History layout.
+  const double out_interval = options.output.interval > 0 ? options.output.interval : motion.dt;
+  if (options.output.histories) {
+    auto& c = res.history.columns;
+    c = {"time [s]", "ground_acceleration [m/s2]"};
+    for (const Dof& d : model.dofs) c.push_back(d.label + " u [m]");
+    for (const Dof& d : model.dofs) c.push_back(d.label + " v [m/s]");
+    for (const Dof& d : model.dofs) c.push_back(d.label + " a_abs [m/s2]");
+    for (const auto& e : model.elements)
+      for (int k = 0; k < e->output_count(); ++k)
+        c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");
+    // Rows at most every output interval (and at most one per step); reserve a bounded guess.
+    const double rows = std::min(total / out_interval + 2.0, 2e6);
+    res.history.values.reserve(c.size() * static_cast<std::size_t>(rows));
+  }
+  double next_output = 0.0;
+
+  // Element outputs of the current step, element e at output_offset[e].
+  std::vector<int> output_offset(n_elements), output_count(n_elements);
+  int outputs_total = 0;
+  for (int e = 0; e < n_elements; ++e) {
+    output_offset[e] = outputs_total;
+    output_count[e] = model.elements[e]->output_count();
+    outputs_total += output_count[e];
+  }
+  std::vector<double> output_scratch(outputs_total);
+
+  // Energy terms (trapezoidal rule on the powers).
+  Eigen::VectorXd work(n);
+  const Eigen::VectorXd m_iota = model.mass * model.influence;
+  double p_in_prev = 0.0, p_visc_prev = 0.0, p_elem_prev = 0.0;
+  double e_in = 0.0, e_visc = 0.0, w_elem = 0.0, max_in = 0.0, max_err = 0.0;
+  double initial_energy = -1.0;  // kinetic + recoverable energy of the initial conditions
+  double stored_at_start = 0.0;  // element work is counted from 0, their energy from here
+
+  auto record = [&](double t, double ag, double h) {
+    const Eigen::VectorXd& u = stepper.u();
+    const Eigen::VectorXd& v = stepper.v();
+    const Eigen::VectorXd& a = stepper.a();
+    for (int i = 0; i < n; ++i) {
+      update(res.displacement[i], u[i], t);
+      update(res.velocity[i], v[i], t);
+      update(res.absolute_acceleration[i], a[i] + model.influence[i] * ag, t);
+    }
+    for (std::size_t s = 0; s < res.stories.size(); ++s) {
+      const Story& st = res.stories[s];
+      const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
+      update(res.drift[s], drift, t);
+      update(res.drift_ratio[s], drift / st.height, t);
+    }
+    for (int e = 0; e < n_elements; ++e) {
+      double* values = output_scratch.data() + output_offset[e];
+      model.elements[e]->outputs(values);
+      for (int k = 0; k < output_count[e]; ++k) update(res.element_outputs[e][k], values[k], t);
+    }
+
+    // Energy.
+    const double p_in = -v.dot(m_iota) * ag;
+    work.noalias() = model.damping * v;
+    const double p_visc = v.dot(work);
+    double p_elem = 0.0, stored = 0.0;
+    for (const auto& el : model.elements) {
+      p_elem += el->power(v);
+      stored += el->stored_energy();
+    }
+    e_in += 0.5 * h * (p_in_prev + p_in);
+    e_visc += 0.5 * h * (p_visc_prev + p_visc);
+    w_elem += 0.5 * h * (p_elem_prev + p_elem);
+    p_in_prev = p_in;
+    p_visc_prev = p_visc;
+    p_elem_prev = p_elem;
+    work.noalias() = model.mass * v;
+    const double kinetic = 0.5 * v.dot(work);
+    work.noalias() = model.stiffness * u;
+    const double strain = 0.5 * u.dot(work);
+    EnergyBalance& en = res.energy;
+    en.input = e_in;
+    en.kinetic = kinetic;
+    en.elastic = strain + stored;
+    en.viscous = e_visc;
+    en.hysteretic = w_elem - stored;
+    if (initial_energy < 0) {
+      initial_energy = kinetic + strain + stored;
+      stored_at_start = stored;
+    }
+    en.error = e_in + initial_energy - (kinetic + strain + e_visc + w_elem) - stored_at_start;
+    max_in = std::max(max_in, std::abs(e_in) + initial_energy);
+    max_err = std::max(max_err, std::abs(en.error));
+
+    if (options.output.histories && t >= next_output - 1e-9 * out_interval) {
+      auto& vals = res.history.values;
+      vals.push_back(t);
+      vals.push_back(ag);
+      for (int i = 0; i < n; ++i) vals.push_back(u[i]);
+      for (int i = 0; i < n; ++i) vals.push_back(v[i]);
+      for (int i = 0; i < n; ++i) vals.push_back(a[i] + model.influence[i] * ag);
+      vals.insert(vals.end(), output_scratch.begin(), output_scratch.end());
+      next_output += out_interval;
+      while (next_output <= t + 1e-9 * out_interval) next_output += out_interval;
+    }
+  };
+
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  const auto initial = [&](const Eigen::VectorXd& x, const char* what) -> const Eigen::VectorXd& {
+    if (x.size() == 0) return zero;
+    if (x.size() != n)
+      throw std::invalid_argument(std::string("initial ") + what + " has " +
+                                  std::to_string(x.size()) + " entries for " + std::to_string(n) +
+                                  " DOFs");
+    return x;
+  };
+  stepper.start(initial(options.initial_displacement, "displacement"),
+                initial(options.initial_velocity, "velocity"), ground(0, 0.0));
+  record(0.0, ground(0, 0.0), 0.0);
+
+  // Pseudocode of the stepping inside analysis interval i (position pos in [0, 1]):
+  //   h = H / 2^level, clipped to the interval end; try the step
+  //   not converged or local error > 1  -> halve (level + 1) and retry
+  //   an element reports an event at fraction theta of the step -> retry with theta h
+  //     (uncached K_hat), so that contact onset/separation falls on a step end
+  //   accept; refine while h exceeds an element's step limit; coarsen when the error is small
+  RunStatistics& st = res.stats;
+  st.min_step = H;
+  int level = 0;
+  int settles_here = 0;
+  const double min_fraction = std::ldexp(1.0, -max_level);
+  const auto level_step = [&](int l) { return H * std::ldexp(1.0, -l); };
+  // Raises the level until the step respects every element's limit; returns the limit.
+  const auto refine_to_limit = [&]() {
+    double limit = 1e300;
+    for (const auto& e : model.elements) limit = std::min(limit, e->step_limit());
+    if (adaptive)
+      while (level < max_level && level_step(level) > limit) ++level;
+    return limit;
+  };
+  std::vector<double> event_theta(model.elements.size(), 1.0);
+  std::vector<char> settling(model.elements.size(), 0);
+  // The settling elements switch status at the committed state; if a force jumped, the stepper
+  // restarts from equilibrium (ground acceleration ag) and so does the power integrand.
+  const auto settle_events = [&](double ag) {
+    bool jumped = false;
+    for (std::size_t k = 0; k < model.elements.size(); ++k)
+      if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
+    if (!jumped) return;
+    stepper.restart(ag);
+    ++st.restarts;
+    p_elem_prev = 0.0;
+    for (const auto& el : model.elements) p_elem_prev += el->power(stepper.v());
+  };
+  for (long i = 0; i < intervals; ++i) {
+    double pos = 0.0;
+    double forced = 0.0;  // > 0: the fraction of H of a step cut at an event
+    while (pos < 1.0) {
+      double frac = forced > 0 ? forced : std::ldexp(1.0, -level);
+      bool regular = forced == 0.0;
+      if (pos + frac > 1.0 - 1e-12 * frac) {
+        regular = regular && pos + frac == 1.0;
+        frac = 1.0 - pos;
+      }
+      const double h = frac * H;
+      const double ag1 = ground(i, pos + frac);
+      const bool at_event = forced > 0;
+      const StepOutcome out = stepper.try_step(h, ag1, regular, at_event);
+      st.newton_iterations += out.iterations;
+      const double err = adaptive && out.converged ? stepper.error_norm(force_scale) : 0.0;
+      if (!out.converged || err > 1.0) {
+        // Error-based halving only when adaptive; a Newton failure (e.g. a contact switching
+        // inside the step) is retried with half the step in fixed stepping too.
+        const bool can_halve = frac > min_fraction * (1 + 1e-9);
+        if (can_halve && (adaptive || !out.converged)) {
+          stepper.reject();
+          if (forced > 0)
+            forced *= 0.5;
+          else
+            ++level;
+          level = std::min(level, max_level);
+          ++st.rejected_steps;
+          continue;
+        }
+        if (!out.converged) {
+          int dof = 0;
+          const double t = (static_cast<double>(i) + pos) * H;
+          const std::string msg = divergence_message(model, stepper, t, h, out.iterations, dof);
+          throw AnalysisError(t, model.dofs[dof].label, msg);
+        }
+      }
+      if (cfg.locate_events && !at_event) {
+        // Status changes of contacts (onset, separation) are made to fall on a step boundary,
+        // where the element switches and the stepper restarts from equilibrium:
+        //   event at the start (theta ~ 0): switch now, redo the step;
+        //   inside: redo the step cut to end there (status frozen), then switch;
+        //   at the end (theta ~ 1): redo the same step with the status frozen, then switch.
+        double theta = 1.0;
+        for (std::size_t k = 0; k < model.elements.size(); ++k) {
+          event_theta[k] = model.elements[k]->event_fraction();
+          theta = std::min(theta, event_theta[k]);
+        }
+        if (theta < 1.0) {
+          stepper.reject();
+          ++st.rejected_steps;
+          const double tol = 1e-4;
+          for (std::size_t k = 0; k < model.elements.size(); ++k)
+            settling[k] =
+                event_theta[k] <= std::max(theta * (1.0 + 1e-12), theta < tol ? tol : 0.0);
+          if (theta < tol) {
+            settle_events(ground(i, pos));
+            refine_to_limit();  // a contact that just started wants its own step from the start
+            if (++settles_here > 4)
+              throw AnalysisError((static_cast<double>(i) + pos) * H, "",
+                                  "event loop: contact status does not settle");
+            continue;
+          }
+          forced = std::min(theta, 1.0) * frac;
+          continue;
+        }
+      }
+      settles_here = 0;
+      stepper.accept();
+      forced = 0.0;
+      pos = pos + frac >= 1.0 - 1e-12 ? 1.0 : pos + frac;
+      ++st.steps;
+      st.min_step = std::min(st.min_step, h);
+      st.max_step = std::max(st.max_step, h);
+      const double t = (static_cast<double>(i) + pos) * H;
+      if (stepper.u().cwiseAbs().maxCoeff() > 1e3) {
+        int dof = 0;
+        stepper.u().cwiseAbs().maxCoeff(&dof);
+        throw AnalysisError(t, model.dofs[dof].label,
+                            "analysis diverged at t = " + std::to_string(t) + " s, DOF '" +
+                                model.dofs[dof].label +
+                                "': displacement exceeds 1000 m. Hint: check the units of "
+                                "stiffnesses and masses, and the record's unit and scale.");
+      }
+      record(t, ag1, h);                 // the step just taken, with the forces before any switch
+      if (at_event) settle_events(ag1);  // the step ended at an event: switch status there
+      if (adaptive) {
+        const double limit = refine_to_limit();  // also gives a new contact its own step
+        if (level > 0 && err < 0.1 && level_step(level - 1) <= limit) --level;
+      } else {
+        level = 0;  // fixed stepping: back to the fixed step after a Newton-failure halving
+      }
+    }
+  }
+
+  EnergyBalance& en = res.energy;
+  const double supplied = std::abs(en.input) + std::max(initial_energy, 0.0);
+  en.relative_error = supplied > 0 ? std::abs(en.error) / supplied : 0.0;
+  en.max_relative_error = max_in > 0 ? max_err / max_in : 0.0;
+  st.duration = static_cast<double>(intervals) * H;
+  st.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return res;
+}
+
+}  // namespace isopound

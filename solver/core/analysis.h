@@ -1,0 +1,102 @@
+// One nonlinear time-history analysis of a Model under a ground motion: adaptive Newmark
+// stepping aligned with the record samples, peaks, energy balance and histories.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "solver/core/model.h"
+#include "solver/excitation/ground_motion.h"
+#include "solver/structures/config.h"
+
+namespace isopound {
+
+// A diverging analysis: where and when it stopped, and a hint.
+class AnalysisError : public std::runtime_error {
+ public:
+  AnalysisError(double time, std::string dof, const std::string& what)
+      : std::runtime_error(what), time_(time), dof_(std::move(dof)) {}
+  double time() const { return time_; }
+  const std::string& dof() const { return dof_; }
+
+ private:
+  double time_;
+  std::string dof_;
+};
+
+struct Peak {
+  double value = 0.0;  // max |x| over time
+  double time = 0.0;   // s, when it occurred
+};
+
+// A story: deformation u[upper] - u[lower] (lower = -1: the ground).
+struct Story {
+  std::string label;
+  int lower = -1;
+  int upper = 0;
+  double height = 0.0;
+};
+
+struct EnergyBalance {
+  // Each term integrated with the trapezoidal rule in time from its power (see THEORY-notes).
+  double input = 0.0;               // -int v^T M iota a_g dt
+  double kinetic = 0.0;             // v^T M v / 2
+  double elastic = 0.0;             // u^T K u / 2 + recoverable energy of the elements
+  double viscous = 0.0;             // int v^T C v dt
+  double hysteretic = 0.0;          // element work minus their recoverable energy
+  double error = 0.0;               // input - (kinetic + elastic + viscous + hysteretic) at the end
+  double relative_error = 0.0;      // |error| / input at the end
+  double max_relative_error = 0.0;  // max_t |error(t)| / max_t input(t)
+};
+
+struct RunStatistics {
+  long steps = 0;           // accepted steps
+  long rejected_steps = 0;  // steps redone with half the size
+  long newton_iterations = 0;
+  long restarts = 0;  // restarts from equilibrium after a force jump at an event
+  double min_step = 0.0, max_step = 0.0;  // s
+  double wall_seconds = 0.0;
+  double duration = 0.0;  // s of analysed time
+};
+
+struct History {
+  std::vector<std::string> columns;  // "time", ..., with units in brackets
+  std::vector<double> values;        // row-major, columns.size() per row
+  std::size_t rows() const { return columns.empty() ? 0 : values.size() / columns.size(); }
+};
+
+struct AnalysisResult {
+  std::vector<Story> stories;
+  std::vector<Peak> displacement;                  // per DOF, relative to the ground, m
+  std::vector<Peak> velocity;                      // per DOF, relative, m/s
+  std::vector<Peak> absolute_acceleration;         // per DOF, m/s^2
+  std::vector<Peak> drift;                         // per story, m
+  std::vector<Peak> drift_ratio;                   // per story
+  std::vector<std::vector<Peak>> element_outputs;  // per element, per output
+  EnergyBalance energy;
+  RunStatistics stats;
+  History history;
+};
+
+struct RunOptions {
+  AnalysisConfig analysis;
+  OutputConfig output;
+  double extra_time = 0.0;  // s of free vibration after the record
+  // Initial displacements and velocities (relative to the ground); empty = at rest.
+  Eigen::VectorXd initial_displacement;
+  Eigen::VectorXd initial_velocity;
+};
+
+// Stories of every structure in the model, in order.
+std::vector<Story> stories_of(const Model& model);
+
+// Shortest undamped period of the model linearised at rest (element tangents at zero), s;
+// 0 if the model is a mechanism at rest.
+double shortest_period(Model& model);
+
+// Runs the analysis (from rest unless initial conditions are given). Throws AnalysisError if it
+// diverges.
+AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunOptions& options);
+
+}  // namespace isopound

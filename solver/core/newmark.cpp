@@ -1,0 +1,151 @@
+// Newmark average-acceleration stepper with Newton-Raphson: effective linear matrix cached per
+// step size, element tangents added each iteration, Cholesky (LDL^T fallback) solve.
+#include "solver/core/newmark.h"
+
+#include <cmath>
+#include <limits>
+
+#include "solver/core/constants.h"
+
+namespace isopound {
+
+NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
+    : model_(model), settings_(settings) {
+  const int n = model.size();
+  for (Eigen::VectorXd* x :
+       {&u0_, &v0_, &a0_, &u1_, &v1_, &a1_, &p_hat_, &r_, &du_, &work_, &delta_})
+    x->setZero(n);
+  m_iota_ = model.mass * model.influence;
+  force_ref_ = m_iota_.cwiseAbs().maxCoeff() * kGravity;
+  k_tangent_.setZero(n, n);
+  k_hat_scratch_.setZero(n, n);
+  mass_llt_.compute(model.mass);
+  llt_ = Eigen::LLT<Eigen::MatrixXd>(n);
+  ldlt_ = Eigen::LDLT<Eigen::MatrixXd>(n);
+}
+
+void NewmarkStepper::start(double ag0) {
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model_.size());
+  start(zero, zero, ag0);
+}
+
+void NewmarkStepper::start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0, double ag0) {
+  u0_ = u0;
+  v0_ = v0;
+  restart(ag0);
+}
+
+void NewmarkStepper::restart(double ag0) {
+  u1_ = u0_;
+  v1_ = v0_;
+  delta_.setZero();
+  for (auto& e : model_.elements) {
+    e->begin_step(0.0, true);  // zero length: no work, status kept
+    e->set_trial(u0_, v0_);
+  }
+  // M a0 = -M iota ag0 - C v0 - K u0 - f_nl(u0, v0)
+  work_ = -m_iota_ * ag0;
+  work_.noalias() -= model_.damping * v0_;
+  work_.noalias() -= model_.stiffness * u0_;
+  for (auto& e : model_.elements) {
+    r_.setZero();
+    e->add_force(r_);
+    work_ -= r_;
+  }
+  a0_ = mass_llt_.solve(work_);
+  a1_ = a0_;
+  for (auto& e : model_.elements) e->commit();
+}
+
+const Eigen::MatrixXd& NewmarkStepper::effective_linear(double h, bool cache) {
+  for (const auto& [step, matrix] : k_hat_cache_)
+    if (step == h) return matrix;
+  if (!cache) {
+    k_hat_scratch_ = model_.stiffness;
+    k_hat_scratch_ += (2.0 / h) * model_.damping;
+    k_hat_scratch_ += (4.0 / (h * h)) * model_.mass;
+    return k_hat_scratch_;
+  }
+  k_hat_cache_.emplace_back(
+      h, model_.stiffness + (2.0 / h) * model_.damping + (4.0 / (h * h)) * model_.mass);
+  return k_hat_cache_.back().second;
+}
+
+StepOutcome NewmarkStepper::try_step(double h, double ag1, bool cache, bool freeze) {
+  h_ = h;
+  const Eigen::MatrixXd& k_hat = effective_linear(h, cache);
+  for (auto& e : model_.elements) e->begin_step(h, freeze);
+  const double c1 = 4.0 / (h * h), c2 = 4.0 / h;
+  // Incremental form: the unknown is du = u1 - u0, so that a1 = 4/h^2 du - 4/h v0 - a0 carries
+  // round-off relative to du, not to u0 (which would swamp the accelerations of short steps).
+  //   R(du) = K_hat du + r0 + f_nl(u0 + du, v1),
+  //   r0 = K u0 - M (4/h v0 + a0) - C v0 + M iota ag1.
+  work_ = c2 * v0_ + a0_;
+  p_hat_.noalias() = model_.stiffness * u0_;
+  p_hat_.noalias() -= model_.mass * work_;
+  p_hat_.noalias() -= model_.damping * v0_;
+  p_hat_ += m_iota_ * ag1;
+  const double tol_r =
+      settings_.tolerance * force_ref_ +
+      64.0 * std::numeric_limits<double>::epsilon() *
+          (p_hat_.cwiseAbs().maxCoeff() + c2 * (model_.mass * v0_).cwiseAbs().maxCoeff());
+
+  delta_ = h * v0_ + (0.5 * h * h) * a0_;  // constant-acceleration predictor
+  StepOutcome out;
+  double last_correction = std::numeric_limits<double>::infinity();
+  for (int it = 0; it <= settings_.max_iterations; ++it) {
+    u1_ = u0_ + delta_;
+    v1_ = (2.0 / h) * delta_ - v0_;
+    for (auto& e : model_.elements) e->set_trial(u1_, v1_);
+    r_.noalias() = k_hat * delta_;
+    r_ += p_hat_;
+    for (const auto& e : model_.elements) e->add_force(r_);
+    const double r_norm = r_.cwiseAbs().maxCoeff();
+    if (!std::isfinite(r_norm)) break;
+    out.iterations = it;
+    if (r_norm <= tol_r || last_correction <= 1e-15 * (1.0 + delta_.cwiseAbs().maxCoeff())) {
+      out.converged = true;
+      break;
+    }
+    if (it == settings_.max_iterations) break;
+    k_tangent_ = k_hat;
+    for (const auto& e : model_.elements) e->add_tangent(k_tangent_, 2.0 / h);
+    llt_.compute(k_tangent_);
+    if (llt_.info() == Eigen::Success) {
+      du_ = llt_.solve(r_);
+    } else {
+      ldlt_.compute(k_tangent_);
+      du_ = ldlt_.solve(r_);
+    }
+    delta_ -= du_;
+    last_correction = du_.cwiseAbs().maxCoeff();
+  }
+  a1_ = c1 * delta_ - c2 * v0_ - a0_;
+  return out;
+}
+
+double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
+  // e = h^2/12 (a1 - a0); force error K_s e with K_s = K + element stiffness tangents.
+  work_ = (h_ * h_ / 12.0) * (a1_ - a0_);
+  k_tangent_ = model_.stiffness;
+  for (const auto& e : model_.elements) e->add_tangent(k_tangent_, 0.0);
+  du_.noalias() = k_tangent_ * work_;
+  return du_.cwiseAbs().cwiseQuotient(force_scale).maxCoeff();
+}
+
+void NewmarkStepper::accept() {
+  for (auto& e : model_.elements) e->commit();
+  u0_ = u1_;
+  v0_ = v1_;
+  a0_ = a1_;
+}
+
+void NewmarkStepper::reject() {
+  for (auto& e : model_.elements) e->revert();
+  delta_.setZero();
+  u1_ = u0_;
+  v1_ = v0_;
+  a1_ = a0_;
+}
+
+}  // namespace isopound

@@ -1,0 +1,77 @@
+// Newmark average-acceleration stepper (gamma = 1/2, beta = 1/4) with Newton-Raphson on the
+// nonlinear elements. Sees only M, C, K, the influence vector and Element residual/tangent/commit.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "solver/core/model.h"
+
+namespace isopound {
+
+struct NewtonSettings {
+  // Converged when |R|_inf <= tolerance * F_ref + round-off allowance, F_ref = heaviest
+  // level's weight (max_i (M iota)_i g), or when the correction |du|_inf <= 1e-14 m.
+  double tolerance = 1e-9;
+  int max_iterations = 25;
+};
+
+struct StepOutcome {
+  bool converged = false;
+  int iterations = 0;
+};
+
+// One step from the committed state (u0, v0, a0) at t to the trial state at t + h:
+//   u1 = u0 + h v0 + h^2/4 (a0 + a1),  v1 = v0 + h/2 (a0 + a1),
+//   M a1 + C v1 + K u1 + f_nl(u1, v1) = -M iota ag1.
+// Solved for du = u1 - u0 with K_hat = K + (2/h) C + (4/h^2) M + df_nl/du + (2/h) df_nl/dv.
+// Nothing is allocated per step once each distinct h has been seen (K_hat is cached per h).
+class NewmarkStepper {
+ public:
+  NewmarkStepper(Model& model, const NewtonSettings& settings);
+
+  // Committed state at rest; a0 from equilibrium with ground acceleration ag0.
+  void start(double ag0);
+  // Committed state (u0, v0); a0 from the equation of motion with ground acceleration ag0.
+  void start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0, double ag0);
+  // `cache`: keep K_hat for this h (the regular steps); false for one-off steps cut at an event.
+  // `freeze`: elements keep their contact status through the trial (a step cut at an event).
+  StepOutcome try_step(double h, double ag1, bool cache = true, bool freeze = false);
+  // After elements changed status at an event (settle_event): a0 from equilibrium at the
+  // committed (u, v) with ground acceleration ag, elements re-evaluated and committed.
+  void restart(double ag);
+  void accept();  // trial becomes committed (elements commit)
+  void reject();  // elements revert; committed state unchanged
+
+  // Local truncation error of the last trial step: e = h^2/12 (a1 - a0) (Zienkiewicz-Xie),
+  // measured as max_i |(K_s e)_i| / force_scale_i with K_s the stiffness tangent.
+  double error_norm(const Eigen::VectorXd& force_scale);
+
+  const Eigen::VectorXd& u() const { return u0_; }
+  const Eigen::VectorXd& v() const { return v0_; }
+  const Eigen::VectorXd& a() const { return a0_; }
+  const Eigen::VectorXd& trial_u() const { return u1_; }
+  const Eigen::VectorXd& trial_v() const { return v1_; }
+  const Eigen::VectorXd& trial_a() const { return a1_; }
+  const Eigen::VectorXd& residual() const { return r_; }
+  double last_step() const { return h_; }
+
+ private:
+  const Eigen::MatrixXd& effective_linear(double h, bool cache);
+
+  Model& model_;
+  NewtonSettings settings_;
+  double force_ref_;
+  Eigen::VectorXd u0_, v0_, a0_, u1_, v1_, a1_;
+  Eigen::VectorXd p_hat_, r_, du_, work_, m_iota_;
+  Eigen::VectorXd delta_;  // u1 - u0 of the trial
+  Eigen::MatrixXd k_tangent_;
+  Eigen::MatrixXd k_hat_scratch_;  // K_hat of an uncached step
+  Eigen::LLT<Eigen::MatrixXd> llt_;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+  Eigen::LLT<Eigen::MatrixXd> mass_llt_;
+  std::vector<std::pair<double, Eigen::MatrixXd>> k_hat_cache_;
+  double h_ = 0.0;
+};
+
+}  // namespace isopound

@@ -1,0 +1,302 @@
+// 2D contact element: contact status with trial/commit, onset velocity and event fractions by
+// cubic Hermite interpolation of the penetration over the step, no-tension clamp with indentation.
+#include "solver/elements/contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace isopound {
+
+namespace {
+constexpr double kIgnoredEventFraction = 1e-4;  // events this close to the step start are "at" it
+}  // namespace
+
+Contact1D::Contact1D(std::string label, ContactBody a, ContactBody b, double gap,
+                     std::unique_ptr<ImpactLaw> law, double effective_mass,
+                     double steps_per_contact)
+    : label_(std::move(label)),
+      a_(a),
+      b_(b),
+      gap_(gap),
+      law_(std::move(law)),
+      m_eff_(effective_mass),
+      steps_per_contact_(steps_per_contact) {
+  committed_.delta = -gap;
+  trial_ = committed_;
+}
+
+double Contact1D::kinematics(const Eigen::VectorXd& x) const {
+  double s = 0.0;
+  if (a_.dof >= 0) s += a_.coefficient * x[a_.dof];
+  if (b_.dof >= 0) s += b_.coefficient * x[b_.dof];
+  return s;
+}
+
+// Pseudocode: p(theta) is the cubic Hermite interpolant of delta over the step (values d0, d1,
+// slopes h r0, h r1). Find theta in [0, 1] with p = 0 by Newton safeguarded with bisection,
+// starting from the linear estimate; 0 if there is no sign change.
+double Contact1D::crossing_fraction(double d0, double r0, double d1, double r1) const {
+  if ((d0 > 0) == (d1 > 0)) return 0.0;
+  const double s0 = h_ * r0, s1 = h_ * r1;
+  const auto p = [&](double t) {
+    const double t2 = t * t, t3 = t2 * t;
+    return (2 * t3 - 3 * t2 + 1) * d0 + (t3 - 2 * t2 + t) * s0 + (-2 * t3 + 3 * t2) * d1 +
+           (t3 - t2) * s1;
+  };
+  const auto dp = [&](double t) {
+    const double t2 = t * t;
+    return (6 * t2 - 6 * t) * d0 + (3 * t2 - 4 * t + 1) * s0 + (-6 * t2 + 6 * t) * d1 +
+           (3 * t2 - 2 * t) * s1;
+  };
+  double lo = 0.0, hi = 1.0;  // p(lo) has the sign of d0
+  double t = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
+  for (int it = 0; it < 50; ++it) {
+    const double value = p(t);
+    if ((value > 0) == (d0 > 0))
+      lo = t;
+    else
+      hi = t;
+    const double slope = dp(t);
+    double next = slope != 0.0 ? t - value / slope : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - t) < 1e-14) return next;
+    t = next;
+  }
+  return t;
+}
+
+void Contact1D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+  State& T = trial_;
+  const State& C = committed_;
+  T.delta = kinematics(u) - gap_ - indentation_;
+  T.rate = kinematics(v);
+  T.in_contact = C.in_contact;
+  T.phase = C.phase;
+  T.started = T.ended = false;
+  T.onset_fraction = 1.0;
+  T.end_indentation = 0.0;
+
+  if (freeze_) {
+    // A step cut to end at an event: the status changes only in settle_event().
+  } else if (!C.in_contact && T.delta > 0) {
+    // Onset inside this step: the approach rate at delta = 0 is the impact velocity.
+    const double theta = crossing_fraction(C.delta, C.rate, T.delta, T.rate);
+    const double t2 = theta * theta;
+    const double rate_at_onset =
+        C.delta > 0 ? C.rate
+                    : ((6 * t2 - 6 * theta) * C.delta + (3 * t2 - 4 * theta + 1) * h_ * C.rate +
+                       (-6 * t2 + 6 * theta) * T.delta + (3 * t2 - 2 * theta) * h_ * T.rate) /
+                          h_;
+    law_->begin_contact(std::max(rate_at_onset, 0.0), T.phase);
+    T.in_contact = true;
+    T.started = true;
+    T.onset_fraction = theta;
+  } else if (C.in_contact && T.delta <= 0) {
+    T.in_contact = false;
+    T.ended = true;
+  }
+
+  T.force = T.raw_force = T.stiffness = T.damping = 0.0;
+  double stored = 0.0;
+  if (T.in_contact) {
+    // A frozen contact may end its step a hair outside (delta = -1e-15): take the limit at 0.
+    const ImpactResponse r = law_->respond(std::max(T.delta, 0.0), T.rate, T.phase);
+    T.raw_force = r.force;
+    if (r.force < 0 && !law_->tension_allowed() && freeze_) {
+      T.force = T.stiffness = T.damping = 0.0;  // clamped; the contact ends at settle_event()
+    } else if (r.force < 0 && !law_->tension_allowed()) {
+      // No tension: the contact ends here, leaving the penetration as permanent indentation.
+      T.in_contact = false;
+      T.ended = true;
+      T.end_indentation = T.delta;
+    } else {
+      T.force = r.force;
+      T.stiffness = r.stiffness;
+      T.damping = r.damping;
+      // Recoverable energy of the elastic part F_e(delta) = F(delta, 0): exact for a power law
+      // F_e = K delta^n, whose integral is F_e delta / (n + 1) with n = delta F_e' / F_e.
+      const ImpactResponse elastic = law_->respond(std::max(T.delta, 0.0), 0.0, T.phase);
+      const double denominator = elastic.force + T.delta * elastic.stiffness;
+      if (elastic.force > 0 && denominator > 0)
+        stored = elastic.force * elastic.force * T.delta / denominator;
+    }
+  }
+  trial_stored_ = stored;
+  trial_work_ = work_ + 0.5 * h_ * (C.force * C.rate + T.force * T.rate);
+}
+
+void Contact1D::add_force(Eigen::VectorXd& f) const {
+  if (trial_.force == 0.0) return;
+  if (a_.dof >= 0) f[a_.dof] += a_.coefficient * trial_.force;
+  if (b_.dof >= 0) f[b_.dof] += b_.coefficient * trial_.force;
+}
+
+void Contact1D::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
+  const double k = trial_.stiffness + velocity_factor * trial_.damping;
+  if (k == 0.0) return;
+  const ContactBody bodies[2] = {a_, b_};
+  for (const ContactBody& p : bodies) {
+    if (p.dof < 0) continue;
+    for (const ContactBody& q : bodies)
+      if (q.dof >= 0) K(p.dof, q.dof) += p.coefficient * q.coefficient * k;
+  }
+}
+
+double Contact1D::power(const Eigen::VectorXd& v) const {
+  return trial_.force * kinematics(v);
+}
+
+double Contact1D::stored_energy() const {
+  return trial_stored_;
+}
+
+void Contact1D::commit() {
+  if (trial_.started) {
+    contact_step_ =
+        contact_period_estimate(trial_.phase.impact_velocity, trial_.phase) / steps_per_contact_;
+    ++impacts_;
+    max_impact_velocity_ = std::max(max_impact_velocity_, trial_.phase.impact_velocity);
+  }
+  if (trial_.in_contact) max_penetration_ = std::max(max_penetration_, trial_.delta);
+  if (trial_.ended && trial_.end_indentation > 0) {
+    indentation_ += trial_.end_indentation;
+    trial_.delta -= trial_.end_indentation;
+  }
+  work_ = trial_work_;
+  stored_ = trial_stored_;
+  committed_ = trial_;
+  steps_in_contact_ = trial_.started ? 0 : steps_in_contact_ + 1;
+}
+
+void Contact1D::revert() {
+  trial_ = committed_;
+  trial_stored_ = stored_;
+  trial_work_ = work_;
+}
+
+double Contact1D::event_fraction() {
+  const State& C = committed_;
+  const State& T = trial_;
+  double theta = 1.0;
+  pending_ = Event::kNone;
+  // Status changes are reported wherever they fall in [0, 1) (the driver settles one at the
+  // step start at once, one at the end after a frozen redo); the approach/restitution switch,
+  // where the force is continuous, only when it is inside the step.
+  const auto consider = [&](double f, Event kind) {
+    const bool inside = f > kIgnoredEventFraction && f < 1.0 - kIgnoredEventFraction;
+    if ((kind != Event::kPhase || inside) && f < theta) {
+      theta = std::max(f, 0.0);
+      pending_ = kind;
+    }
+  };
+  if (T.started) consider(std::min(T.onset_fraction, 1.0 - 1e-15), Event::kOnset);
+  if (C.in_contact && T.ended) {
+    const double f = T.end_indentation > 0  // no-tension law: its force reached 0
+                         ? C.raw_force / (C.raw_force - T.raw_force)
+                         : crossing_fraction(C.delta, C.rate, T.delta, T.rate);
+    consider(std::min(f, 1.0 - 1e-15),
+             T.end_indentation > 0 ? Event::kNoTension : Event::kSeparation);
+  }
+  if (C.in_contact && T.in_contact && C.rate > 0 && T.rate <= 0)  // approach -> restitution
+    consider(C.rate / (C.rate - T.rate), Event::kPhase);
+  return theta;
+}
+
+bool Contact1D::settle_event() {
+  State& C = committed_;
+  const Event event = pending_;
+  pending_ = Event::kNone;
+  switch (event) {
+    case Event::kOnset:
+      if (C.in_contact) return false;
+      law_->begin_contact(std::max(C.rate, 0.0), C.phase);
+      contact_step_ =
+          contact_period_estimate(C.phase.impact_velocity, C.phase) / steps_per_contact_;
+      steps_in_contact_ = 0;
+      C.in_contact = true;
+      ++impacts_;
+      max_impact_velocity_ = std::max(max_impact_velocity_, C.phase.impact_velocity);
+      break;
+    case Event::kSeparation:
+      if (!C.in_contact) return false;
+      C.in_contact = false;
+      break;
+    case Event::kNoTension: {
+      if (!C.in_contact) return false;
+      const double left = std::max(C.delta, 0.0);
+      indentation_ += left;
+      C.delta -= left;
+      C.in_contact = false;
+      break;
+    }
+    case Event::kPhase:
+    case Event::kNone:
+      return false;  // the force is continuous there
+  }
+  trial_ = C;
+  return true;
+}
+
+double Contact1D::step_limit() const {
+  const State& C = committed_;
+  if (!C.in_contact) return 1e300;
+  // Graded from the onset (1/32 of the contact step, doubling each step): the force of the
+  // Hertz-type laws grows as delta^(n-1), Jankowski's damping as delta^(1/4) (infinite slope).
+  double limit = contact_step_ * std::ldexp(1.0, std::min(steps_in_contact_, 5) - 5);
+  if (C.stiffness > 0)
+    limit =
+        std::min(limit, std::numbers::pi * std::sqrt(m_eff_ / C.stiffness) / steps_per_contact_);
+  return limit;
+}
+
+// Pseudocode: the elastic part F_e(delta) = F(delta, 0) stores E(delta) = F_e delta / (n + 1)
+// (power law); Newton on E(delta) = m_eff v_imp^2 / 2 gives the peak penetration delta_max, and
+// pi sqrt(m_eff delta_max / F_e(delta_max)) the duration of a contact of secant stiffness.
+double Contact1D::contact_period_estimate(double impact_velocity, const ImpactPhase& phase) const {
+  const double energy = 0.5 * m_eff_ * impact_velocity * impact_velocity;
+  if (!(energy > 0)) return 1e300;
+  double delta = 1e-3;
+  for (int it = 0; it < 60; ++it) {
+    const ImpactResponse e = law_->respond(delta, 0.0, phase);
+    if (!(e.force > 0)) return 1e300;
+    const double stored = e.force * e.force * delta / (e.force + delta * e.stiffness);
+    const double next = delta - (stored - energy) / e.force;
+    const double updated = next > 0 ? next : 0.5 * delta;
+    if (std::abs(updated - delta) < 1e-10 * delta) {
+      delta = updated;
+      break;
+    }
+    delta = updated;
+  }
+  const double force = law_->respond(delta, 0.0, phase).force;
+  return force > 0 ? std::numbers::pi * std::sqrt(m_eff_ * delta / force) : 1e300;
+}
+
+std::string Contact1D::output_name(int i) const {
+  static const char* kNames[] = {"force",           "penetration", "impacts",
+                                 "impact_velocity", "indentation", "dissipated_energy"};
+  return kNames[i];
+}
+
+std::string Contact1D::output_unit(int i) const {
+  static const char* kUnits[] = {"N", "m", "-", "m/s", "m", "J"};
+  return kUnits[i];
+}
+
+void Contact1D::outputs(double* out) const {
+  out[0] = trial_.force;
+  out[1] = std::max(trial_.delta, 0.0);
+  out[2] = trial_impacts();
+  out[3] = std::max(max_impact_velocity_, trial_.started ? trial_.phase.impact_velocity : 0.0);
+  out[4] = indentation_ + (trial_.ended ? trial_.end_indentation : 0.0);
+  out[5] = trial_work_ - trial_stored_;
+}
+
+double Contact1D::output(int i) const {
+  double values[6];
+  outputs(values);
+  return values[i];
+}
+
+}  // namespace isopound

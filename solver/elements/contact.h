@@ -1,0 +1,103 @@
+// A 2D contact between two bodies on one line: penetration delta = c_a u_a + c_b u_b - gap -
+// indentation
+// (> 0 in contact); the law's force F >= 0 pushes them apart: f_a = c_a F, f_b = c_b F.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "solver/core/element.h"
+#include "solver/materials/impact_law.h"
+
+namespace isopound {
+
+// One side of a contact: a DOF and its coefficient (+1 if moving +x closes the gap, -1 if
+// moving -x does). dof = -1: the ground (a rigid, immovable wall), which contributes nothing.
+struct ContactBody {
+  int dof = -1;
+  double coefficient = 0.0;
+};
+
+// Contact states follow the trial/commit protocol. A contact starts when delta crosses 0
+// upwards: the law gets the approach rate at that instant (Hermite interpolation inside the
+// step) as v_imp. It ends when delta returns to 0 or, for a law without tension, when its
+// force reaches 0: the penetration there stays as a permanent indentation that widens the gap.
+class Contact1D final : public Element {
+ public:
+  Contact1D(std::string label, ContactBody a, ContactBody b, double gap,
+            std::unique_ptr<ImpactLaw> law, double effective_mass, double steps_per_contact);
+
+  void begin_step(double h, bool freeze_status) override {
+    h_ = h;
+    freeze_ = freeze_status;
+  }
+  void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
+  void add_force(Eigen::VectorXd& f) const override;
+  void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
+  double power(const Eigen::VectorXd& v) const override;
+  double stored_energy() const override;
+  void commit() override;
+  void revert() override;
+  double event_fraction() override;
+  bool settle_event() override;
+  double step_limit() const override;
+
+  int output_count() const override { return 6; }
+  std::string output_name(int i) const override;
+  std::string output_unit(int i) const override;
+  double output(int i) const override;
+  void outputs(double* out) const override;
+  const std::string& label() const override { return label_; }
+
+  // Outputs by name, for tests.
+  int impacts() const { return impacts_; }
+  int trial_impacts() const { return impacts_ + (trial_.started ? 1 : 0); }
+  double indentation() const { return indentation_; }
+  double max_impact_velocity() const { return max_impact_velocity_; }
+  double dissipated_energy() const { return work_ - stored_; }
+  double max_penetration() const { return max_penetration_; }
+  double force() const { return trial_.force; }
+  double penetration() const { return trial_.delta; }
+
+ private:
+  // The state of the contact at the end of a (trial or committed) step.
+  struct State {
+    double delta = -1.0;  // penetration with the current indentation, m (< 0 open)
+    double rate = 0.0;    // d delta / dt, m/s
+    bool in_contact = false;
+    double force = 0.0;      // N, as applied (>= 0 unless the law allows tension)
+    double raw_force = 0.0;  // N, the law's force before the no-tension clamp
+    double stiffness = 0.0;  // dF/d delta as applied
+    double damping = 0.0;    // dF/d rate as applied
+    ImpactPhase phase;
+    bool started = false;  // this step began a contact
+    bool ended = false;    // this step ended a contact
+    double onset_fraction = 1.0;
+    double end_indentation = 0.0;  // penetration left when a no-tension contact ended
+  };
+  double kinematics(const Eigen::VectorXd& x) const;
+  double contact_period_estimate(double impact_velocity, const ImpactPhase& phase) const;
+  double crossing_fraction(double d0, double r0, double d1, double r1) const;
+
+  std::string label_;
+  ContactBody a_, b_;
+  double gap_;
+  std::unique_ptr<ImpactLaw> law_;
+  double m_eff_;
+  double steps_per_contact_;
+  double h_ = 0.0;
+  bool freeze_ = false;
+  enum class Event { kNone, kOnset, kSeparation, kNoTension, kPhase };
+  Event pending_ = Event::kNone;  // the event found by the last event_fraction()
+  State committed_, trial_;
+  double indentation_ = 0.0;     // accumulated permanent indentation (committed), m
+  double contact_step_ = 1e300;  // step limit of the current contact from its estimated period
+  int steps_in_contact_ = 0;     // accepted steps since the current contact began
+  int impacts_ = 0;
+  double max_impact_velocity_ = 0.0;
+  double max_penetration_ = 0.0;
+  double work_ = 0.0, trial_work_ = 0.0;      // work of the contact force on the bodies, J
+  double stored_ = 0.0, trial_stored_ = 0.0;  // recoverable energy of the contact, J
+};
+
+}  // namespace isopound

@@ -1,0 +1,605 @@
+// Ground motions: PEER .AT2 and plain-column record readers, peak ground motion from exact
+// integration of piecewise-linear acceleration, and the Mavroeidis-Papageorgiou pulse.
+#include "solver/excitation/ground_motion.h"
+
+#include "solver/core/constants.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+namespace isopound {
+
+namespace {
+
+constexpr std::size_t kAutoHeaderLines = 40;    // kAuto looks for NPTS/DT only this far
+constexpr long long kMaxSamples = 100'000'000;  // guards against absurd NPTS / duration / dt
+constexpr const char* kHeaderForms =
+    "expected 'NPTS= 8773, DT= .0050 SEC' or '7997 0.0050 NPTS, DT'";
+
+std::string fmt(double x) {
+  std::ostringstream os;
+  os.precision(10);
+  os << x;
+  return os.str();
+}
+
+// Whole file as lines without their '\n' or "\r\n"; no phantom empty line after a final '\n'.
+std::vector<std::string> read_lines(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw RecordError(path, 0, "is a directory, not a record file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw RecordError(path, 0, "cannot open file (missing or unreadable)");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw RecordError(path, 0, "read error");
+  const std::string text = buffer.str();
+
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+    start = end + 1;
+  }
+  return lines;
+}
+
+bool is_blank(std::string_view s) {
+  return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c) != 0; });
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+// Whitespace-separated tokens; `extra` adds separators (',' and ';' for column files).
+std::vector<std::string_view> tokens_of(std::string_view line, std::string_view extra = {}) {
+  auto is_sep = [&](char c) {
+    return std::isspace(static_cast<unsigned char>(c)) != 0 ||
+           extra.find(c) != std::string_view::npos;
+  };
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && is_sep(line[i])) ++i;
+    std::size_t j = i;
+    while (j < line.size() && !is_sep(line[j])) ++j;
+    if (j > i) out.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
+enum class Parsed { kOk, kNotANumber, kNotFinite };
+
+// Locale-independent; accepts "-.4981725E-02", "+1e3", "2.9638835e-001". The whole token
+// must be consumed, so "1.0-0.5" (glued Fortran fields) is rejected rather than half read.
+Parsed parse_number(std::string_view tok, double& out) {
+  std::string_view body = tok;
+  if (body.size() > 1 && body.front() == '+' && body[1] != '-' && body[1] != '+')
+    body.remove_prefix(1);
+  if (body.empty()) return Parsed::kNotANumber;
+  double value = 0.0;
+  const auto [ptr, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
+  if (ptr != body.data() + body.size()) return Parsed::kNotANumber;
+  if (ec == std::errc::invalid_argument) return Parsed::kNotANumber;
+  if (ec == std::errc::result_out_of_range) {
+    // Overflow is not finite; underflow is a legitimately tiny value.
+    value = std::strtod(std::string(body).c_str(), nullptr);
+  }
+  if (!std::isfinite(value)) return Parsed::kNotFinite;
+  out = value;
+  return Parsed::kOk;
+}
+
+// Parses a data token or throws RecordError naming the line and the token.
+double number_or_throw(const std::string& path, int line, std::string_view tok,
+                       std::string_view hint = {}) {
+  double value = 0.0;
+  switch (parse_number(tok, value)) {
+    case Parsed::kOk:
+      return value;
+    case Parsed::kNotFinite:
+      throw RecordError(path, line,
+                        "value '" + std::string(tok) + "' is not finite (NaN or infinity)");
+    case Parsed::kNotANumber:
+      break;
+  }
+  throw RecordError(
+      path, line,
+      "non-numeric value '" + std::string(tok) + "' (expected a number)" + std::string(hint));
+}
+
+bool all_numeric(std::string_view line) {
+  const auto toks = tokens_of(line);
+  if (toks.empty()) return false;
+  double ignored = 0.0;
+  return std::all_of(toks.begin(), toks.end(),
+                     [&](std::string_view t) { return parse_number(t, ignored) == Parsed::kOk; });
+}
+
+bool contains_nocase(std::string_view text, std::string_view word) {
+  auto it = std::search(text.begin(), text.end(), word.begin(), word.end(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) ==
+           std::tolower(static_cast<unsigned char>(b));
+  });
+  return it != text.end();
+}
+
+struct PeerHeader {
+  std::size_t index = 0;  // 0-based line index of the NPTS/DT line
+  std::string npts_text, dt_text;
+};
+
+// Hand-written matchers for the two header patterns of records/README.md section 3:
+//   NPTS\s*=\s*(\d+)\s*,\s*DT\s*=\s*([0-9.Ee+-]+)   (case-insensitive, anywhere in the line)
+//   ^\s*(\d+)\s+([0-9.Ee+-]+)\s+NPTS\s*,\s*DT        (case-insensitive)
+// Not std::regex: libstdc++ matches recursively and can overflow the stack on long lines.
+class Cursor {
+ public:
+  explicit Cursor(std::string_view s, std::size_t pos = 0) : s_(s), pos_(pos) {}
+  std::size_t spaces() {
+    const std::size_t start = pos_;
+    while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+    return pos_ - start;
+  }
+  bool literal(std::string_view word) {  // case-insensitive
+    if (s_.size() - pos_ < word.size()) return false;
+    for (std::size_t i = 0; i < word.size(); ++i)
+      if (std::tolower(static_cast<unsigned char>(s_[pos_ + i])) !=
+          std::tolower(static_cast<unsigned char>(word[i])))
+        return false;
+    pos_ += word.size();
+    return true;
+  }
+  std::string run(std::string_view allowed) {  // longest run of characters from `allowed`
+    const std::size_t start = pos_;
+    while (pos_ < s_.size() && allowed.find(s_[pos_]) != std::string_view::npos) ++pos_;
+    return std::string(s_.substr(start, pos_ - start));
+  }
+
+ private:
+  std::string_view s_;
+  std::size_t pos_;
+};
+
+constexpr std::string_view kDigits = "0123456789";
+constexpr std::string_view kRealChars = "0123456789.Ee+-";
+using NptsDt = std::pair<std::string, std::string>;
+
+std::optional<NptsDt> match_names_first(std::string_view line) {
+  for (std::size_t at = 0; at + 4 <= line.size(); ++at) {
+    Cursor c(line, at);
+    if (!c.literal("npts")) continue;
+    c.spaces();
+    if (!c.literal("=")) continue;
+    c.spaces();
+    std::string npts = c.run(kDigits);
+    if (npts.empty()) continue;
+    c.spaces();
+    if (!c.literal(",")) continue;
+    c.spaces();
+    if (!c.literal("dt")) continue;
+    c.spaces();
+    if (!c.literal("=")) continue;
+    c.spaces();
+    std::string dt = c.run(kRealChars);
+    if (dt.empty()) continue;
+    return NptsDt{std::move(npts), std::move(dt)};
+  }
+  return std::nullopt;
+}
+
+std::optional<NptsDt> match_values_first(std::string_view line) {
+  Cursor c(line);
+  c.spaces();
+  std::string npts = c.run(kDigits);
+  if (npts.empty() || c.spaces() == 0) return std::nullopt;
+  std::string dt = c.run(kRealChars);
+  if (dt.empty() || c.spaces() == 0) return std::nullopt;
+  if (!c.literal("npts")) return std::nullopt;
+  c.spaces();
+  if (!c.literal(",")) return std::nullopt;
+  c.spaces();
+  if (!c.literal("dt")) return std::nullopt;
+  return NptsDt{std::move(npts), std::move(dt)};
+}
+
+// First line (of the first `limit`) in either NPTS/DT form.
+std::optional<PeerHeader> find_peer_header(const std::vector<std::string>& lines,
+                                           std::size_t limit) {
+  const std::size_t n = std::min(limit, lines.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!contains_nocase(lines[i], "npts")) continue;
+    auto m = match_names_first(lines[i]);
+    if (!m) m = match_values_first(lines[i]);
+    if (m) return PeerHeader{i, std::move(m->first), std::move(m->second)};
+  }
+  return std::nullopt;
+}
+
+// "VELOCITY TIME SERIES", "DISPLACEMENT TIME HISTORY": line 3 of PEER .VT2/.DT2 files.
+bool names_velocity_or_displacement(std::string_view line) {
+  std::vector<std::string> words;
+  for (std::string_view t : tokens_of(line)) {
+    std::string w(t);
+    std::transform(w.begin(), w.end(), w.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
+    words.push_back(std::move(w));
+  }
+  for (std::size_t i = 0; i + 2 < words.size(); ++i)
+    if ((words[i] == "VELOCITY" || words[i] == "DISPLACEMENT") && words[i + 1] == "TIME" &&
+        (words[i + 2] == "SERIES" || words[i + 2] == "HISTORY"))
+      return true;
+  return false;
+}
+
+// Error for a PEER file without a readable NPTS/DT line, pointing where it went wrong.
+[[noreturn]] void throw_missing_header(const std::string& path,
+                                       const std::vector<std::string>& lines, std::size_t limit) {
+  const std::size_t n = std::min(limit, lines.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (contains_nocase(lines[i], "npts"))
+      throw RecordError(
+          path, static_cast<int>(i + 1),
+          std::string("cannot read NPTS and DT from this header line (") + kHeaderForms + ")");
+    if (all_numeric(lines[i]))
+      throw RecordError(
+          path, static_cast<int>(i + 1),
+          std::string("data begins here but no NPTS/DT header line was found above it (") +
+              kHeaderForms + ")");
+  }
+  throw RecordError(path, 0, std::string("no NPTS/DT header line found (") + kHeaderForms + ")");
+}
+
+GroundMotion read_peer(const std::string& path, const std::vector<std::string>& lines,
+                       const PeerHeader& header, double factor) {
+  const int header_line = static_cast<int>(header.index + 1);
+
+  // A PEER velocity/displacement file (.VT2/.DT2) has the same layout: refuse it.
+  for (std::size_t i = 0; i < header.index; ++i)
+    if (names_velocity_or_displacement(lines[i]))
+      throw RecordError(path, static_cast<int>(i + 1),
+                        "this PEER file holds velocity or displacement, not acceleration");
+
+  long long npts = 0;
+  {
+    const std::string& s = header.npts_text;
+    const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), npts);
+    if (ec != std::errc() || ptr != s.data() + s.size() || npts > kMaxSamples)
+      throw RecordError(path, header_line, "NPTS = " + s + " is not a usable number of points");
+    if (npts <= 0)
+      throw RecordError(path, header_line, "NPTS = " + s + ": the record has no points");
+  }
+  double dt = 0.0;
+  if (parse_number(header.dt_text, dt) != Parsed::kOk)
+    throw RecordError(path, header_line, "DT value '" + header.dt_text + "' is not a number");
+  if (!(dt > 0.0))
+    throw RecordError(path, header_line,
+                      "DT = " + header.dt_text + " s: the time step must be > 0");
+
+  GroundMotion motion;
+  motion.name = std::filesystem::path(path).stem().string();
+  motion.dt = dt;
+  // A bogus NPTS must not reserve gigabytes before the data prove it.
+  motion.acceleration.reserve(static_cast<std::size_t>(std::min(npts, 1LL << 20)));
+  int last_value_line = header_line;
+  for (std::size_t i = header.index + 1; i < lines.size(); ++i) {
+    const int line_no = static_cast<int>(i + 1);
+    const std::string_view line = trim(lines[i]);
+    if (line.empty()) continue;
+    if (line.starts_with("***")) {
+      // "*** Begin data ***" before the values is skipped; "*** End Data ***" ends them.
+      if (motion.acceleration.empty()) continue;
+      break;
+    }
+    for (std::string_view tok : tokens_of(line)) {
+      const double g = number_or_throw(path, line_no, tok);
+      if (static_cast<long long>(motion.acceleration.size()) == npts)
+        throw RecordError(path, line_no,
+                          "more values than NPTS = " + std::to_string(npts) + " (value " +
+                              std::to_string(npts + 1) + " is on this line; header line " +
+                              std::to_string(header_line) + ")");
+      motion.acceleration.push_back(g * factor);
+    }
+    last_value_line = line_no;
+  }
+  if (static_cast<long long>(motion.acceleration.size()) < npts)
+    throw RecordError(path, last_value_line,
+                      "truncated record: found " + std::to_string(motion.acceleration.size()) +
+                          " values but NPTS = " + std::to_string(npts) + " (header line " +
+                          std::to_string(header_line) + ")");
+  return motion;
+}
+
+double unit_factor(AccelerationUnit unit) {
+  switch (unit) {
+    case AccelerationUnit::kG:
+      return kGravity;
+    case AccelerationUnit::kMetrePerSecond2:
+      return 1.0;
+    case AccelerationUnit::kCentimetrePerSecond2:
+      return 0.01;
+  }
+  return 1.0;
+}
+
+GroundMotion read_columns(const std::string& path, const std::vector<std::string>& lines,
+                          const RecordReadOptions& options, std::string_view hint) {
+  if (options.column < 0)
+    throw RecordError(path, 0, "column index " + std::to_string(options.column) + " must be >= 0");
+  if (options.time_column < -1)
+    throw RecordError(path, 0,
+                      "time column index " + std::to_string(options.time_column) +
+                          " must be >= 0 (or -1 for none)");
+  if (options.time_column == options.column)
+    throw RecordError(path, 0,
+                      "the time column and the acceleration column are both column " +
+                          std::to_string(options.column));
+  const bool has_time = options.time_column >= 0;
+  const double factor = unit_factor(options.unit) * options.scale;
+
+  std::vector<double> accel, time;
+  std::vector<int> row_line;  // 1-based line of each data row, for messages
+  std::size_t columns = 0;
+  int first_row_line = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const int line_no = static_cast<int>(i + 1);
+    std::string_view line = lines[i];
+    // '%' (MATLAB) and '#' start comments, also after data on a line.
+    if (const auto c = line.find_first_of("%#"); c != std::string_view::npos)
+      line = line.substr(0, c);
+    const auto toks = tokens_of(line, ",;");
+    if (toks.empty()) continue;
+    if (columns == 0) {
+      columns = toks.size();
+      first_row_line = line_no;
+    } else if (toks.size() != columns) {
+      throw RecordError(path, line_no,
+                        "row has " + std::to_string(toks.size()) + " columns but line " +
+                            std::to_string(first_row_line) + " has " + std::to_string(columns));
+    }
+    std::vector<double> row;
+    row.reserve(toks.size());
+    for (std::string_view tok : toks) row.push_back(number_or_throw(path, line_no, tok, hint));
+    const auto need = [&](int index, const char* what) {
+      if (static_cast<std::size_t>(index) >= columns)
+        throw RecordError(path, line_no,
+                          std::string(what) + " index " + std::to_string(index) +
+                              " (0-based) is beyond this row's " + std::to_string(columns) +
+                              " columns");
+    };
+    need(options.column, "column");
+    if (has_time) need(options.time_column, "time column");
+    accel.push_back(row[static_cast<std::size_t>(options.column)] * factor);
+    if (has_time) time.push_back(row[static_cast<std::size_t>(options.time_column)]);
+    row_line.push_back(line_no);
+  }
+  if (accel.empty()) throw RecordError(path, 0, "no data rows (only comments or blank lines)");
+
+  double dt = 0.0;
+  if (has_time) {
+    if (time.size() < 2)
+      throw RecordError(path, row_line.front(),
+                        "need at least 2 rows to take dt from the time column");
+    // Steps are compared with the first one so that the error names the first odd row;
+    // dt itself is the mean step, which averages out rounding of the printed times.
+    const double first = time[1] - time[0];
+    if (!(first > 0.0))
+      throw RecordError(path, row_line[1],
+                        "time does not increase (step " + fmt(first) + " s); dt must be > 0");
+    for (std::size_t k = 1; k + 1 < time.size(); ++k) {
+      const double step = time[k + 1] - time[k];
+      if (!(std::abs(step - first) <= 1e-6 * first))
+        throw RecordError(path, row_line[k + 1],
+                          "time step " + fmt(step) + " s differs from the first step " +
+                              fmt(first) + " s (samples must be uniform within 1e-6 relative)");
+    }
+    dt = (time.back() - time.front()) / static_cast<double>(time.size() - 1);
+    if (options.dt != 0.0 && !(std::abs(options.dt - dt) <= 1e-6 * dt))
+      throw RecordError(path, 0,
+                        "dt = " + fmt(options.dt) + " s was given but the time column has step " +
+                            fmt(dt) + " s; give one or the other");
+    // A first time other than 0 (e.g. a record cut from a longer one) is shifted to t = 0:
+    // sample k is at k*dt from the start of the record, as everywhere in isopound.
+  } else {
+    if (options.dt == 0.0)
+      throw RecordError(path, 0, "no time step: a column file without a time column needs dt > 0");
+    if (!(options.dt > 0.0) || !std::isfinite(options.dt))
+      throw RecordError(path, 0, "dt = " + fmt(options.dt) + " s: the time step must be > 0");
+    dt = options.dt;
+  }
+
+  GroundMotion motion;
+  motion.name = std::filesystem::path(path).stem().string();
+  motion.dt = dt;
+  motion.acceleration = std::move(accel);
+  return motion;
+}
+
+bool has_at2_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".at2";
+}
+
+}  // namespace
+
+RecordError::RecordError(const std::string& file, int line, const std::string& what)
+    : std::runtime_error(file + ":" + std::to_string(line) + ": " + what),
+      file_(file),
+      line_(line) {}
+
+double GroundMotion::at(double t) const {
+  if (acceleration.empty() || !(dt > 0.0)) return 0.0;
+  if (!(t >= 0.0 && t <= duration())) return 0.0;  // also catches NaN
+  const double x = t / dt;
+  const std::size_t last = acceleration.size() - 1;
+  const auto k = std::min(static_cast<std::size_t>(x), last);
+  if (k == last) return acceleration[last];
+  const double r = x - static_cast<double>(k);
+  return acceleration[k] + r * (acceleration[k + 1] - acceleration[k]);
+}
+
+GroundMotionPeaks peaks_of(const GroundMotion& motion) {
+  // Zero initial velocity and displacement and no baseline correction: the records are
+  // already processed, and correcting here would hide what the structure actually feels.
+  // Peaks are of the exact piecewise-quadratic velocity and piecewise-cubic displacement,
+  // so extrema between samples (where a or v changes sign) are found too.
+  GroundMotionPeaks pk;
+  const auto& a = motion.acceleration;
+  if (a.empty()) return pk;
+  const double dt = motion.dt;
+  auto track = [](double value, double t, double& peak, double& t_peak) {
+    if (std::abs(value) > peak) {
+      peak = std::abs(value);
+      t_peak = t;
+    }
+  };
+  track(a[0], 0.0, pk.pga, pk.t_pga);
+  double v = 0.0, d = 0.0;
+  for (std::size_t k = 0; k + 1 < a.size(); ++k) {
+    const double a0 = a[k], a1 = a[k + 1];
+    const double t0 = static_cast<double>(k) * dt;
+    const double da = (a1 - a0) / dt;  // slope of the acceleration in the step
+    // Velocity extremum inside the step where a(s) = a0 + da s = 0.
+    if (a0 * a1 < 0.0) {
+      const double s = a0 * dt / (a0 - a1);
+      track(v + 0.5 * a0 * s, t0 + s, pk.pgv, pk.t_pgv);
+    }
+    // Displacement extrema inside the step where v(s) = v + a0 s + da s^2/2 = 0
+    // (numerically stable quadratic roots; a root of 0 or dt is a sample, handled below).
+    {
+      const double c2 = 0.5 * da, c1 = a0, c0 = v;
+      const double disc = c1 * c1 - 4.0 * c2 * c0;
+      if (disc >= 0.0) {
+        const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+        double roots[2] = {-1.0, -1.0};
+        if (c2 != 0.0) roots[0] = q / c2;
+        if (q != 0.0) roots[1] = c0 / q;
+        for (double s : roots) {
+          if (std::isfinite(s) && s > 0.0 && s < dt)
+            track(d + v * s + 0.5 * a0 * s * s + da * s * s * s / 6.0, t0 + s, pk.pgd, pk.t_pgd);
+        }
+      }
+    }
+    const double d1 = d + dt * v + dt * dt * (2.0 * a0 + a1) / 6.0;
+    v += dt * (a0 + a1) / 2.0;
+    d = d1;
+    const double t1 = static_cast<double>(k + 1) * dt;
+    track(a1, t1, pk.pga, pk.t_pga);
+    track(v, t1, pk.pgv, pk.t_pgv);
+    track(d, t1, pk.pgd, pk.t_pgd);
+  }
+  return pk;
+}
+
+GroundMotion read_record(const std::string& path, const RecordReadOptions& options) {
+  const std::vector<std::string> lines = read_lines(path);
+  if (std::all_of(lines.begin(), lines.end(), [](const std::string& l) { return is_blank(l); }))
+    throw RecordError(path, 0, "empty file (no header and no data)");
+  if (!std::isfinite(options.scale))
+    throw RecordError(path, 0, "scale factor " + fmt(options.scale) + " is not finite");
+
+  using Format = RecordReadOptions::Format;
+  // PEER files are in g by definition (header line 3) and carry their own DT, so
+  // options.unit and options.dt do not apply to them.
+  const double peer_factor = kGravity * options.scale;
+  switch (options.format) {
+    case Format::kPeer: {
+      const auto header = find_peer_header(lines, lines.size());
+      if (!header) throw_missing_header(path, lines, lines.size());
+      return read_peer(path, lines, *header, peer_factor);
+    }
+    case Format::kColumns:
+      return read_columns(path, lines, options, {});
+    case Format::kAuto:
+      break;
+  }
+  if (const auto header = find_peer_header(lines, kAutoHeaderLines))
+    return read_peer(path, lines, *header, peer_factor);
+  // An .AT2 file without an NPTS/DT line is a broken PEER file, not a column file.
+  if (has_at2_extension(path)) throw_missing_header(path, lines, kAutoHeaderLines);
+  return read_columns(
+      path, lines, options,
+      "; read as a plain column file because no NPTS/DT line was found in the first " +
+          std::to_string(kAutoHeaderLines) + " lines");
+}
+
+namespace {
+
+void check_pulse_shape(const PulseParameters& p) {
+  if (!(p.period > 0.0) || !std::isfinite(p.period))
+    throw std::invalid_argument("pulse period must be > 0 s (got " + fmt(p.period) + ")");
+  if (!(p.gamma > 1.0) || !std::isfinite(p.gamma))
+    throw std::invalid_argument("pulse gamma must be > 1 (got " + fmt(p.gamma) + ")");
+  if (!std::isfinite(p.amplitude) || !std::isfinite(p.phase) || !std::isfinite(p.t_peak))
+    throw std::invalid_argument("pulse amplitude, phase and t_peak must be finite");
+}
+
+}  // namespace
+
+double pulse_velocity(const PulseParameters& p, double t) {
+  check_pulse_shape(p);
+  const double tau = t - p.t_peak;
+  if (std::abs(tau) > 0.5 * p.gamma * p.period) return 0.0;
+  const double w = 2.0 * std::numbers::pi / p.period;
+  return 0.5 * p.amplitude * (1.0 + std::cos(w * tau / p.gamma)) * std::cos(w * tau + p.phase);
+}
+
+double pulse_acceleration(const PulseParameters& p, double t) {
+  check_pulse_shape(p);
+  const double tau = t - p.t_peak;
+  if (std::abs(tau) > 0.5 * p.gamma * p.period) return 0.0;
+  const double w = 2.0 * std::numbers::pi / p.period;
+  const double we = w / p.gamma;  // envelope frequency
+  // d/dt of A/2 E(tau) C(tau): envelope term E' C plus carrier term E C'. Both vanish at the
+  // window edges (E = E' = 0 there), so the acceleration is continuous.
+  const double envelope = 1.0 + std::cos(we * tau);
+  const double d_envelope = -we * std::sin(we * tau);
+  const double carrier = std::cos(w * tau + p.phase);
+  const double d_carrier = -w * std::sin(w * tau + p.phase);
+  return 0.5 * p.amplitude * (d_envelope * carrier + envelope * d_carrier);
+}
+
+GroundMotion make_pulse(const PulseParameters& p) {
+  check_pulse_shape(p);
+  if (!(p.dt > 0.0) || !std::isfinite(p.dt))
+    throw std::invalid_argument("pulse dt must be > 0 s (got " + fmt(p.dt) + ")");
+  if (!(p.duration > 0.0) || !std::isfinite(p.duration))
+    throw std::invalid_argument("pulse duration must be > 0 s (got " + fmt(p.duration) + ")");
+  const double steps = std::round(p.duration / p.dt);
+  if (steps < 1.0)
+    throw std::invalid_argument("pulse duration " + fmt(p.duration) +
+                                " s is shorter than one dt (" + fmt(p.dt) + " s)");
+  if (steps > static_cast<double>(kMaxSamples))
+    throw std::invalid_argument("pulse duration / dt = " + fmt(steps) + " samples is too many");
+  const auto n = static_cast<std::size_t>(steps);
+  GroundMotion motion;
+  motion.name = "pulse";
+  motion.dt = p.dt;
+  motion.acceleration.resize(n + 1);
+  for (std::size_t k = 0; k <= n; ++k)
+    motion.acceleration[k] = pulse_acceleration(p, static_cast<double>(k) * p.dt);
+  return motion;
+}
+
+}  // namespace isopound

@@ -1,0 +1,416 @@
+// The one place where a model file becomes a ModelConfig (format: model_input.h and the report).
+// Unknown keys, wrong types, units of the wrong dimension and out-of-range values are InputErrors.
+#include "solver/io/model_input.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace isopound {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kIntMax = std::numeric_limits<int>::max();
+constexpr int kMaxFloors = 1000;  // a shear building model; the limit guards the short form's count
+constexpr int kMaxHalvings = 60;  // dt / 2^60 is already far below any physical time scale
+constexpr double kMaxPulseSamples = 1e8;
+constexpr const char* kFixedBaseOnly = "not allowed for a fixed-base building (isolated: false)";
+
+std::vector<FloorConfig> read_floors(const InputNode& node) {
+  std::vector<FloorConfig> floors;
+  if (node.is_sequence()) {
+    for (const InputNode& item : node.elements()) {
+      item.expect_keys({"mass", "stiffness", "height"});
+      if (!item.is_map()) item.fail("expected {mass, stiffness, height} of a floor");
+      FloorConfig floor;
+      floor.mass = item.required("mass").quantity(dim::kMass, Bound::kPositive);
+      floor.stiffness = item.required("stiffness").quantity(dim::kStiffness, Bound::kPositive);
+      floor.height = item.required("height").quantity(dim::kLength, Bound::kPositive);
+      floors.push_back(floor);
+    }
+    if (floors.empty()) node.fail("no floors: give at least one {mass, stiffness, height}");
+    if (floors.size() > kMaxFloors)
+      node.fail("more than " + std::to_string(kMaxFloors) + " floors");
+    return floors;
+  }
+  if (!node.is_map())
+    node.fail(
+        "expected a list of floors [{mass, stiffness, height}, ...] or the short form "
+        "{count, mass, roof_mass, stiffness, height}; got " +
+        node.kind());
+  // Short form: `count` equal floors, the top one (the roof) optionally lighter.
+  node.expect_keys({"count", "mass", "roof_mass", "stiffness", "height"});
+  const int count = node.required("count").integer(1, kMaxFloors);
+  FloorConfig floor;
+  floor.mass = node.required("mass").quantity(dim::kMass, Bound::kPositive);
+  floor.stiffness = node.required("stiffness").quantity(dim::kStiffness, Bound::kPositive);
+  floor.height = node.required("height").quantity(dim::kLength, Bound::kPositive);
+  floors.assign(static_cast<std::size_t>(count), floor);
+  node.read_quantity("roof_mass", dim::kMass, Bound::kPositive, floors.back().mass);
+  return floors;
+}
+
+IsolatorConfig read_isolator(const InputNode& node) {
+  using Model = IsolatorConfig::Model;
+  node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
+                    "carried_mass"});
+  IsolatorConfig iso;
+  if (const auto model = node.find("model"))
+    iso.model = model->choice<Model>({{"linear", Model::kLinear},
+                                      {"bilinear", Model::kBilinear},
+                                      {"bouc_wen", Model::kBoucWen}});
+  node.read_quantity("Tb", dim::kTime, Bound::kPositive, iso.period);
+  if (const auto qw = node.find("QW")) {
+    iso.strength_ratio = qw->number(Bound::kNonNegative);
+    if (iso.strength_ratio == 0.0 && iso.model != Model::kLinear)
+      qw->fail(
+          "must be > 0 for the bilinear and bouc_wen models (an isolator without strength is "
+          "model: linear)");
+  }
+  node.read_quantity("uy", dim::kLength, Bound::kPositive, iso.yield_displacement);
+  node.read_number("n", Bound::kPositive, iso.n);
+  node.read_number("A", Bound::kPositive, iso.A);
+  node.read_number("beta", Bound::kAny, iso.beta);
+  node.read_number("gamma", Bound::kAny, iso.gamma);
+  if (iso.model == Model::kBoucWen && !(iso.beta + iso.gamma > 0.0)) {
+    char sum[32];
+    std::snprintf(sum, sizeof sum, "%g", iso.beta + iso.gamma);
+    const std::string what = std::string("beta + gamma must be > 0 for bouc_wen (got ") + sum + ")";
+    if (const auto gamma = node.find("gamma")) gamma->fail(what);
+    if (const auto beta = node.find("beta")) beta->fail(what);
+    node.fail(what);
+  }
+  node.read_boolean("strength_is_yield_force", iso.strength_is_yield_force);
+  node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
+  return iso;
+}
+
+// The two Rayleigh modes: distinct integers among the fixed-base modes 1..floor_count.
+void read_rayleigh_modes(const InputNode& node, int floor_count, SuperstructureDamping& damping) {
+  const std::vector<InputNode> modes = node.elements();
+  if (modes.size() != 2)
+    node.fail("expected two mode numbers, e.g. [1, 2]; got " + std::to_string(modes.size()));
+  int values[2] = {0, 0};
+  for (int i = 0; i < 2; ++i) {
+    values[i] = modes[i].integer(1, kIntMax);
+    if (values[i] > floor_count)
+      modes[i].fail("mode " + std::to_string(values[i]) +
+                    " does not exist: the fixed-base building has " + std::to_string(floor_count) +
+                    " modes (one per floor)");
+  }
+  if (values[0] == values[1])
+    node.fail("the two Rayleigh modes must differ (got " + std::to_string(values[0]) + " twice)");
+  damping.mode_a = values[0];
+  damping.mode_b = values[1];
+}
+
+// building.damping: {superstructure: {type, ratio, modes}, isolation}.
+void read_damping(const InputNode& building, BuildingConfig& b) {
+  using Type = SuperstructureDamping::Type;
+  const auto damping = building.find("damping");
+  std::optional<InputNode> superstructure;
+  if (damping) {
+    damping->expect_keys({"superstructure", "isolation"});
+    if (const auto isolation = damping->find("isolation")) {
+      if (!b.isolated) isolation->fail(kFixedBaseOnly);
+      b.isolation_damping_ratio = isolation->number(Bound::kFraction);
+    }
+    superstructure = damping->find("superstructure");
+  }
+  SuperstructureDamping& s = b.damping;
+  std::optional<InputNode> type, modes;
+  if (superstructure) {
+    superstructure->expect_keys({"type", "ratio", "modes"});
+    type = superstructure->find("type");
+    if (type)
+      s.type = type->choice<Type>(
+          {{"rayleigh", Type::kRayleigh}, {"modal", Type::kModal}, {"none", Type::kNone}});
+    if (const auto ratio = superstructure->find("ratio")) {
+      if (s.type == Type::kNone) ratio->fail("has no effect with type: none");
+      s.ratio = ratio->number(Bound::kFraction);
+    }
+    modes = superstructure->find("modes");
+    if (modes && s.type != Type::kRayleigh) modes->fail("only used with type: rayleigh");
+  }
+  if (s.type != Type::kRayleigh) return;
+  const int floor_count = static_cast<int>(b.floors.size());
+  if (floor_count < 2) {
+    // Point at what chose Rayleigh: the written type, else the section that defaulted it.
+    const std::string what =
+        "Rayleigh damping needs two fixed-base modes but a 1-storey building has one; "
+        "use type: modal";
+    if (type) type->fail(what);
+    if (superstructure) superstructure->fail_at_key("type", what + " (rayleigh is the default)");
+    if (damping) damping->fail_at_key("superstructure", what + " (rayleigh is the default)");
+    building.fail_at_key("damping.superstructure", what + " (rayleigh is the default)");
+  }
+  if (modes) read_rayleigh_modes(*modes, floor_count, s);
+}
+
+// The impact-law keys shared by walls and neighbours (THEORY section 4).
+const std::vector<std::string_view> kImpactKeys = {
+    "law", "k", "k_h", "n", "e", "material", "xi_formula", "min_impact_velocity"};
+
+void read_impact(const InputNode& node, ImpactLawConfig& c) {
+  if (const auto law = node.find("law")) {
+    c.law = law->choice<std::string>({{"linear", "linear"},
+                                      {"kelvin_voigt", "kelvin_voigt"},
+                                      {"modified_kelvin_voigt", "modified_kelvin_voigt"},
+                                      {"ye", "ye"},
+                                      {"mahmoud_jankowski", "mahmoud_jankowski"},
+                                      {"pant_wijeyewickrema", "pant_wijeyewickrema"},
+                                      {"hertz", "hertz"},
+                                      {"jankowski", "jankowski"},
+                                      {"hertz_damp_muthukumar", "hertz_damp_muthukumar"},
+                                      {"hertz_damp_ye", "hertz_damp_ye"}});
+  }
+  node.read_number("n", Bound::kPositive, c.n);
+  node.read_quantity("k", dim::kStiffness, Bound::kPositive, c.k);
+  // k_h is in N/m^n: its dimension follows the exponent (n = 1.5 for Jankowski's law).
+  const double n_h = c.law == "jankowski" ? 1.5 : c.n;
+  node.read_quantity("k_h", Dimension{1.0 - n_h, 1.0, -2.0}, Bound::kPositive, c.k_h);
+  if (const auto e = node.find("e")) {
+    c.e = e->number(Bound::kPositive);
+    if (c.e > 1.0) e->fail("the coefficient of restitution must be in (0, 1]");
+  }
+  if (const auto m = node.find("material")) {
+    c.material = m->choice<ImpactMaterial>({{"none", ImpactMaterial::kNone},
+                                            {"concrete", ImpactMaterial::kConcrete},
+                                            {"steel", ImpactMaterial::kSteel},
+                                            {"timber", ImpactMaterial::kTimber},
+                                            {"ceramic", ImpactMaterial::kCeramic}});
+    if (c.material != ImpactMaterial::kNone && node.has("e"))
+      m->fail("give either e (constant) or material (velocity-dependent e), not both");
+  }
+  if (const auto xi = node.find("xi_formula"))
+    c.xi_formula = xi->choice<std::string>({{"eq_3_12", "eq_3_12"}, {"eq_3_11", "eq_3_11"}});
+  node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive,
+                     c.min_impact_velocity);
+}
+
+WallConfig read_wall(const InputNode& node) {
+  std::vector<std::string_view> keys = {"sides", "gap",  "gap_left",  "gap_right",
+                                        "level", "mass", "stiffness", "damping"};
+  keys.insert(keys.end(), kImpactKeys.begin(), kImpactKeys.end());
+  node.expect_keys(keys);
+  WallConfig w;
+  if (const auto sides = node.find("sides")) {
+    const int which = sides->choice<int>({{"both", 0}, {"left", 1}, {"right", 2}});
+    w.left = which != 2;
+    w.right = which != 1;
+  }
+  if (const auto gap = node.find("gap")) {
+    w.gap_left = w.gap_right = gap->quantity(dim::kLength, Bound::kNonNegative);
+    for (const char* key : {"gap_left", "gap_right"})
+      if (const auto g = node.find(key))
+        g->fail("give either gap (both sides) or gap_left/gap_right");
+  }
+  node.read_quantity("gap_left", dim::kLength, Bound::kNonNegative, w.gap_left);
+  node.read_quantity("gap_right", dim::kLength, Bound::kNonNegative, w.gap_right);
+  node.read_integer("level", 0, 1000, w.level);
+  node.read_quantity("mass", dim::kMass, Bound::kPositive, w.mass);
+  node.read_quantity("stiffness", dim::kStiffness, Bound::kNonNegative, w.stiffness);
+  node.read_number("damping", Bound::kFraction, w.damping_ratio);
+  read_impact(node, w.impact);
+  return w;
+}
+
+BuildingConfig read_building(const InputNode& node);
+
+NeighbourConfig read_neighbour(const InputNode& node) {
+  node.expect_keys({"building", "side", "gap", "impact"});
+  NeighbourConfig n;
+  n.building = read_building(node.required("building"));
+  if (const auto side = node.find("side"))
+    n.right = side->choice<bool>({{"left", false}, {"right", true}});
+  n.gap = node.required("gap").quantity(dim::kLength, Bound::kNonNegative);
+  if (const auto impact = node.find("impact")) {
+    impact->expect_keys(kImpactKeys);
+    read_impact(*impact, n.impact);
+  }
+  return n;
+}
+
+BuildingConfig read_building(const InputNode& node) {
+  node.expect_keys({"name", "isolated", "base", "floors", "isolator", "damping", "walls"});
+  BuildingConfig b;
+  if (const auto name = node.find("name")) {
+    b.name = name->string();
+    if (b.name.empty()) name->fail("must not be empty");
+  }
+  node.read_boolean("isolated", b.isolated);
+  if (b.isolated) {
+    const InputNode base = node.required("base");
+    base.expect_keys({"mass"});
+    b.base_mass = base.required("mass").quantity(dim::kMass, Bound::kPositive);
+  } else {
+    for (const char* key : {"base", "isolator"})
+      if (const auto n = node.find(key)) n->fail(kFixedBaseOnly);
+  }
+  b.floors = read_floors(node.required("floors"));
+  if (const auto isolator = node.find("isolator")) b.isolator = read_isolator(*isolator);
+  read_damping(node, b);
+  if (const auto walls = node.find("walls")) {
+    const int levels = static_cast<int>(b.floors.size()) + (b.isolated ? 1 : 0);
+    const auto add = [&](const InputNode& w) {
+      b.walls.push_back(read_wall(w));
+      if (b.walls.back().level >= levels)
+        w.required("level").fail("level " + std::to_string(b.walls.back().level) +
+                                 " does not exist (levels 0.." + std::to_string(levels - 1) + ")");
+    };
+    if (walls->is_sequence())
+      for (const InputNode& w : walls->elements()) add(w);
+    else
+      add(*walls);
+  }
+  return b;
+}
+
+PulseParameters read_pulse(const InputNode& node) {
+  node.expect_keys({"amplitude", "period", "gamma", "phase", "t_peak", "duration", "dt"});
+  PulseParameters p;
+  node.read_quantity("amplitude", dim::kVelocity, Bound::kNonZero, p.amplitude);
+  node.read_quantity("period", dim::kTime, Bound::kPositive, p.period);
+  if (const auto gamma = node.find("gamma")) {
+    p.gamma = gamma->number();
+    if (!(p.gamma > 1.0)) gamma->fail("must be > 1 (got '" + gamma->string() + "')");
+  }
+  node.read_number("phase", Bound::kAny, p.phase);  // "90 deg" or radians
+  node.read_quantity("t_peak", dim::kTime, Bound::kNonNegative, p.t_peak);
+  node.read_quantity("duration", dim::kTime, Bound::kPositive, p.duration);
+  node.read_quantity("dt", dim::kTime, Bound::kPositive, p.dt);
+  const auto dt = node.find("dt");
+  const InputNode& where = dt ? *dt : node;
+  if (p.dt > p.duration) where.fail("the step dt is longer than the duration of the pulse");
+  if (p.duration / p.dt > kMaxPulseSamples)
+    where.fail("duration / dt gives more than 1e8 samples: increase dt or shorten the duration");
+  return p;
+}
+
+GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& base_dir) {
+  using Format = RecordReadOptions::Format;
+  node.expect_keys(
+      {"record", "format", "column", "time_column", "dt", "unit", "scale", "extra_time", "pulse"});
+  GroundMotionConfig g;
+  node.read_quantity("extra_time", dim::kTime, Bound::kNonNegative, g.extra_time);
+  const auto record = node.find("record");
+  if (!record) {
+    for (const char* key : {"format", "column", "time_column", "dt", "unit", "scale"})
+      if (const auto n = node.find(key))
+        n->fail("applies to a record file, but no 'record' is given (the built-in pulse is used)");
+    if (const auto pulse = node.find("pulse")) g.pulse = read_pulse(*pulse);
+    return g;
+  }
+  if (const auto pulse = node.find("pulse"))
+    pulse->fail("give either 'record' or 'pulse', not both");
+  const std::string path = record->string();
+  if (path.empty()) record->fail("must not be empty");
+  fs::path resolved(path);
+  if (resolved.is_relative() && !base_dir.empty()) resolved = fs::path(base_dir) / resolved;
+  g.record_path = resolved.lexically_normal().string();
+  g.use_pulse = false;
+
+  RecordReadOptions& read = g.read;
+  const auto format = node.find("format");
+  if (format)
+    read.format = format->choice<Format>(
+        {{"auto", Format::kAuto}, {"peer", Format::kPeer}, {"columns", Format::kColumns}});
+  node.read_integer("column", 0, kIntMax, read.column);
+  const auto time_column = node.find("time_column");
+  if (time_column) {
+    read.time_column = time_column->integer(0, kIntMax);
+    if (read.time_column == read.column)
+      time_column->fail("is the same as 'column' (" + std::to_string(read.column) + ")");
+    if (node.has("dt"))
+      node.find("dt")->fail("give either 'dt' or 'time_column' (dt is then read from the times)");
+  }
+  node.read_quantity("dt", dim::kTime, Bound::kNonNegative, read.dt);
+  if (read.format == Format::kColumns && !time_column && read.dt == 0.0)
+    node.fail_at_key("dt", "a columns record without 'time_column' needs 'dt' > 0");
+  if (const auto unit = node.find("unit")) {
+    read.unit =
+        unit->choice<AccelerationUnit>({{"g", AccelerationUnit::kG},
+                                        {"m/s2", AccelerationUnit::kMetrePerSecond2},
+                                        {"m/s^2", AccelerationUnit::kMetrePerSecond2},
+                                        {"cm/s2", AccelerationUnit::kCentimetrePerSecond2},
+                                        {"cm/s^2", AccelerationUnit::kCentimetrePerSecond2}});
+    if (read.format == Format::kPeer && read.unit != AccelerationUnit::kG)
+      unit->fail("PEER files are always in g (use 'scale' to change the amplitude)");
+  }
+  node.read_number("scale", Bound::kNonZero, read.scale);
+  return g;
+}
+
+AnalysisConfig read_analysis(const InputNode& node) {
+  using Stepping = AnalysisConfig::Stepping;
+  node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings",
+                    "newton_tolerance", "max_iterations", "steps_per_contact", "locate_events"});
+  AnalysisConfig a;
+  if (const auto stepping = node.find("stepping"))
+    a.stepping = stepping->choice<Stepping>(
+        {{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}});
+  node.read_quantity("dt", dim::kTime, Bound::kNonNegative, a.dt);
+  node.read_number("steps_per_period", Bound::kNonNegative,
+                   a.steps_per_period);  // 0: no period limit
+  node.read_number("tolerance", Bound::kPositive, a.tolerance);
+  node.read_integer("max_halvings", 0, kMaxHalvings, a.max_halvings);
+  node.read_number("newton_tolerance", Bound::kPositive, a.newton_tolerance);
+  node.read_integer("max_iterations", 1, kIntMax, a.max_iterations);
+  node.read_number("steps_per_contact", Bound::kPositive, a.steps_per_contact);
+  node.read_boolean("locate_events", a.locate_events);
+  return a;
+}
+
+OutputConfig read_output(const InputNode& node) {
+  node.expect_keys({"interval", "histories"});
+  OutputConfig o;
+  node.read_quantity("interval", dim::kTime, Bound::kNonNegative, o.interval);
+  node.read_boolean("histories", o.histories);
+  return o;
+}
+
+int line_of(const YAML::Mark& mark) {
+  return mark.is_null() ? 0 : mark.line + 1;
+}
+int column_of(const YAML::Mark& mark) {
+  return mark.is_null() ? 0 : mark.column + 1;
+}
+
+}  // namespace
+
+ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
+                       const std::string& base_dir) {
+  try {
+    const InputNode top(root, source_name);
+    top.expect_keys({"building", "neighbours", "ground_motion", "analysis", "output"});
+    ModelConfig model;
+    model.source = source_name;
+    model.building = read_building(top.required("building"));
+    if (const auto list = top.find("neighbours")) {
+      if (!list->is_sequence()) list->fail("must be a list of neighbours");
+      for (const InputNode& n : list->elements()) model.neighbours.push_back(read_neighbour(n));
+    }
+    if (const auto n = top.find("ground_motion"))
+      model.ground_motion = read_ground_motion(*n, base_dir);
+    if (const auto n = top.find("analysis")) model.analysis = read_analysis(*n);
+    if (const auto n = top.find("output")) model.output = read_output(*n);
+    return model;
+  } catch (const YAML::Exception& e) {
+    // Not expected (keys are found by iteration, never indexed), but keep the promise of
+    // InputError.
+    throw InputError(source_name, line_of(e.mark), column_of(e.mark), "", "YAML error: " + e.msg);
+  }
+}
+
+ModelConfig load_model_file(const std::string& path) {
+  const std::string text = read_input_file(path, "a YAML model file");
+  const YAML::Node root = parse_single_document(text, path, "a model file");
+  return load_model(root, path, fs::path(path).parent_path().string());
+}
+
+}  // namespace isopound

@@ -1,0 +1,22 @@
+// Reading a model file (YAML) into ModelConfig: every quantity through the unit parser, every
+// value checked; an input problem is an InputError "file:line:col: key.path: what" (yaml_reader.h).
+#pragma once
+
+#include <string>
+
+#include "solver/io/yaml_reader.h"
+#include "solver/structures/config.h"
+
+namespace isopound {
+
+// Reads and parses the file. A missing or unreadable file is an InputError with line 0; a YAML
+// syntax error one at the line yaml-cpp reports. Relative record paths are taken from the file's
+// directory.
+ModelConfig load_model_file(const std::string& path);
+
+// Parses an already-loaded YAML tree. source_name is used in messages, base_dir resolves
+// relative record paths (absolute ones are kept).
+ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
+                       const std::string& base_dir);
+
+}  // namespace isopound

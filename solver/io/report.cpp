@@ -1,0 +1,253 @@
+// Writers of summary.json and histories.csv, and the console summary. Values are SI; every
+// JSON key ends in its unit (_m, _s, _N, _J, _m_s2) or is dimensionless.
+#include "solver/io/report.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+
+#include "solver/structures/isolator.h"
+
+namespace isopound {
+
+namespace {
+
+const char* stepping_name(AnalysisConfig::Stepping s) {
+  return s == AnalysisConfig::Stepping::kAdaptive ? "adaptive" : "fixed";
+}
+
+const char* isolator_name(IsolatorConfig::Model m) {
+  switch (m) {
+    case IsolatorConfig::Model::kLinear:
+      return "linear";
+    case IsolatorConfig::Model::kBilinear:
+      return "bilinear";
+    case IsolatorConfig::Model::kBoucWen:
+      return "bouc_wen";
+  }
+  return "?";
+}
+
+nlohmann::json peak(const Peak& p, const char* key) {
+  return {{key, p.value}, {"time_s", p.time}};
+}
+
+}  // namespace
+
+nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
+                            const JobResult* unobstructed) {
+  using nlohmann::json;
+  const AnalysisResult& r = job.analysis;
+  const Model& model = job.model;
+  json j;
+  j["isopound_version"] = "0.1.0";
+  j["model_file"] = config.source;
+
+  const GroundMotionConfig& g = config.ground_motion;
+  j["ground_motion"] = {{"name", job.motion.name},
+                        {"source", g.use_pulse ? "built-in near-fault pulse" : g.record_path},
+                        {"dt_s", job.motion.dt},
+                        {"samples", job.motion.acceleration.size()},
+                        {"duration_s", job.motion.duration()},
+                        {"scale", g.read.scale},
+                        {"pga_m_s2", job.motion_peaks.pga},
+                        {"pga_g", job.motion_peaks.pga / kGravity},
+                        {"pgv_m_s", job.motion_peaks.pgv},
+                        {"pgd_m", job.motion_peaks.pgd},
+                        {"baseline",
+                         "none: velocity and displacement integrated exactly from the "
+                         "piecewise-linear acceleration, zero initial conditions"}};
+
+  const AnalysisConfig& a = config.analysis;
+  j["settings"] = {
+      {"integrator", "Newmark average acceleration (gamma 1/2, beta 1/4), Newton-Raphson"},
+      {"stepping", stepping_name(a.stepping)},
+      {"dt_s", a.dt},
+      {"steps_per_period", a.steps_per_period},
+      {"tolerance", a.tolerance},
+      {"max_halvings", a.max_halvings},
+      {"newton_tolerance", a.newton_tolerance},
+      {"max_iterations", a.max_iterations},
+      {"extra_time_s", g.extra_time},
+      {"isolator_model", isolator_name(config.building.isolator.model)}};
+
+  json structures = json::array();
+  std::size_t story_index = 0;
+  for (const StructureInfo& s : model.structures) {
+    json js;
+    js["name"] = s.name;
+    json levels = json::array();
+    for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
+      const int d = s.level_dofs[k];
+      levels.push_back(
+          {{"label", model.dofs[d].label},
+           {"displacement", peak(r.displacement[d], "peak_m")},
+           {"velocity", peak(r.velocity[d], "peak_m_s")},
+           {"absolute_acceleration", peak(r.absolute_acceleration[d], "peak_m_s2")},
+           {"absolute_acceleration_peak_g", r.absolute_acceleration[d].value / kGravity}});
+    }
+    js["levels"] = levels;
+    if (s.has_base) js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
+    json stories = json::array();
+    const std::size_t count = s.story_heights.size();
+    for (std::size_t k = 0; k < count; ++k, ++story_index) {
+      const Story& st = r.stories[story_index];
+      stories.push_back({{"label", st.label},
+                         {"height_m", st.height},
+                         {"drift", peak(r.drift[story_index], "peak_m")},
+                         {"drift_ratio", peak(r.drift_ratio[story_index], "peak")}});
+    }
+    js["stories"] = stories;
+    structures.push_back(js);
+  }
+  j["structures"] = structures;
+
+  json elements = json::array();
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& el = *model.elements[e];
+    json je;
+    je["label"] = el.label();
+    for (int k = 0; k < el.output_count(); ++k)
+      je["peak_" + el.output_name(k)] = {{"value", r.element_outputs[e][k].value},
+                                         {"unit", el.output_unit(k)},
+                                         {"time_s", r.element_outputs[e][k].time}};
+    elements.push_back(je);
+  }
+  j["elements"] = elements;
+
+  const EnergyBalance& en = r.energy;
+  j["energy"] = {{"input_J", en.input},
+                 {"kinetic_J", en.kinetic},
+                 {"elastic_J", en.elastic},
+                 {"viscous_J", en.viscous},
+                 {"hysteretic_J", en.hysteretic},
+                 {"balance_error_J", en.error},
+                 {"relative_error", en.relative_error},
+                 {"max_relative_error", en.max_relative_error},
+                 {"note",
+                  "each term integrated from its power with the trapezoidal rule in "
+                  "time; relative_error = |input - sum| / input at the end"}};
+  if (unobstructed) {
+    // The main building is structure 0 in both runs, with the same DOF and story numbering.
+    const AnalysisResult& u = unobstructed->analysis;
+    const StructureInfo& s = model.structures[0];
+    const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+    json levels = json::array();
+    for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
+      const int d = s.level_dofs[k];
+      levels.push_back(
+          {{"label", model.dofs[d].label},
+           {"unobstructed_displacement_m", u.displacement[d].value},
+           {"unobstructed_absolute_acceleration_m_s2", u.absolute_acceleration[d].value},
+           {"displacement_amplification", ratio(r.displacement[d].value, u.displacement[d].value)},
+           {"acceleration_amplification",
+            ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[d].value)}});
+    }
+    json stories = json::array();
+    const std::size_t count = s.story_heights.size();
+    for (std::size_t k = 0; k < count; ++k)
+      stories.push_back({{"label", r.stories[k].label},
+                         {"unobstructed_drift_m", u.drift[k].value},
+                         {"drift_amplification", ratio(r.drift[k].value, u.drift[k].value)}});
+    j["unobstructed"] = {
+        {"note",
+         "the same analysis without walls and neighbours; "
+         "amplification = peak with pounding / peak without"},
+        {"levels", levels},
+        {"stories", stories},
+        {"critical_gap_m", s.has_base ? u.displacement[s.level_dofs[0]].value : 0.0}};
+  }
+
+  const RunStatistics& st = r.stats;
+  j["statistics"] = {{"steps", st.steps},
+                     {"rejected_steps", st.rejected_steps},
+                     {"newton_iterations", st.newton_iterations},
+                     {"restarts", st.restarts},
+                     {"min_step_s", st.min_step},
+                     {"max_step_s", st.max_step},
+                     {"analysed_time_s", st.duration},
+                     {"wall_seconds", st.wall_seconds}};
+  return j;
+}
+
+void write_summary(const std::string& path, const ModelConfig& config, const JobResult& job,
+                   const JobResult* unobstructed) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  out << std::setw(2) << summary_json(config, job, unobstructed) << '\n';
+  if (!out) throw std::runtime_error("error writing " + path);
+}
+
+void write_histories(const std::string& path, const History& history) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write " + path);
+  for (std::size_t c = 0; c < history.columns.size(); ++c)
+    std::fprintf(f, "%s%s", c ? "," : "", history.columns[c].c_str());
+  std::fputc('\n', f);
+  const std::size_t cols = history.columns.size();
+  for (std::size_t r = 0; r < history.rows(); ++r) {
+    for (std::size_t c = 0; c < cols; ++c)
+      std::fprintf(f, "%s%.9g", c ? "," : "", history.values[r * cols + c]);
+    std::fputc('\n', f);
+  }
+  if (std::fclose(f) != 0) throw std::runtime_error("error writing " + path);
+}
+
+void print_summary(std::ostream& out, const ModelConfig& config, const JobResult& job) {
+  const AnalysisResult& r = job.analysis;
+  const Model& model = job.model;
+  char line[256];
+  const GroundMotionPeaks& gp = job.motion_peaks;
+  std::snprintf(line, sizeof line,
+                "Ground motion %s: %zu samples at %.4g s, PGA %.3f g, PGV %.3f m/s, PGD %.3f m\n",
+                job.motion.name.c_str(), job.motion.acceleration.size(), job.motion.dt,
+                gp.pga / kGravity, gp.pgv, gp.pgd);
+  out << line;
+  out << "Building " << config.building.name << " ("
+      << isolator_name(config.building.isolator.model) << " isolators)\n";
+  std::size_t story_index = 0;
+  for (const StructureInfo& s : model.structures) {
+    for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
+      const int d = s.level_dofs[k];
+      std::snprintf(line, sizeof line,
+                    "  %-22s displacement %8.2f cm   abs. acceleration %6.3f g\n",
+                    model.dofs[d].label.c_str(), 100 * r.displacement[d].value,
+                    r.absolute_acceleration[d].value / kGravity);
+      out << line;
+    }
+    const std::size_t count = s.story_heights.size();
+    for (std::size_t k = 0; k < count; ++k, ++story_index) {
+      std::snprintf(line, sizeof line, "  %-22s drift %8.3f cm   drift ratio %.3f %%\n",
+                    r.stories[story_index].label.c_str(), 100 * r.drift[story_index].value,
+                    100 * r.drift_ratio[story_index].value);
+      out << line;
+    }
+  }
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& el = *model.elements[e];
+    std::snprintf(line, sizeof line, "  %-22s peak force %8.1f kN   peak %s %6.2f cm",
+                  el.label().c_str(), r.element_outputs[e][0].value / 1e3,
+                  el.output_name(1).c_str(), 100 * r.element_outputs[e][1].value);
+    out << line;
+    if (el.output_count() > 3 && el.output_name(2) == "impacts") {
+      std::snprintf(line, sizeof line, "   %d impacts, max impact velocity %.3f m/s",
+                    static_cast<int>(r.element_outputs[e][2].value), r.element_outputs[e][3].value);
+      out << line;
+    }
+    out << '\n';
+  }
+  std::snprintf(line, sizeof line,
+                "Energy: input %.4g kJ, hysteretic %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
+                r.energy.input / 1e3, r.energy.hysteretic / 1e3, r.energy.viscous / 1e3,
+                r.energy.relative_error);
+  out << line;
+  std::snprintf(line, sizeof line,
+                "Steps: %ld accepted, %ld rejected, %ld Newton iterations, step %.3g..%.3g s, "
+                "%.1f ms\n",
+                r.stats.steps, r.stats.rejected_steps, r.stats.newton_iterations, r.stats.min_step,
+                r.stats.max_step, 1e3 * r.stats.wall_seconds);
+  out << line;
+}
+
+}  // namespace isopound

@@ -1,0 +1,326 @@
+// Typed reads from a YAML tree with file:line:key errors (see yaml_reader.h).
+// yaml-cpp 0.7: never index a missing key (InvalidNode, no position); look keys up by iterating.
+#include "solver/io/yaml_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+namespace isopound {
+namespace {
+
+std::string format_message(const std::string& file, int line, int column, const std::string& key,
+                           const std::string& what) {
+  std::string out = file;
+  if (line > 0) {
+    out += ":" + std::to_string(line);
+    if (column > 0) out += ":" + std::to_string(column);
+  }
+  out += ": ";
+  if (!key.empty()) out += key + ": ";
+  return out + what;
+}
+
+bool has_position(const YAML::Mark& mark) {
+  return !mark.is_null() && mark.line >= 0;
+}
+
+// Node::Mark() throws on an invalid node; such nodes simply have no position.
+YAML::Mark mark_of(const YAML::Node& node) {
+  return node.IsDefined() ? node.Mark() : YAML::Mark::null_mark();
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string join(const std::vector<std::string_view>& names) {
+  std::string out;
+  for (const auto& name : names) {
+    if (!out.empty()) out += ", ";
+    out += name;
+  }
+  return out;
+}
+
+// Case-insensitive edit distance, for "did you mean" on misspelt keys.
+std::size_t edit_distance(std::string_view a_text, std::string_view b_text) {
+  const std::string a = lower(a_text), b = lower(b_text);
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+InputError::InputError(std::string file, int line, int column, std::string key, std::string what)
+    : std::runtime_error(format_message(file, line, column, key, what)),
+      file_(std::move(file)),
+      line_(line),
+      column_(column),
+      key_(std::move(key)),
+      detail_(std::move(what)) {}
+
+InputNode::InputNode(YAML::Node root, std::string file)
+    : InputNode(std::move(root), std::move(file), "", YAML::Mark::null_mark(),
+                YAML::Mark::null_mark()) {}
+
+InputNode::InputNode(YAML::Node node, std::string file, std::string path, YAML::Mark key_mark,
+                     YAML::Mark parent_mark)
+    : node_(std::move(node)),
+      file_(std::move(file)),
+      path_(std::move(path)),
+      key_mark_(key_mark),
+      parent_mark_(parent_mark) {}
+
+// A scalar's own mark is where its text is. A null value's mark is wherever the next token
+// starts (often the next line), and a block map's is its first key: prefer the key for those.
+YAML::Mark InputNode::mark() const {
+  const YAML::Mark own = mark_of(node_);
+  if (node_.IsDefined() && node_.IsScalar() && has_position(own)) return own;
+  if (has_position(key_mark_)) return key_mark_;
+  if (has_position(own)) return own;
+  return parent_mark_;
+}
+
+void InputNode::fail_at(const std::string& file, const YAML::Mark& mark, const std::string& key,
+                        const std::string& what) {
+  if (!has_position(mark)) throw InputError(file, 0, 0, key, what);
+  throw InputError(file, mark.line + 1, mark.column + 1, key, what);
+}
+
+void InputNode::fail(const std::string& what) const {
+  fail_at(file_, mark(), path_, what);
+}
+
+void InputNode::fail_at_key(std::string_view key, const std::string& what) const {
+  fail_at(file_, mark(), child_path(key), what);
+}
+
+std::string InputNode::child_path(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+}
+
+std::string InputNode::kind() const {
+  if (!node_.IsDefined() || node_.IsNull()) return "an empty value";
+  if (node_.IsMap()) return "a map";
+  if (node_.IsSequence()) return "a list";
+  return "'" + node_.Scalar() + "'";
+}
+
+void InputNode::expect_keys(std::initializer_list<std::string_view> allowed) const {
+  expect_keys(std::vector<std::string_view>(allowed));
+}
+
+void InputNode::expect_keys(const std::vector<std::string_view>& names) const {
+  if (!node_.IsDefined() || node_.IsNull()) {
+    if (path_.empty()) fail("the document is empty; expected a map with keys: " + join(names));
+    return;
+  }
+  if (!node_.IsMap()) fail("expected a map with keys: " + join(names) + "; got " + kind());
+  std::vector<std::pair<std::string, YAML::Mark>> seen;
+  for (const auto& entry :
+       node_) {  // by value per element: it->first would dangle (iterator proxy)
+    const YAML::Node& key = entry.first;
+    YAML::Mark key_mark = mark_of(key);
+    if (!has_position(key_mark)) key_mark = mark();
+    if (!key.IsScalar())
+      fail_at(file_, key_mark, path_,
+              "keys must be plain names, got " + InputNode(key, file_).kind());
+    const std::string& name = key.Scalar();
+    for (const auto& [previous, previous_mark] : seen) {
+      if (previous != name) continue;
+      const std::string first_line =
+          has_position(previous_mark)
+              ? " (first at line " + std::to_string(previous_mark.line + 1) + ")"
+              : "";
+      fail_at(file_, key_mark, child_path(name), "duplicate key '" + name + "'" + first_line);
+    }
+    seen.emplace_back(name, key_mark);
+    if (std::find(names.begin(), names.end(), name) != names.end()) continue;
+    std::string_view suggestion;
+    std::size_t best = 3;  // close spellings only: at most 2 edits, and fewer edits than letters
+    for (const auto& candidate : names) {
+      const std::size_t d = edit_distance(name, candidate);
+      if (d < best && d < std::max(name.size(), candidate.size())) {
+        best = d;
+        suggestion = candidate;
+      }
+    }
+    const std::string hint =
+        suggestion.empty() ? "" : " (did you mean '" + std::string(suggestion) + "'?)";
+    fail_at(file_, key_mark, child_path(name),
+            "unknown key '" + name + "'" + hint + "; allowed: " + join(names));
+  }
+}
+
+std::optional<InputNode> InputNode::find(std::string_view key) const {
+  if (!node_.IsDefined() || !node_.IsMap()) return std::nullopt;
+  for (const auto& entry : node_) {
+    if (entry.first.IsScalar() && entry.first.Scalar() == key)
+      return InputNode(entry.second, file_, child_path(key), mark_of(entry.first), mark());
+  }
+  return std::nullopt;
+}
+
+bool InputNode::has(std::string_view key) const {
+  return find(key).has_value();
+}
+
+InputNode InputNode::required(std::string_view key) const {
+  std::optional<InputNode> child = find(key);
+  if (!child) fail_at_key(key, "missing required key '" + std::string(key) + "'");
+  return *child;
+}
+
+std::vector<InputNode> InputNode::elements() const {
+  if (!node_.IsDefined() || !node_.IsSequence()) fail("expected a list, got " + kind());
+  std::vector<InputNode> out;
+  out.reserve(node_.size());
+  const YAML::Mark here = mark();
+  for (const auto& element : node_)
+    out.push_back(InputNode(element, file_, path_ + "[" + std::to_string(out.size()) + "]",
+                            YAML::Mark::null_mark(), here));
+  return out;
+}
+
+std::string InputNode::string() const {
+  if (!node_.IsDefined() || node_.IsNull()) fail("missing value");
+  if (!node_.IsScalar()) fail("expected a single value, got " + kind());
+  return node_.Scalar();
+}
+
+double InputNode::quantity(const Dimension& expected, Bound bound) const {
+  if (node_.IsDefined() && (node_.IsMap() || node_.IsSequence()))
+    fail("expected a number with an optional unit (e.g. '340 t', '2 s', '5 %'), got " + kind());
+  const std::string text = string();
+  double value = 0.0;
+  try {
+    value = parse_quantity_as(text, expected);
+  } catch (const UnitError& e) {
+    fail(e.what());
+  }
+  const std::string got = " (got '" + text + "')";
+  switch (bound) {
+    case Bound::kAny:
+      break;
+    case Bound::kPositive:
+      if (!(value > 0.0)) fail("must be > 0" + got);
+      break;
+    case Bound::kNonNegative:
+      if (!(value >= 0.0)) fail("must be >= 0" + got);
+      break;
+    case Bound::kNonZero:
+      if (value == 0.0) fail("must not be 0" + got);
+      break;
+    case Bound::kFraction:
+      if (!(value >= 0.0 && value < 1.0)) fail("must be in [0, 1), e.g. '5 %' or 0.05" + got);
+      break;
+  }
+  return value;
+}
+
+int InputNode::integer(int min, int max) const {
+  if (node_.IsDefined() && (node_.IsMap() || node_.IsSequence()))
+    fail("expected an integer, got " + kind());
+  const std::string text = string();
+  std::string_view digits = text;
+  while (!digits.empty() && std::isspace(static_cast<unsigned char>(digits.back())))
+    digits.remove_suffix(1);
+  if (digits.starts_with("+")) digits.remove_prefix(1);
+  long long value = 0;
+  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (digits.empty() || ec != std::errc() || ptr != digits.data() + digits.size())
+    fail("expected an integer, got '" + text + "'");
+  if (value < min || value > max) {
+    const std::string range =
+        max == std::numeric_limits<int>::max()
+            ? ">= " + std::to_string(min)
+            : "between " + std::to_string(min) + " and " + std::to_string(max);
+    fail("must be " + range + " (got " + text + ")");
+  }
+  return static_cast<int>(value);
+}
+
+bool InputNode::boolean() const {
+  if (node_.IsDefined() && (node_.IsMap() || node_.IsSequence()))
+    fail("expected true or false, got " + kind());
+  const std::string text = lower(string());
+  if (text == "true" || text == "yes" || text == "on") return true;
+  if (text == "false" || text == "no" || text == "off") return false;
+  fail("expected true or false, got '" + string() + "'");
+}
+
+void InputNode::read_quantity(std::string_view key, const Dimension& expected, Bound bound,
+                              double& out) const {
+  if (const auto child = find(key)) out = child->quantity(expected, bound);
+}
+void InputNode::read_number(std::string_view key, Bound bound, double& out) const {
+  if (const auto child = find(key)) out = child->number(bound);
+}
+void InputNode::read_integer(std::string_view key, int min, int max, int& out) const {
+  if (const auto child = find(key)) out = child->integer(min, max);
+}
+void InputNode::read_boolean(std::string_view key, bool& out) const {
+  if (const auto child = find(key)) out = child->boolean();
+}
+void InputNode::read_string(std::string_view key, std::string& out) const {
+  if (const auto child = find(key)) out = child->string();
+}
+
+void InputNode::fail_unknown_choice(const std::string& text,
+                                    const std::vector<std::string_view>& names) const {
+  const std::size_t dot = path_.find_last_of('.');
+  std::string noun = dot == std::string::npos ? path_ : path_.substr(dot + 1);
+  if (noun.empty()) noun = "value";
+  fail("unknown " + noun + " '" + text + "'; allowed: " + join(names));
+}
+
+std::string read_input_file(const std::string& path, std::string_view expected) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path, 0, 0, "", "file not found");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, 0, "", "is a directory, expected " + std::string(expected));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, 0, "", "cannot open the file");
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw InputError(path, 0, 0, "", "cannot read the file");
+  return text;
+}
+
+YAML::Node parse_single_document(const std::string& text, const std::string& path,
+                                 std::string_view what) {
+  const auto line = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.line + 1; };
+  const auto column = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.column + 1; };
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, line(e.mark), column(e.mark), "", "YAML syntax error: " + e.msg);
+  }
+  if (documents.size() > 1) {
+    const YAML::Mark second =
+        documents[1].IsDefined() ? documents[1].Mark() : YAML::Mark::null_mark();
+    throw InputError(path, line(second), column(second), "",
+                     "more than one YAML document ('---'); " + std::string(what) + " holds one");
+  }
+  return documents.empty() ? YAML::Node() : documents.front();
+}
+
+}  // namespace isopound

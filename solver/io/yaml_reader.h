@@ -1,0 +1,134 @@
+// Typed reads from a YAML tree (quantity, number, integer, bool, string, enum) whose errors name
+// "file:line:col: key.path: what". yaml-cpp marks are 0-based; here lines/columns are 1-based, 0 =
+// unknown.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "solver/io/units.h"
+
+namespace isopound {
+
+// An input problem: message is "file:line:col: key.path: what" (line, col 1-based). With line 0
+// (no position known) it is "file: key.path: what"; an empty key drops "key.path: ".
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, int line, int column, std::string key, std::string what);
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  int column() const { return column_; }
+  const std::string& key() const { return key_; }
+  const std::string& detail() const { return detail_; }  // the "what" part alone
+
+ private:
+  std::string file_;
+  int line_;
+  int column_;
+  std::string key_;
+  std::string detail_;
+};
+
+// Reads a whole input file; a missing, unreadable or directory path is an InputError (line 0).
+// `expected` names what the file should be, for the message ("a YAML model file").
+std::string read_input_file(const std::string& path, std::string_view expected);
+// Parses text holding one YAML document (none gives a null node). A syntax error, or a second
+// document ("---"), is an InputError at its line; `what` names the file's kind for the message.
+YAML::Node parse_single_document(const std::string& text, const std::string& path,
+                                 std::string_view what);
+
+// Bounds checked by InputNode::quantity/number, with the message they give.
+enum class Bound {
+  kAny,
+  kPositive,     // > 0
+  kNonNegative,  // >= 0
+  kNonZero,      // != 0
+  kFraction,     // in [0, 1): damping ratios
+};
+
+// A node of an input file together with its key path ("building.floors[1].mass") and the
+// nearest known position. Nodes built in code have no mark: errors then point at the nearest
+// parent that has one, or at line 0.
+class InputNode {
+ public:
+  // The root of a document; `file` is used in messages only.
+  InputNode(YAML::Node root, std::string file);
+
+  const YAML::Node& yaml() const { return node_; }
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }  // "" for the root
+  bool is_map() const { return node_.IsMap(); }
+  bool is_sequence() const { return node_.IsSequence(); }
+
+  // --- structure ---
+  // Checks this is a map whose keys are all in `allowed`, each once (catches typos). An empty
+  // value ("analysis:" with every key commented out) counts as an empty map, except at the root.
+  void expect_keys(std::initializer_list<std::string_view> allowed) const;
+  void expect_keys(const std::vector<std::string_view>& allowed) const;
+  bool has(std::string_view key) const;
+  std::optional<InputNode> find(std::string_view key) const;
+  // Throws "missing required key" at this node's position when absent.
+  InputNode required(std::string_view key) const;
+  // The elements of a sequence, as "path[i]".
+  std::vector<InputNode> elements() const;
+
+  // --- typed reads of this node, which must be a scalar ---
+  // A quantity with an optional unit ("340 t"); a bare number is SI of `expected`.
+  double quantity(const Dimension& expected, Bound bound = Bound::kAny) const;
+  // A dimensionless number; "5 %" and "0.05" both give 0.05.
+  double number(Bound bound = Bound::kAny) const { return quantity(dim::kNone, bound); }
+  int integer(int min, int max) const;
+  bool boolean() const;  // true/false, yes/no, on/off
+  std::string string() const;
+  // One of the named values: choice<Model>({{"linear", kLinear}, ...}).
+  template <typename T>
+  T choice(std::initializer_list<std::pair<std::string_view, T>> options) const {
+    const std::string text = string();
+    std::vector<std::string_view> names;
+    for (const auto& [name, value] : options) {
+      if (name == text) return value;
+      names.push_back(name);
+    }
+    fail_unknown_choice(text, names);
+  }
+
+  // --- optional keys of this map: each sets `out` only when `key` is present ---
+  void read_quantity(std::string_view key, const Dimension& expected, Bound bound,
+                     double& out) const;
+  void read_number(std::string_view key, Bound bound, double& out) const;
+  void read_integer(std::string_view key, int min, int max, int& out) const;
+  void read_boolean(std::string_view key, bool& out) const;
+  void read_string(std::string_view key, std::string& out) const;
+
+  // --- errors ---
+  std::string kind() const;  // for messages: "a map", "a list", "an empty value", "'text'"
+  [[noreturn]] void fail(const std::string& what) const;
+  // An error about the key `key` of this map (which may be absent), at this node's position.
+  [[noreturn]] void fail_at_key(std::string_view key, const std::string& what) const;
+
+ private:
+  InputNode(YAML::Node node, std::string file, std::string path, YAML::Mark key_mark,
+            YAML::Mark parent_mark);
+  YAML::Mark mark() const;  // the best known 0-based position, possibly null
+  std::string child_path(std::string_view key) const;
+  [[noreturn]] void fail_unknown_choice(const std::string& text,
+                                        const std::vector<std::string_view>& names) const;
+  [[noreturn]] static void fail_at(const std::string& file, const YAML::Mark& mark,
+                                   const std::string& key, const std::string& what);
+
+  YAML::Node node_;
+  std::string file_;
+  std::string path_;
+  YAML::Mark
+      key_mark_;  // where the key naming this node is written; null for the root and list items
+  YAML::Mark parent_mark_;  // the parent's best known position, the fallback
+};
+
+}  // namespace isopound

@@ -1,0 +1,122 @@
+// Plain configuration structs of an analysis, filled from YAML in one place (model_input.cpp).
+// All values SI (m, kg, s, N); ratios as fractions (5 % -> 0.05).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "solver/excitation/ground_motion.h"
+#include "solver/materials/impact_law.h"
+
+namespace isopound {
+
+// Isolation system of a 2D building (the whole isolation layer as one element).
+struct IsolatorConfig {
+  enum class Model { kLinear, kBilinear, kBoucWen };
+  Model model = Model::kBoucWen;
+  double period = 2.0;               // T_b, s: K_post = m (2 pi / T_b)^2
+  double strength_ratio = 0.05;      // Q/W: Q = (Q/W) m g
+  double yield_displacement = 0.01;  // u_y, m
+  // Bouc-Wen shape (THEORY eq. 2.1-2.2).
+  double n = 2.0;
+  double A = 1.0;
+  double beta = 0.5;
+  double gamma = 0.5;
+  // false: Q is the characteristic strength, F_y = Q + K_post u_y (default, THEORY section 2);
+  // true: the given strength (Q/W) m g is the yield force F_y itself.
+  bool strength_is_yield_force = false;
+  // Mass carried by the isolators, kg; 0 means the total mass of the building incl. base slab.
+  double carried_mass = 0.0;
+};
+
+struct FloorConfig {
+  double mass = 0.0;       // kg, lumped at the floor
+  double stiffness = 0.0;  // N/m, of the story below this floor
+  double height = 0.0;     // m, of the story below this floor
+};
+
+struct SuperstructureDamping {
+  enum class Type { kRayleigh, kModal, kNone };
+  Type type = Type::kRayleigh;
+  double ratio = 0.02;  // xi_s, at both Rayleigh modes or at every mode (modal)
+  int mode_a = 1;       // Rayleigh: the two fixed-base modes (1-based) that get `ratio`
+  int mode_b = 2;
+};
+
+// Moat walls beside one level (usually the base slab). Sign convention: "right" is +x, so a
+// right wall is hit when the level moves by +gap, a left wall by -gap.
+struct WallConfig {
+  bool left = true, right = true;  // sides: both (default) | left | right
+  double gap_left = 0.2;           // m, clear distance at rest (>= 0)
+  double gap_right = 0.2;          // m
+  int level = 0;           // level index that pounds (0 = base slab of an isolated building)
+  ImpactLawConfig impact;  // law, k, e, ...; mass_2 is the wall mass below, mass_1 the level's
+  double mass = 500e3;     // kg, wall mass (thesis 500 t)
+  // Flexible wall: a single-DOF structure (mass, stiffness, damping ratio) excited by the same
+  // ground motion. stiffness = 0: rigid, immovable; its mass enters only the impact damping.
+  double stiffness = 0.0;      // N/m
+  double damping_ratio = 0.0;  // of the wall's own oscillator
+};
+
+// A 2D shear building: optional base slab on isolators, floors bottom to top.
+struct BuildingConfig {
+  std::string name = "building";
+  bool isolated = true;    // false: fixed base (no base slab DOF)
+  double base_mass = 0.0;  // kg, base slab (isolated only)
+  std::vector<FloorConfig> floors;
+  IsolatorConfig isolator;
+  SuperstructureDamping damping;
+  double isolation_damping_ratio = 0.05;  // xi_b: c_b = 2 xi_b m_tot omega_b
+  std::vector<WallConfig> walls;          // moat walls (usually one entry, both sides)
+};
+
+// A neighbouring building at a gap; floors at equal elevation pound slab to slab.
+struct NeighbourConfig {
+  BuildingConfig building;
+  bool right = true;       // side of the main building it stands on (+x = right)
+  double gap = 0.1;        // m, clear distance at rest
+  ImpactLawConfig impact;  // masses are taken from the two colliding levels
+};
+
+struct GroundMotionConfig {
+  bool use_pulse = true;    // no record given -> built-in pulse
+  std::string record_path;  // resolved relative to the model file
+  RecordReadOptions read;   // format, column, dt, unit, scale
+  PulseParameters pulse;
+  double extra_time = 0.0;  // s of free vibration computed after the record ends
+};
+
+struct AnalysisConfig {
+  enum class Stepping { kAdaptive, kFixed };
+  Stepping stepping = Stepping::kAdaptive;
+  // Fixed: the step. Adaptive: the largest step; 0 = min(record interval,
+  // T_min / steps_per_period) with T_min the shortest period of the initial linearised model.
+  // Steps always divide the record interval, so samples are never skipped.
+  double dt = 0.0;
+  double steps_per_period = 25.0;
+  // Adaptive: local error tolerance (see THEORY-notes.md, "step control").
+  double tolerance = 1e-3;
+  int max_halvings = 16;  // smallest adaptive step = dt / 2^max_halvings
+  // During a contact the step is at most (contact period) / steps_per_contact, with the
+  // contact period pi sqrt(m_eff / k_tangent).
+  double steps_per_contact = 100.0;
+  bool locate_events = true;       // cut steps at contact onset / separation / phase change
+  double newton_tolerance = 1e-9;  // relative residual, see newmark.h
+  int max_iterations = 25;
+};
+
+struct OutputConfig {
+  double interval = 0.0;  // s between rows of histories.csv; 0 = every record sample
+  bool histories = true;
+};
+
+struct ModelConfig {
+  std::string source;  // the YAML file it came from (for messages)
+  BuildingConfig building;
+  std::vector<NeighbourConfig> neighbours;
+  GroundMotionConfig ground_motion;
+  AnalysisConfig analysis;
+  OutputConfig output;
+};
+
+}  // namespace isopound

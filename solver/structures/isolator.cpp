@@ -1,0 +1,59 @@
+// Isolator laws from the engineer's parameters: derive K_post, F_y, K_el, alpha and build the
+// chosen uniaxial law (THEORY section 2, eq. 2.4; F_y convention is an option).
+#include "solver/structures/isolator.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "solver/materials/bilinear.h"
+#include "solver/materials/bouc_wen.h"
+#include "solver/materials/linear_material.h"
+
+namespace isopound {
+
+IsolatorProperties isolator_properties(const IsolatorConfig& c, double m) {
+  if (!(m > 0) || !(c.period > 0) || !(c.yield_displacement > 0) || !(c.strength_ratio >= 0))
+    throw std::invalid_argument("isolator: need carried mass > 0, Tb > 0, uy > 0, QW >= 0");
+  IsolatorProperties p;
+  const double omega_b = 2.0 * std::numbers::pi / c.period;
+  p.post_yield_stiffness = m * omega_b * omega_b;
+  p.yield_displacement = c.yield_displacement;
+  const double strength = c.strength_ratio * m * kGravity;
+  p.yield_force = c.strength_is_yield_force
+                      ? strength
+                      : strength + p.post_yield_stiffness * c.yield_displacement;
+  p.elastic_stiffness = p.yield_force / c.yield_displacement;
+  p.alpha = p.elastic_stiffness > 0 ? p.post_yield_stiffness / p.elastic_stiffness : 1.0;
+  p.characteristic_strength = (1.0 - p.alpha) * p.yield_force;
+  if (c.model != IsolatorConfig::Model::kLinear && !(p.alpha < 1.0))
+    throw std::invalid_argument("isolator: the yield force is not above K_post u_y (alpha = " +
+                                std::to_string(p.alpha) + " >= 1); raise QW or uy, or lengthen Tb");
+  return p;
+}
+
+std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& c, double m) {
+  const IsolatorProperties p = isolator_properties(c, m);
+  switch (c.model) {
+    case IsolatorConfig::Model::kLinear:
+      return std::make_unique<LinearMaterial>(p.post_yield_stiffness);
+    case IsolatorConfig::Model::kBilinear:
+      return std::make_unique<BilinearMaterial>(p.elastic_stiffness, p.alpha, p.yield_force);
+    case IsolatorConfig::Model::kBoucWen: {
+      BoucWenParameters bw;
+      bw.elastic_stiffness = p.elastic_stiffness;
+      bw.alpha = p.alpha;
+      bw.yield_force = p.yield_force;
+      bw.yield_displacement = p.yield_displacement;
+      bw.A = c.A;
+      bw.beta = c.beta;
+      bw.gamma = c.gamma;
+      bw.n = c.n;
+      return std::make_unique<BoucWenMaterial>(bw);
+    }
+  }
+  throw std::invalid_argument("isolator: unknown model");
+}
+
+}  // namespace isopound

@@ -1,0 +1,22 @@
+// Pounding set-ups in 2D: moat walls beside a level (rigid or a single-DOF structure) and
+// neighbouring buildings pounding slab to slab at equal elevations, as Contact1D elements.
+#pragma once
+
+#include "solver/core/model.h"
+#include "solver/structures/config.h"
+
+namespace isopound {
+
+// Adds the walls of structure `structure` (already in the model, built from `building`).
+void add_walls(Model& model, int structure, const BuildingConfig& building,
+               double steps_per_contact);
+
+// Adds the neighbour as a new structure and its contacts with structure `main`.
+void add_neighbour(Model& model, int main, const BuildingConfig& main_building,
+                   const NeighbourConfig& neighbour, double steps_per_contact);
+
+// Elevation of each level of a building, m: base slab at 0, floor k at the sum of the story
+// heights below it (fixed base: floor 1 at the first story height).
+std::vector<double> level_elevations(const BuildingConfig& building);
+
+}  // namespace isopound

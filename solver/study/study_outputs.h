@@ -1,0 +1,52 @@
+// Peaks a study keeps per run, addressed by selectors "<where>.<quantity>" over the main building
+// (structure 0) and all elements. Values are SI peaks of |x| over time; a group gives its maximum.
+//
+//   base | roof | floor<N> | floors | levels  .  displacement | velocity | absolute_acceleration
+//       (floors: max over floors 1..N; levels: also the base slab)
+//   story<N> | stories  .  drift | drift_ratio
+//   energy  .  input | kinetic | elastic | viscous | hysteretic | error | relative_error |
+//   max_relative_error ground  .  pga | pgv | pgd <element>  .  <output>   element label after its
+//   last '/' or the full label, '*' and '?'
+//       wildcards ("isolator.force", "wall*.impacts"); max over the matches, or their sum with
+//       the prefix "sum:" ("sum:wall*.impacts"). A case without such elements (walls removed in
+//       a variant) gets an empty cell; a selector that matches in no case is an error.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "solver/core/analysis.h"
+#include "solver/core/model.h"
+#include "solver/excitation/ground_motion.h"
+
+namespace isopound {
+
+struct OutputSelector {
+  enum class Kind { kLevel, kStory, kElement, kEnergy, kGround };
+  Kind kind = Kind::kLevel;
+  std::string where;     // "base", "floor3", "stories", an element pattern, ...
+  std::string quantity;  // "displacement", "drift_ratio", "force", "pga", ...
+  bool sum = false;      // elements: sum over the matches instead of the maximum
+  std::string text;      // as written
+};
+
+// Checks the grammar above. Throws std::invalid_argument naming the problem.
+OutputSelector parse_output_selector(std::string_view text);
+
+// A selector bound to the DOFs, stories or element outputs of one model.
+struct ResolvedOutput {
+  OutputSelector::Kind kind = OutputSelector::Kind::kLevel;
+  int quantity = 0;                  // which peak family / energy term / ground peak
+  std::vector<int> indices;          // DOFs, stories or elements
+  std::vector<int> element_outputs;  // per element in `indices`: its output index
+  bool sum = false;
+};
+
+// Throws std::invalid_argument when the model has no such level, story, element or output.
+ResolvedOutput resolve_output(const OutputSelector& selector, const Model& model);
+
+double evaluate_output(const ResolvedOutput& output, const AnalysisResult& result,
+                       const GroundMotionPeaks& ground);
+
+}  // namespace isopound
