@@ -18,6 +18,9 @@ class Element {
   virtual void add_force(Eigen::VectorXd& f) const = 0;
   // K += df/du + velocity_factor df/dv (Newmark passes velocity_factor = dv/du = 2/h).
   virtual void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const = 0;
+  // False if add_tangent() may add a non-symmetric matrix (coupled bearings, friction): the
+  // stepper then factors with LU instead of a symmetric factorisation.
+  virtual bool symmetric_tangent() const { return true; }
   // Power of the element force on the DOFs at the trial state, v . f_e (W).
   virtual double power(const Eigen::VectorXd& v) const = 0;
   // Recoverable energy at the trial state (J); work minus this is dissipated.
