@@ -185,8 +185,9 @@ int run_spectra(const SpectraArgs& a) {
     add("", lo_p, lo_d, Rgb{214, 39, 40}, 1.5);
   }
   for (std::size_t k = 0; k < rotd.size(); ++k) {
-    add(rotd[k].name + " RotD50", rotd[k].psa50, rotd[k].sd50, series_colour(2 * k), 2.0);
-    add(rotd[k].name + " RotD100", rotd[k].psa100, rotd[k].sd100, series_colour(2 * k + 1), 2.0);
+    const std::string pre = rotd.size() > 1 ? rotd[k].name + " " : "";
+    add(pre + "RotD50", rotd[k].psa50, rotd[k].sd50, series_colour(2 * k), 2.0);
+    add(pre + "RotD100", rotd[k].psa100, rotd[k].sd100, series_colour(2 * k + 1), 2.0);
   }
   if (many) {
     // Individual records are grey and unlabelled in the legend.
