@@ -2,6 +2,8 @@
 // PNG rows are read top to bottom; pixel(x, y_up) takes y from the bottom like Figure coordinates.
 #pragma once
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -9,6 +11,9 @@
 #include "test_support.h"
 
 namespace isopound::post::test {
+
+using ::isopound::test::run_command;
+using ::isopound::test::source_dir;
 
 // A fresh directory under the build tree for one test.
 inline std::filesystem::path scratch_dir(const std::string& name) {

@@ -1,0 +1,187 @@
+// plot and animate on real 2D runs: a pounding run of configs/ made by the solver, every .vtu read
+// back with VTK's XML reader and checked against the run's histories and summary.json; bad input.
+#include <gtest/gtest.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+#include "post/run_data.h"
+#include "post_test_support.h"
+
+namespace isopound::post {
+namespace {
+
+// The chapter-4 Kelvin-Voigt pounding run (3-storey, walls both sides, Sylmar record from
+// ../shared): made once per test binary (about 0.1 s).
+const std::filesystem::path& pounding_run() {
+  static const std::filesystem::path dir = [] {
+    const auto d = test::scratch_dir("run-c4");
+    const auto r = test::run_solver("run " + (test::source_dir() / "configs" /
+                                              "chapter4-3storey-kelvin_voigt.yaml").string() +
+                                    " -o " + d.string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return d;
+  }();
+  return dir;
+}
+
+TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact) {
+  ISOPOUND_REQUIRE_RECORDS();  // the chapter-4 configs use a shared record
+  const auto run_dir = pounding_run();
+  const auto out = test::scratch_dir("anim");
+  const double fps = 10.0;
+  const auto r = test::run_post("animate " + run_dir.string() + " --fps 10 --scale 5 -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+
+  // Independent reading of the histories (header names) and the summary.
+  const RunData run = read_run(run_dir);
+  const int u_base = run.find("3-storey-bw/base", "u");
+  const int f_left = run.find("3-storey-bw/wall left (base)", "force");
+  const int f_right = run.find("3-storey-bw/wall right (base)", "force");
+  ASSERT_GE(u_base, 0);
+  ASSERT_GE(f_left, 0);
+  std::ifstream sj(run_dir / "summary.json");
+  const auto summary = nlohmann::json::parse(sj);
+  // Largest level displacement of the run (every level's point carries its level's u).
+  double peak_level = 0.0;
+  for (const auto& level : summary["structures"][0]["levels"])
+    peak_level = std::max(peak_level, level["displacement"]["peak_m"].get<double>());
+
+  // The .pvd: one DataSet per frame at k / fps, files in order.
+  std::ifstream pvd(out / "animation.pvd");
+  std::stringstream text;
+  text << pvd.rdbuf();
+  const std::string s = text.str();
+  EXPECT_NE(s.find("<VTKFile type=\"Collection\""), std::string::npos);
+  const std::regex item("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+  std::vector<std::pair<double, std::string>> frames;
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), item); it != std::sregex_iterator(); ++it)
+    frames.push_back({std::stod((*it)[1]), (*it)[2]});
+  const double t_end = run.time().back();
+  ASSERT_EQ(frames.size(), static_cast<std::size_t>(std::floor(t_end * fps + 1e-9)) + 1);
+
+  double max_u = 0.0;
+  int contact_frames = 0;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    EXPECT_NEAR(frames[k].first, k / fps, 1e-12);
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((out / frames[k].second).string().c_str());
+    reader->Update();
+    vtkUnstructuredGrid* g = reader->GetOutput();
+    ASSERT_GT(g->GetNumberOfCells(), 0) << frames[k].second;
+    EXPECT_EQ(g->GetPoints()->GetDataType(), VTK_DOUBLE);
+    vtkDataArray* disp = g->GetPointData()->GetArray("displacement");
+    vtkDataArray* block = g->GetCellData()->GetArray("block");
+    vtkDataArray* force = g->GetCellData()->GetArray("contact_force");
+    ASSERT_TRUE(disp && block && force && g->GetPointData()->GetArray("absolute_acceleration") &&
+                g->GetCellData()->GetArray("drift_ratio") &&
+                g->GetCellData()->GetArray("bearing_force"));
+    EXPECT_EQ(disp->GetDataType(), VTK_DOUBLE);
+    EXPECT_EQ(block->GetDataType(), VTK_DOUBLE);
+    for (vtkIdType i = 0; i < disp->GetNumberOfTuples(); ++i) max_u = std::max(max_u, std::abs(disp->GetComponent(i, 0)));
+    // Contact cells exactly when a wall force is positive at this frame time.
+    const double t = frames[k].first;
+    const int p_left = run.find("3-storey-bw/wall left (base)", "penetration");
+    const int p_right = run.find("3-storey-bw/wall right (base)", "penetration");
+    const int expected = (value_at(run, f_left, t) > 0.0 || value_at(run, p_left, t) > 0.0) +
+                         (value_at(run, f_right, t) > 0.0 || value_at(run, p_right, t) > 0.0);
+    int contacts = 0;
+    for (vtkIdType c = 0; c < block->GetNumberOfTuples(); ++c)
+      if (block->GetComponent(c, 0) == 4.0) {
+        ++contacts;
+        EXPECT_NE(force->GetComponent(c, 0), 0.0);
+      }
+    EXPECT_EQ(contacts, expected) << "t = " << t;
+    contact_frames += contacts > 0;
+  }
+  EXPECT_GT(contact_frames, 0);  // the run pounds: some frames must show it
+  // Displacements are the true ones (not scaled): not above the summary's peak (taken over every
+  // step) and within 10 % of it at 10 frames/s (the isolated building sways with a ~2 s period).
+  EXPECT_LE(max_u, peak_level * (1 + 1e-9));
+  EXPECT_GT(max_u, 0.9 * peak_level);
+  std::filesystem::remove_all(out);
+}
+
+TEST(PostPlot, RunFiguresAreWrittenNonBlankWithTheirSize) {
+  ISOPOUND_REQUIRE_RECORDS();
+  const auto run_dir = pounding_run();
+  const auto out = test::scratch_dir("plot");
+  const auto r = test::run_post("plot " + run_dir.string() + " -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const test::Image th = test::read_png((out / "time_histories.png").string());
+  EXPECT_EQ(th.width, 1000);
+  EXPECT_EQ(th.height, 230 * 4 + 40);  // four panels: base, drifts, accelerations, impacts
+  EXPECT_GT(th.variance(), 100.0);
+  const test::Image hy = test::read_png((out / "hysteresis.png").string());
+  EXPECT_EQ(hy.width, 1000);  // isolator + two walls: two columns
+  EXPECT_GT(hy.variance(), 100.0);
+  std::filesystem::remove_all(out);
+}
+
+TEST(PostCli, BadInputGivesOneClearErrorAndNonZeroExit) {
+  const auto dir = test::scratch_dir("bad");
+  auto r = test::run_post("plot " + (dir / "nope").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("run directory not found"), std::string::npos) << r.output;
+  r = test::run_post("animate " + dir.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("histories.csv: cannot open"), std::string::npos) << r.output;
+  {
+    std::ofstream h(dir / "histories.csv");
+    h << "time [s],ground_acceleration [m/s2],b/base u [m]\n0,0,0\n0.01,x,0\n";
+  }
+  r = test::run_post("plot " + dir.string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("histories.csv:3: column 'ground_acceleration [m/s2]': not a number"),
+            std::string::npos)
+      << r.output;
+  r = test::run_post("spectra " + (dir / "missing.AT2").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("record not found"), std::string::npos) << r.output;
+  r = test::run_post("animate " + dir.string() + " --fps 0");
+  EXPECT_NE(r.exit_code, 0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PostHeadless, PrivateXvfbIsAnnouncedInOneLineAndGoneAfterTheCommand) {
+  const auto dir = test::scratch_dir("xvfb");
+  {
+    std::ofstream rec(dir / "rec.txt");
+    for (int i = 0; i < 200; ++i) rec << std::sin(0.1 * i) << "\n";
+  }
+  const auto r = test::run_command("env -u DISPLAY " + std::string(ISOPOUND_POST_BINARY) +
+                                   " spectra " + (dir / "rec.txt").string() +
+                                   " --unit m/s2 --dt 0.01 -o " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::regex line("private Xvfb :([0-9]+) \\(pid ([0-9]+)\\)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.output, m, line)) << r.output;
+  const std::string pid = m[2];
+  // The server was reaped: no such process (or, if the pid was reused, not an Xvfb).
+  std::ifstream comm("/proc/" + pid + "/comm");
+  std::string name;
+  std::getline(comm, name);
+  EXPECT_NE(name, "Xvfb");
+  EXPECT_FALSE(std::filesystem::exists("/tmp/.X11-unix/X" + std::string(m[1])) &&
+               !std::filesystem::exists("/tmp/.X" + std::string(m[1]) + "-lock"))
+      << "socket left behind";
+  EXPECT_GT(test::read_png((dir / "out" / "spectra.png").string()).variance(), 50.0);
+  // Bad input is found before any server starts: no announcement.
+  const auto bad = test::run_command("env -u DISPLAY " + std::string(ISOPOUND_POST_BINARY) +
+                                     " plot " + (dir / "nope").string());
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_EQ(bad.output.find("Xvfb"), std::string::npos) << bad.output;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace isopound::post
