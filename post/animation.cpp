@@ -1,6 +1,7 @@
 // Animation frames of 2D runs (see animation.h).
 #include "post/animation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -95,7 +96,8 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
     // Slabs.
     for (const Level& l : s.levels) {
       const double u = u_of(l), x = xc + S * u;
-      f.rect(x - W / 2, x + W / 2, l.elevation - H / 2, l.elevation + H / 2, u, a_of(l), Block::kSlab);
+      f.rect(x - W / 2, x + W / 2, l.elevation - H / 2, l.elevation + H / 2, u, a_of(l),
+             Block::kSlab);
     }
     // Bearings (base slab at elevation 0 on the ground, drawn 1 m below) or the ground columns.
     const Level& first = s.levels.front();
@@ -178,6 +180,68 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
            la->elevation + H / 2, ua, a_of(*la), Block::kContact, -side * force, pen);
   }
   return f.finish();
+}
+
+Figure frame_figure(const FrameMesh& mesh, double scale, int width, int height) {
+  Figure fig;
+  fig.width = width;
+  fig.height = height;
+  double x0 = 1e300, x1 = -1e300, z0 = 1e300, z1 = -1e300;
+  for (const auto& p : mesh.points) {
+    x0 = std::min(x0, p[0]);
+    x1 = std::max(x1, p[0]);
+    z0 = std::min(z0, p[2]);
+    z1 = std::max(z1, p[2]);
+  }
+  if (mesh.points.empty()) return fig;
+  const double margin = 30, top = 64;
+  const double s = std::min((width - 2 * margin) / std::max(x1 - x0, 1e-9),
+                            (height - margin - top) / std::max(z1 - z0, 1e-9));
+  const double ox = (width - s * (x1 - x0)) / 2;
+  const auto at = [&](int i) {
+    return Point2{ox + (mesh.points[i][0] - x0) * s, margin + (mesh.points[i][2] - z0) * s};
+  };
+  const MeshArray* block = nullptr;
+  for (const MeshArray& a : mesh.cell_data)
+    if (a.name == "block") block = &a;
+  static constexpr Rgb kColours[] = {
+      {31, 119, 180}, {120, 120, 120}, {44, 160, 44}, {150, 60, 40}, {214, 39, 40}};
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
+    const int b = block ? static_cast<int>(block->values[c]) : 0;
+    const Rgb colour = kColours[std::clamp(b, 0, 4)];
+    const MeshCell& cell = mesh.cells[c];
+    if (cell.vtk_type == 9 && cell.points.size() == 4) {
+      FilledPolygon poly{{}, colour};
+      for (int i : cell.points) poly.points.push_back(at(i));
+      fig.polygons.push_back(poly);
+    } else {
+      Polyline line{{}, colour, 2.0};
+      for (int i : cell.points) line.points.push_back(at(i));
+      fig.lines.push_back(line);
+    }
+  }
+  // Ground line.
+  fig.lines.push_back(
+      {{{margin / 2, margin + (-1.0 - z0) * s}, {width - margin / 2, margin + (-1.0 - z0) * s}},
+       {0, 0, 0},
+       1.0});
+  char title[96];
+  std::snprintf(title, sizeof title, "t = %.3f s   (displacements × %g)", mesh.time, scale);
+  fig.texts.push_back({{width / 2.0, height - 12.0},
+                       title,
+                       14,
+                       {0, 0, 0},
+                       HAlign::kCentre,
+                       VAlign::kTop,
+                       0.0,
+                       true});
+  const char* names[] = {"slab", "column", "bearing", "wall", "contact"};
+  for (int b = 0; b < 5; ++b) {
+    const double x = 20 + 110 * b, y = height - 40.0;
+    fig.lines.push_back({{{x, y}, {x + 20, y}}, kColours[b], 4.0});
+    fig.texts.push_back({{x + 26, y}, names[b], 11, {0, 0, 0}, HAlign::kLeft, VAlign::kCentre});
+  }
+  return fig;
 }
 
 std::string pvd_text(const std::vector<double>& times, const std::vector<std::string>& files) {

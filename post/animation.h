@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "post/figure.h"
 #include "post/run_data.h"
 
 namespace isopound::post {
@@ -28,7 +29,7 @@ struct MeshArray {
 enum class Block { kSlab = 0, kColumn = 1, kBearing = 2, kWall = 3, kContact = 4 };
 
 struct FrameMesh {
-  double time = 0.0;  // s
+  double time = 0.0;                          // s
   std::vector<std::array<double, 3>> points;  // m, drawing coordinates (x right, y, z up)
   std::vector<MeshCell> cells;
   std::vector<MeshArray> point_data;  // one value set per point
@@ -36,8 +37,8 @@ struct FrameMesh {
 };
 
 struct AnimationOptions {
-  double scale = 1.0;      // displacement magnification
-  double fps = 25.0;       // frames per second of analysis time
+  double scale = 1.0;           // displacement magnification
+  double fps = 25.0;            // frames per second of analysis time
   double slab_width = 12.0;     // m, drawn width of a floor slab
   double slab_thickness = 0.4;  // m
 };
@@ -51,6 +52,10 @@ std::vector<double> frame_times(const RunData& run, double fps);
 //               on the body, contacts), penetration (contacts, m)
 // Contact cells exist only in frames where that contact's force or penetration is > 0.
 FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& options);
+
+// A picture of one frame (x-z view, equal axes, coloured by block, with the time and the scale):
+// the README's preview of an animation, and a quick look without ParaView.
+Figure frame_figure(const FrameMesh& mesh, double scale, int width = 900, int height = 520);
 
 // The .pvd collection (ParaView Data) for files written at times.
 std::string pvd_text(const std::vector<double>& times, const std::vector<std::string>& files);

@@ -9,9 +9,9 @@ namespace isopound::post {
 
 Rgb series_colour(int index) {
   // Tableau 10 (minus grey): distinguishable in colour and in greyscale print.
-  static constexpr Rgb kColours[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44},
-                                     {214, 39, 40},  {148, 103, 189}, {140, 86, 75},
-                                     {227, 119, 194}, {188, 189, 34}, {23, 190, 207}};
+  static constexpr Rgb kColours[] = {{31, 119, 180},  {255, 127, 14},  {44, 160, 44},
+                                     {214, 39, 40},   {148, 103, 189}, {140, 86, 75},
+                                     {227, 119, 194}, {188, 189, 34},  {23, 190, 207}};
   constexpr int n = sizeof kColours / sizeof kColours[0];
   return kColours[((index % n) + n) % n];
 }
@@ -27,7 +27,8 @@ Rgb colour_map(double s) {
   const int i = std::min(7, static_cast<int>(x));
   const double f = x - i;
   const auto mix = [&](int c) {
-    return static_cast<unsigned char>(std::lround(kStops[i][c] + f * (kStops[i + 1][c] - kStops[i][c])));
+    return static_cast<unsigned char>(
+        std::lround(kStops[i][c] + f * (kStops[i + 1][c] - kStops[i][c])));
   };
   return {mix(0), mix(1), mix(2)};
 }

@@ -117,7 +117,8 @@ PrivateDisplay::PrivateDisplay(bool announce, double timeout_seconds) {
         "no DISPLAY and could not start a private Xvfb (is the xvfb package installed?); "
         "set DISPLAY or run under xvfb-run");
   }
-  display_ = ":" + text.substr(0, text.find('\n'));
+  text.erase(text.find('\n'));
+  display_ = std::string(1, ':') + text;
   setenv("DISPLAY", display_.c_str(), 1);
   if (announce)
     std::fprintf(stderr, "isopound-post: no DISPLAY, rendering on a private Xvfb %s (pid %d)\n",
@@ -134,6 +135,8 @@ void PrivateDisplay::stop() {
   unsetenv("DISPLAY");
 }
 
-PrivateDisplay::~PrivateDisplay() { stop(); }
+PrivateDisplay::~PrivateDisplay() {
+  stop();
+}
 
 }  // namespace isopound::post

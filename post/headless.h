@@ -2,9 +2,9 @@
 // The server picks its own free display number (-displayfd), dies with us (PR_SET_PDEATHSIG).
 #pragma once
 
+#include <sys/types.h>
 #include <stdexcept>
 #include <string>
-#include <sys/types.h>
 
 namespace isopound::post {
 

@@ -1,8 +1,8 @@
 // isopound-post: plots of a run, response spectra of records, polar figures of a study and
 // ParaView animations. Headless by default (a private Xvfb when there is no DISPLAY).
 // Exit codes: 0 success, 2 bad input (message names the file / key), 1 anything else.
-#include <CLI/CLI.hpp>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -53,8 +53,8 @@ class Progress {
     const int pct = static_cast<int>(100 * done / total_);
     if (pct == last_) return;
     last_ = pct;
-    std::fprintf(stderr, "\r%s [%-40s] %3d%%", what_.c_str(), std::string(pct * 40 / 100, '#').c_str(),
-                 pct);
+    std::fprintf(stderr, "\r%s [%-40s] %3d%%", what_.c_str(),
+                 std::string(pct * 40 / 100, '#').c_str(), pct);
     if (done == total_) std::fprintf(stderr, "\n");
   }
 
@@ -86,15 +86,20 @@ GroundMotion load(const std::string& path, const SpectraArgs& a) {
   o.time_column = a.time_column;
   o.dt = a.dt;
   o.scale = a.scale;
-  if (a.unit == "g" || a.unit.empty()) o.unit = AccelerationUnit::kG;
-  else if (a.unit == "m/s2") o.unit = AccelerationUnit::kMetrePerSecond2;
-  else if (a.unit == "cm/s2") o.unit = AccelerationUnit::kCentimetrePerSecond2;
-  else throw BadInput("--unit: '" + a.unit + "' is not one of g, m/s2, cm/s2");
+  if (a.unit == "g" || a.unit.empty())
+    o.unit = AccelerationUnit::kG;
+  else if (a.unit == "m/s2")
+    o.unit = AccelerationUnit::kMetrePerSecond2;
+  else if (a.unit == "cm/s2")
+    o.unit = AccelerationUnit::kCentimetrePerSecond2;
+  else
+    throw BadInput("--unit: '" + a.unit + "' is not one of g, m/s2, cm/s2");
   if (!fs::exists(path)) throw BadInput(path + ": record not found");
   try {
     return read_record(path, o);
   } catch (const RecordError& e) {
-    throw BadInput(e.file() + (e.line() > 0 ? ":" + std::to_string(e.line()) : "") + ": " + e.what());
+    throw BadInput(e.file() + (e.line() > 0 ? ":" + std::to_string(e.line()) : "") + ": " +
+                   e.what());
   }
 }
 
@@ -156,10 +161,20 @@ int run_spectra(const SpectraArgs& a) {
   // Figure: PSA [g] and SD [cm] against period.
   char damping_text[32];
   std::snprintf(damping_text, sizeof damping_text, "%g %%", a.damping);
-  Panel psa{"Pseudo-acceleration, ξ = " + std::string(damping_text), "period T [s]",
-            "PSA [g]", {}, true, false, true};
-  Panel sd{"Displacement, ξ = " + std::string(damping_text), "period T [s]", "SD [cm]", {},
-           true, false, true};
+  Panel psa{"Pseudo-acceleration, ξ = " + std::string(damping_text),
+            "period T [s]",
+            "PSA [g]",
+            {},
+            true,
+            false,
+            true};
+  Panel sd{"Displacement, ξ = " + std::string(damping_text),
+           "period T [s]",
+           "SD [cm]",
+           {},
+           true,
+           false,
+           true};
   const auto add = [&](const std::string& label, const std::vector<double>& p,
                        const std::vector<double>& d, std::optional<Rgb> c, double w) {
     std::vector<double> pg, dc;
@@ -207,7 +222,8 @@ int run_spectra(const SpectraArgs& a) {
 RunData load_run(const std::string& dir, const std::string& model) {
   try {
     RunData run = read_run(dir, model);
-    for (const std::string& n : run.notes) std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
+    for (const std::string& n : run.notes)
+      std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
     return run;
   } catch (const RunDataError& e) {
     throw BadInput(e.what());
@@ -228,14 +244,18 @@ int run_plot(const std::string& dir, const std::string& out, const std::string& 
 }
 
 int run_animate(const std::string& dir, const std::string& out, const std::string& model,
-                const AnimationOptions& opt) {
+                const AnimationOptions& opt, double preview) {
   if (!(opt.scale > 0.0) || !std::isfinite(opt.scale)) throw BadInput("--scale: must be > 0");
   if (!(opt.fps > 0.0) || !std::isfinite(opt.fps)) throw BadInput("--fps: must be > 0");
   const RunData run = load_run(dir, model);
   const fs::path out_dir = out.empty() ? fs::path(dir) / "animation" : fs::path(out);
   fs::create_directories(out_dir);
+  if (preview > run.time().back())
+    throw BadInput("--preview " + std::to_string(preview) + " s: after the end of the run (" +
+                   std::to_string(run.time().back()) + " s)");
   const std::vector<double> times = frame_times(run, opt.fps);
   std::vector<std::string> files;
+  std::fflush(stdout);
   Progress progress("frames", times.size());
   for (std::size_t k = 0; k < times.size(); ++k) {
     char name[32];
@@ -248,6 +268,13 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   std::printf("Wrote %s/animation.pvd and %zu frames (%.4g s to %.4g s at %g frames/s, scale %g)\n",
               out_dir.string().c_str(), files.size(), times.front(), times.back(), opt.fps,
               opt.scale);
+  if (preview >= 0.0) {
+    std::fflush(stdout);
+    const PrivateDisplay display;
+    render_png(frame_figure(animation_frame(run, preview, opt), opt.scale),
+               (out_dir / "preview.png").string());
+    std::printf("Wrote %s/preview.png (t = %g s)\n", out_dir.string().c_str(), preview);
+  }
   return kOk;
 }
 
@@ -267,12 +294,12 @@ int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<st
     throw BadInput(e.what());
   }
   for (const std::string& n : r.notes) std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
-  const std::string stem =
-      out.empty() ? (fs::path(db).parent_path() /
-                     (fs::path(db).stem().string() + "-polar-" + opt.quantity +
-                      (opt.contour_axis.empty() ? "" : "-" + opt.contour_axis)))
-                        .string()
-                  : out;
+  const std::string stem = out.empty()
+                               ? (fs::path(db).parent_path() /
+                                  (fs::path(db).stem().string() + "-polar-" + opt.quantity +
+                                   (opt.contour_axis.empty() ? "" : "-" + opt.contour_axis)))
+                                     .string()
+                               : out;
   if (!fs::path(stem).parent_path().empty()) fs::create_directories(fs::path(stem).parent_path());
   write_text(stem + ".csv", r.csv);
   const PrivateDisplay display;
@@ -290,7 +317,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   SpectraArgs sa;
-  auto* spectra = app.add_subcommand("spectra", "5 %-damped PSA and SD spectra of records (CSV, PNG)");
+  auto* spectra =
+      app.add_subcommand("spectra", "5 %-damped PSA and SD spectra of records (CSV, PNG)");
   spectra->add_option("records", sa.records, "record files (PEER .AT2 or columns)")->required();
   spectra->add_flag("--pair", sa.pair, "records two by two form horizontal pairs: RotD50/RotD100");
   spectra->add_option("--damping", sa.damping, "damping ratio in % (default 5)");
@@ -310,11 +338,14 @@ int main(int argc, char** argv) {
   plot->add_option("--model", model, "model file (default: the one named in summary.json)");
 
   AnimationOptions ao;
+  double preview = -1.0;
   auto* animate = app.add_subcommand("animate", "ParaView animation of a run (.pvd + .vtu frames)");
-  animate->add_option("run_dir", run_dir, "directory with histories.csv and summary.json")->required();
+  animate->add_option("run_dir", run_dir, "directory with histories.csv and summary.json")
+      ->required();
   animate->add_option("--scale", ao.scale, "displacement magnification (default 1)");
   animate->add_option("--fps", ao.fps, "frames per second of analysis time (default 25)");
   animate->add_option("-o,--out", out, "output directory (default: RUN_DIR/animation)");
+  animate->add_option("--preview", preview, "also write preview.png of the frame at this time [s]");
   animate->add_option("--model", model, "model file (default: the one named in summary.json)");
 
   std::string db;
@@ -326,7 +357,9 @@ int main(int argc, char** argv) {
   polar->add_option("--where", where, "AXIS=VALUE filters (repeatable)");
   polar->add_option("--per", po.per, "curves per: record (default) | case | an axis name");
   polar->add_option("--contour", po.contour_axis, "radial axis for a contour plot (e.g. gap)");
-  polar->add_option("--angle-axis", po.angle_axis, "the incidence-angle axis (default: found by name)");
+  polar->add_option("--unit", po.unit, "display unit of the quantity (cm, g, kN, %, ...)");
+  polar->add_option("--angle-axis", po.angle_axis,
+                    "the incidence-angle axis (default: found by name)");
   polar->add_option("-o,--out", out, "output path without extension");
 
   try {
@@ -337,7 +370,7 @@ int main(int argc, char** argv) {
   try {
     if (*spectra) return run_spectra(sa);
     if (*plot) return run_plot(run_dir, out, model);
-    if (*animate) return run_animate(run_dir, out, model, ao);
+    if (*animate) return run_animate(run_dir, out, model, ao, preview);
     if (*polar) return run_polar(db, po, where, out);
   } catch (const BadInput& e) {
     std::fprintf(stderr, "isopound-post: error: %s\n", e.what());

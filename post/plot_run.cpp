@@ -52,7 +52,8 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   // Base (lowest level of the main building) displacement relative to the ground.
   const Level& base = main.levels.front();
   ground.y_title = "displacement [cm]";
-  ground.series.push_back(line_series(short_label(base.label, run) + " u", t, scaled(run.column(base.u), 0.01)));
+  ground.series.push_back(
+      line_series(short_label(base.label, run) + " u", t, scaled(run.column(base.u), 0.01)));
   panels.push_back(ground);
 
   Panel drift{"Story drift ratios", "time [s]", "drift ratio [%]", {}, true, true};
@@ -77,43 +78,60 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   panels.push_back(drift);
 
   Panel acc{"Absolute accelerations", "time [s]", "absolute acceleration [g]", {}, true, true};
-  if (ag >= 0) acc.series.push_back({"ground", t, scaled(run.column(ag), kGravity), Rgb{150, 150, 150}, 1.0});
+  if (ag >= 0)
+    acc.series.push_back({"ground", t, scaled(run.column(ag), kGravity), Rgb{150, 150, 150}, 1.0});
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels)
-      if (l.a_abs >= 0) acc.series.push_back(line_series(short_label(l.label, run), t, scaled(run.column(l.a_abs), kGravity)));
+      if (l.a_abs >= 0)
+        acc.series.push_back(
+            line_series(short_label(l.label, run), t, scaled(run.column(l.a_abs), kGravity)));
   panels.push_back(acc);
 
   if (!run.contacts.empty()) {
     double peak = 0.0;
-    for (const ElementColumns& c : run.contacts) peak = std::max(peak, peak_of(run.column(c.force)));
+    for (const ElementColumns& c : run.contacts)
+      peak = std::max(peak, peak_of(run.column(c.force)));
     std::string unit;
     const double div = force_scale(peak, unit);
     Panel impact{"Impact forces", "time [s]", "impact force [" + unit + "]", {}, true, false, true};
     for (const ElementColumns& c : run.contacts)
-      impact.series.push_back(line_series(short_label(c.label, run), t, scaled(run.column(c.force), div)));
+      impact.series.push_back(
+          line_series(short_label(c.label, run), t, scaled(run.column(c.force), div)));
     panels.push_back(impact);
   }
   std::vector<NamedFigure> out;
   const int rows = static_cast<int>(panels.size());
-  out.push_back({"time_histories.png", xy_figure(panels, 1, 1000, 230 * rows + 40,
-                                                 "Time histories: " + run.dir.filename().string())});
+  out.push_back(
+      {"time_histories.png", xy_figure(panels, 1, 1000, 230 * rows + 40,
+                                       "Time histories: " + run.dir.filename().string())});
 
   std::vector<Panel> loops;
   for (const ElementColumns& e : run.isolators) {
     if (e.deformation < 0) continue;
     std::string unit;
     const double div = force_scale(peak_of(run.column(e.force)), unit);
-    Panel p{short_label(e.label, run), "isolator deformation [cm]", "isolator force [" + unit + "]",
-            {}, false, true};
-    p.series.push_back(line_series("", scaled(run.column(e.deformation), 0.01), scaled(run.column(e.force), div)));
+    Panel p{short_label(e.label, run),
+            "isolator deformation [cm]",
+            "isolator force [" + unit + "]",
+            {},
+            false,
+            true};
+    p.series.push_back(
+        line_series("", scaled(run.column(e.deformation), 0.01), scaled(run.column(e.force), div)));
     loops.push_back(p);
   }
   for (const ElementColumns& e : run.contacts) {
     std::string unit;
     const double div = force_scale(peak_of(run.column(e.force)), unit);
-    Panel p{short_label(e.label, run), "penetration δ [mm]", "impact force [" + unit + "]", {},
-            false, false, true};
-    p.series.push_back(line_series("", scaled(run.column(e.penetration), 1e-3), scaled(run.column(e.force), div)));
+    Panel p{short_label(e.label, run),
+            "penetration δ [mm]",
+            "impact force [" + unit + "]",
+            {},
+            false,
+            false,
+            true};
+    p.series.push_back(
+        line_series("", scaled(run.column(e.penetration), 1e-3), scaled(run.column(e.force), div)));
     loops.push_back(p);
   }
   if (!loops.empty()) {

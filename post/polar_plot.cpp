@@ -24,8 +24,8 @@ void draw_polar_axes(const PolarFrame& f, const std::vector<double>& r_ticks,
     for (int d = 0; d <= 360; d += 3) circle.points.push_back(f.to_pixel(d, r));
     fig.lines.push_back(circle);
     const Point2 at = f.to_pixel(15.0, r);
-    fig.texts.push_back({{at.x + 3, at.y}, tick_label(r), 10, {90, 90, 90}, HAlign::kLeft,
-                         VAlign::kBottom});
+    fig.texts.push_back(
+        {{at.x + 3, at.y}, tick_label(r), 10, {90, 90, 90}, HAlign::kLeft, VAlign::kBottom});
   }
   Polyline outer{{}, {80, 80, 80}, 1.2};
   for (int d = 0; d <= 360; d += 2) outer.points.push_back(f.to_pixel(d, f.r_hi));
@@ -34,12 +34,16 @@ void draw_polar_axes(const PolarFrame& f, const std::vector<double>& r_ticks,
     fig.lines.push_back({{f.to_pixel(d, f.r_lo), f.to_pixel(d, f.r_hi)}, kGrid, 1.0});
     const double a = d * kDeg, off = f.radius_px + 18;
     fig.texts.push_back({{f.centre.x + off * std::cos(a), f.centre.y + off * std::sin(a)},
-                         std::to_string(d) + "°", 12, kBlack, HAlign::kCentre, VAlign::kCentre});
+                         std::to_string(d) + "°",
+                         12,
+                         kBlack,
+                         HAlign::kCentre,
+                         VAlign::kCentre});
   }
-  // Radial axis title along the 15 deg ray, just outside the circle.
-  const Point2 at = f.to_pixel(0.0, f.r_hi);
-  fig.texts.push_back({{at.x - f.radius_px / 2, f.centre.y - 14}, radial_title, 12, kBlack,
-                       HAlign::kCentre, VAlign::kTop});
+  // Radial axis title just outside the circle, past the radial tick labels on the 15 deg ray.
+  const Point2 at = f.to_pixel(8.0, f.r_hi);
+  fig.texts.push_back(
+      {{at.x + 14, at.y - 4}, radial_title, 12, kBlack, HAlign::kLeft, VAlign::kBottom});
 }
 
 std::vector<Point2> curve_points(const PolarFrame& f, const std::vector<double>& angle,
@@ -137,8 +141,14 @@ Figure polar_envelope_figure(const PolarEnvelopeData& data, int width, int heigh
     fig.texts.push_back({{lx + 30, y}, label, 11, kBlack, HAlign::kLeft, VAlign::kCentre});
     y -= 18;
   }
-  fig.texts.push_back(
-      {{width / 2.0, height - 10.0}, data.title, 15, kBlack, HAlign::kCentre, VAlign::kTop, 0, true});
+  fig.texts.push_back({{width / 2.0, height - 10.0},
+                       data.title,
+                       15,
+                       kBlack,
+                       HAlign::kCentre,
+                       VAlign::kTop,
+                       0,
+                       true});
   if (frame_out) *frame_out = f;
   return fig;
 }
@@ -185,6 +195,8 @@ Figure polar_contour_figure(const PolarContourData& data, int width, int height,
   draw_polar_axes(f, r_ticks, data.radius_title, fig);
   for (Polyline& l : fig.lines)
     if (l.colour == kGrid) l.colour = {255, 255, 255};  // grid over colour: white
+  for (Text& t : fig.texts)
+    if (t.colour == Rgb{90, 90, 90}) t.colour = {255, 255, 255}, t.bold = true;
 
   // Colour bar.
   const double bx = width - 150, by = 60, bw = 24, bh = height - top - 120;
@@ -193,17 +205,29 @@ Figure polar_contour_figure(const PolarContourData& data, int width, int height,
     fig.polygons.push_back(
         {{{bx, y0}, {bx + bw, y0}, {bx + bw, y1}, {bx, y1}}, colour_map((k + 0.5) / 64.0)});
   }
-  fig.lines.push_back({{{bx, by}, {bx + bw, by}, {bx + bw, by + bh}, {bx, by + bh}, {bx, by}},
-                       {60, 60, 60}, 1.0});
+  fig.lines.push_back(
+      {{{bx, by}, {bx + bw, by}, {bx + bw, by + bh}, {bx, by + bh}, {bx, by}}, {60, 60, 60}, 1.0});
   for (double t : nice_ticks(vlo, vhi, 6)) {
     const double y = by + (t - vlo) / (vhi - vlo) * bh;
     fig.lines.push_back({{{bx + bw, y}, {bx + bw + 5, y}}, {60, 60, 60}, 1.0});
-    fig.texts.push_back({{bx + bw + 8, y}, tick_label(t), 11, kBlack, HAlign::kLeft, VAlign::kCentre});
+    fig.texts.push_back(
+        {{bx + bw + 8, y}, tick_label(t), 11, kBlack, HAlign::kLeft, VAlign::kCentre});
   }
-  fig.texts.push_back({{bx + bw + 70, by + bh / 2}, data.value_title, 12, kBlack, HAlign::kCentre,
-                       VAlign::kCentre, 90.0});
-  fig.texts.push_back(
-      {{width / 2.0, height - 10.0}, data.title, 15, kBlack, HAlign::kCentre, VAlign::kTop, 0, true});
+  fig.texts.push_back({{bx + bw + 70, by + bh / 2},
+                       data.value_title,
+                       12,
+                       kBlack,
+                       HAlign::kCentre,
+                       VAlign::kCentre,
+                       90.0});
+  fig.texts.push_back({{width / 2.0, height - 10.0},
+                       data.title,
+                       15,
+                       kBlack,
+                       HAlign::kCentre,
+                       VAlign::kTop,
+                       0,
+                       true});
   if (frame_out) *frame_out = f;
   return fig;
 }

@@ -13,8 +13,8 @@ namespace isopound::post {
 
 // Where the polar axes are on the figure (for tests and overlays).
 struct PolarFrame {
-  Point2 centre;           // px
-  double radius_px = 0.0;  // outer circle
+  Point2 centre;                  // px
+  double radius_px = 0.0;         // outer circle
   double r_lo = 0.0, r_hi = 1.0;  // data value at the centre and at the outer circle
   Point2 to_pixel(double angle_deg, double r) const;
 };
@@ -28,7 +28,7 @@ struct PolarCurve {
 
 struct PolarEnvelopeData {
   std::string title;
-  std::string quantity;  // radial axis title with unit, e.g. "base displacement [cm]"
+  std::string quantity;            // radial axis title with unit, e.g. "base displacement [cm]"
   std::vector<PolarCurve> curves;  // per record or case
   std::optional<PolarCurve> mean;  // drawn thick and black
   // Optional band (ensemble min-max), shaded: lower and upper value per band angle.
@@ -40,8 +40,8 @@ Figure polar_envelope_figure(const PolarEnvelopeData& data, int width = 800, int
 
 struct PolarContourData {
   std::string title;
-  std::string radius_title;  // e.g. "gap [cm]"
-  std::string value_title;   // colour bar title with unit
+  std::string radius_title;       // e.g. "gap [cm]"
+  std::string value_title;        // colour bar title with unit
   std::vector<double> angle_deg;  // ascending, n_a
   std::vector<double> radius;     // ascending (the gaps), n_r
   std::vector<double> value;      // n_r x n_a, row-major (radius major); NaN = no data (grey)

@@ -19,7 +19,10 @@ namespace {
 
 std::string join(const std::vector<std::string>& v) {
   std::string s;
-  for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
+  for (const std::string& x : v) {
+    if (!s.empty()) s += ", ";
+    s += x;
+  }
   return s.empty() ? "(none)" : s;
 }
 
@@ -70,8 +73,25 @@ DisplayUnit unit_from_study(const StudyStore& store, const std::string& column) 
 
 }  // namespace
 
+double unit_divisor(const std::string& unit) {
+  static const std::map<std::string, double> kUnits{
+      {"m", 1.0},  {"cm", 0.01}, {"mm", 1e-3}, {"m/s", 1.0}, {"g", 9.81}, {"m/s2", 1.0},
+      {"N", 1.0},  {"kN", 1e3},  {"MN", 1e6},  {"%", 0.01},  {"-", 1.0},  {"J", 1.0},
+      {"kJ", 1e3}, {"MJ", 1e6},  {"rad", 1.0}, {"SI", 1.0}};
+  const auto it = kUnits.find(unit);
+  if (it == kUnits.end()) {
+    std::string names;
+    std::vector<std::string> all;
+    for (const auto& entry : kUnits) all.push_back(entry.first);
+    names = join(all);
+    throw PolarStudyError("--unit '" + unit + "': not one of " + names);
+  }
+  return it->second;
+}
+
 PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOptions& opt) {
-  if (!std::filesystem::exists(db_path)) throw PolarStudyError(db_path + ": study database not found");
+  if (!std::filesystem::exists(db_path))
+    throw PolarStudyError(db_path + ": study database not found");
   std::optional<StudyStore> store;
   try {
     store.emplace(StudyStore::open(db_path, true));
@@ -87,12 +107,12 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     if (opt.angle_axis.empty() ? is_angle_name(layout.axes[i]) : layout.axes[i] == opt.angle_axis)
       angle = static_cast<int>(i);
   if (angle < 0)
-    throw PolarStudyError(
-        db_path + ": the study has no " +
-        (opt.angle_axis.empty() ? std::string("incidence-angle axis (an axis named angle, "
-                                              "incidence or *angle)")
-                                : "axis '" + opt.angle_axis + "'") +
-        "; its axes are: " + join(layout.axes));
+    throw PolarStudyError(db_path + ": the study has no " +
+                          (opt.angle_axis.empty()
+                               ? std::string("incidence-angle axis (an axis named angle, "
+                                             "incidence or *angle)")
+                               : "axis '" + opt.angle_axis + "'") +
+                          "; its axes are: " + join(layout.axes));
   const auto q = std::find(layout.outputs.begin(), layout.outputs.end(), opt.quantity);
   if (q == layout.outputs.end())
     throw PolarStudyError(db_path + ": quantity '" + opt.quantity +
@@ -107,15 +127,20 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
   };
   int per = -1;
   if (opt.per != "case") {
-    const bool has = std::find(layout.axes.begin(), layout.axes.end(), opt.per) != layout.axes.end();
-    if (has) per = axis_index(opt.per, "--per");
-    else if (opt.per != "record") axis_index(opt.per, "--per");  // throws
+    const bool has =
+        std::find(layout.axes.begin(), layout.axes.end(), opt.per) != layout.axes.end();
+    if (has)
+      per = axis_index(opt.per, "--per");
+    else if (opt.per != "record")
+      axis_index(opt.per, "--per");  // throws
   }
   const int radial = opt.contour_axis.empty() ? -1 : axis_index(opt.contour_axis, "--contour");
   std::vector<std::pair<int, std::string>> filters;
-  for (const auto& [axis, label] : opt.where) filters.push_back({axis_index(axis, "--where"), label});
+  for (const auto& [axis, label] : opt.where)
+    filters.push_back({axis_index(axis, "--where"), label});
 
-  const DisplayUnit unit = unit_from_study(*store, opt.quantity);
+  const DisplayUnit unit = opt.unit.empty() ? unit_from_study(*store, opt.quantity)
+                                            : DisplayUnit{opt.unit, unit_divisor(opt.unit)};
   // Rows that pass the filters, finished.
   bool degrees = false;
   struct Row {
@@ -138,12 +163,14 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     for (std::size_t a = 0; a < r.axes.size(); ++a) {
       if (static_cast<int>(a) == angle || static_cast<int>(a) == radial) continue;
       if (per >= 0 && static_cast<int>(a) != per) continue;
-      row.group += (row.group.empty() ? "" : " ") + cell_text(r.axes[a]);
+      if (!row.group.empty()) row.group += ' ';
+      row.group += cell_text(r.axes[a]);
     }
     rows.push_back(row);
   }
   if (rows.empty())
-    throw PolarStudyError(db_path + ": no finished runs with '" + opt.quantity + "' (after --where)");
+    throw PolarStudyError(db_path + ": no finished runs with '" + opt.quantity +
+                          "' (after --where)");
   for (Row& r : rows)
     if (!degrees) r.angle_deg *= 180.0 / std::numbers::pi;
   std::set<double> angles_set, radii_set;
@@ -174,8 +201,9 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     }
     for (auto& c : count)
       if (std::any_of(c.begin(), c.end(), [](int n) { return n > 1; })) {
-        result.notes.push_back("several runs per curve and angle (other axes vary): their maximum "
-                               "is drawn; fix them with --where AXIS=VALUE");
+        result.notes.push_back(
+            "several runs per curve and angle (other axes vary): their maximum "
+            "is drawn; fix them with --where AXIS=VALUE");
         break;
       }
     PolarEnvelopeData& e = result.envelope;
@@ -192,7 +220,8 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
         double sum = 0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
         int n = 0;
         for (std::size_t g = 0; g < groups.size(); ++g)
-          if (std::isfinite(v[g][a])) sum += v[g][a], ++n, lo = std::min(lo, v[g][a]), hi = std::max(hi, v[g][a]);
+          if (std::isfinite(v[g][a]))
+            sum += v[g][a], ++n, lo = std::min(lo, v[g][a]), hi = std::max(hi, v[g][a]);
         mean.value.push_back(n ? sum / n : nan);
         e.band_lo.push_back(n ? lo : nan);
         e.band_hi.push_back(n ? hi : nan);
@@ -222,8 +251,8 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
       ++n[k];
     }
     PolarContourData& c = result.contour;
-    c.title = opt.quantity + " against incidence angle and " + layout.axes[radial] +
-              (groups.size() > 1 ? " (mean of " + std::to_string(groups.size()) + ")" : "");
+    c.title = opt.quantity + " against incidence angle and " + layout.axes[radial];
+    if (groups.size() > 1) c.title += " (mean of " + std::to_string(groups.size()) + ")";
     c.radius_title = layout.axes[radial] + " [" + runit.unit + "]";
     c.value_title = qtitle;
     c.angle_deg = angles;

@@ -18,11 +18,14 @@ class PolarStudyError : public std::runtime_error {
 };
 
 struct PolarStudyOptions {
-  std::string quantity;                 // an output column of the runs table
-  std::string angle_axis;               // "" = the axis named angle / incidence / *angle
-  std::string per = "record";           // curves per this axis ("case": per other-axes combination)
+  std::string quantity;        // an output column of the runs table
+  std::string angle_axis;      // "" = the axis named angle / incidence / *angle
+  std::string per = "record";  // curves per this axis ("case": per other-axes combination)
   std::vector<std::pair<std::string, std::string>> where;  // axis = level label filters
-  std::string contour_axis;             // "" = envelope; else the radial axis (e.g. "gap")
+  std::string contour_axis;  // "" = envelope; else the radial axis (e.g. "gap")
+  // Display unit of the quantity (m, cm, mm, m/s, g, m/s2, N, kN, MN, %, -, J, kJ); "" = from the
+  // study file's selector when the file can still be read, else SI values labelled "SI".
+  std::string unit;
 };
 
 // Display unit of a study output column: from the selector's quantity in the study file when it
@@ -38,6 +41,9 @@ struct PolarStudyResult {
   std::string csv;             // the plotted numbers
   std::vector<std::string> notes;
 };
+
+// The divisor from SI to a display unit name; throws PolarStudyError for an unknown name.
+double unit_divisor(const std::string& unit);
 
 // Throws PolarStudyError with one clear message: no such database, no angle axis (listing the
 // axes), quantity not in the table (listing the quantities), no rows after the filters.

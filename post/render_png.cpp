@@ -69,7 +69,8 @@ class FigureItem : public vtkContextItem {
                                    : t.v == VAlign::kCentre ? VTK_TEXT_CENTERED
                                                             : VTK_TEXT_TOP);
       tp->SetOrientation(t.angle_deg);
-      painter->DrawString(static_cast<float>(t.at.x), static_cast<float>(t.at.y), vtkStdString(t.text));
+      painter->DrawString(static_cast<float>(t.at.x), static_cast<float>(t.at.y),
+                          vtkStdString(t.text));
     }
     return true;
   }

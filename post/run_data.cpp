@@ -40,8 +40,8 @@ std::map<std::string, double> story_heights(const nlohmann::json& summary) {
   for (const auto& s : summary.at("structures"))
     if (s.contains("stories"))
       for (const auto& st : s.at("stories")) {
-        const auto height = number_of(st, "height_m") ? number_of(st, "height_m")
-                                                      : number_of(st, "height");
+        const auto height =
+            number_of(st, "height_m") ? number_of(st, "height_m") : number_of(st, "height");
         if (st.contains("label") && height) h[st.at("label").get<std::string>()] = *height;
       }
   return h;
@@ -172,13 +172,13 @@ void find_geometry(RunData& run, const std::string& model_override) {
       throw RunDataError(std::string("model file of the run: ") + e.what());
     }
     for (const WallConfig& w : config.building.walls) {
-      const double z = w.level < static_cast<int>(main.levels.size())
-                           ? main.levels[w.level].elevation
-                           : 0.0;
+      const double z =
+          w.level < static_cast<int>(main.levels.size()) ? main.levels[w.level].elevation : 0.0;
       const std::string level = w.level < static_cast<int>(main.levels.size())
                                     ? main.levels[w.level].label.substr(main.name.size() + 1)
                                     : "";
-      if (w.left) run.walls.push_back({main.name + "/wall left (" + level + ")", -1, w.gap_left, z});
+      if (w.left)
+        run.walls.push_back({main.name + "/wall left (" + level + ")", -1, w.gap_left, z});
       if (w.right)
         run.walls.push_back({main.name + "/wall right (" + level + ")", +1, w.gap_right, z});
     }
@@ -200,10 +200,9 @@ void find_geometry(RunData& run, const std::string& model_override) {
     w.label = c.label;
     w.side = c.label.find("/wall left", pos) != std::string::npos ? -1 : +1;
     const auto open = c.label.find('(', pos), close = c.label.find(')', pos);
-    const std::string level =
-        open != std::string::npos && close != std::string::npos
-            ? c.label.substr(open + 1, close - open - 1)
-            : "base";
+    const std::string level = open != std::string::npos && close != std::string::npos
+                                  ? c.label.substr(open + 1, close - open - 1)
+                                  : "base";
     const Structure* s = structure_named(run, c.label.substr(0, pos));
     const Level* lv = nullptr;
     if (s)
@@ -224,7 +223,8 @@ void find_geometry(RunData& run, const std::string& model_override) {
       for (double u : run.values[lv->u]) peak = std::max(peak, std::abs(u));
       w.gap = 1.2 * peak;
       w.gap_known = false;
-      run.notes.push_back(c.label + ": never in contact and no model file: drawn at 1.2 x the peak");
+      run.notes.push_back(c.label +
+                          ": never in contact and no model file: drawn at 1.2 x the peak");
     }
     run.walls.push_back(w);
   }
@@ -233,7 +233,8 @@ void find_geometry(RunData& run, const std::string& model_override) {
       s.neighbour = true;
       s.side = +1;
       s.gap = 0.1;
-      run.notes.push_back(s.name + ": neighbour side and gap unknown (no model file): right, 10 cm");
+      run.notes.push_back(s.name +
+                          ": neighbour side and gap unknown (no model file): right, 10 cm");
     }
 }
 

@@ -26,8 +26,8 @@ ColumnName parse_column_name(const std::string& header);
 
 // A level of a structure (base slab or floor) with its history columns.
 struct Level {
-  std::string label;        // "3-storey/floor 1"
-  double elevation = 0.0;   // m above the ground (base slab: 0)
+  std::string label;               // "3-storey/floor 1"
+  double elevation = 0.0;          // m above the ground (base slab: 0)
   int u = -1, v = -1, a_abs = -1;  // column indices (-1: absent)
 };
 
@@ -49,9 +49,9 @@ struct ElementColumns {
 
 // A moat wall next to a level of the main building.
 struct Wall {
-  std::string label;  // the contact's label, "" when not found among the outputs
-  int side = +1;      // +1 right of the building, -1 left
-  double gap = 0.0;   // m at rest
+  std::string label;       // the contact's label, "" when not found among the outputs
+  int side = +1;           // +1 right of the building, -1 left
+  double gap = 0.0;        // m at rest
   double elevation = 0.0;  // m, of the level it faces
   bool gap_known = true;   // false: inferred, see run_geometry notes
 };

@@ -21,8 +21,8 @@ struct Recurrence {
     const double sn = std::sin(wd * dt), cs = std::cos(wd * dt);
     A = e * (xi / s1 * sn + cs);
     B = e * sn / wd;
-    C = (2.0 * xi / (w * dt) +
-         e * (((1.0 - 2.0 * xi * xi) / (wd * dt) - xi / s1) * sn - (1.0 + 2.0 * xi / (w * dt)) * cs)) /
+    C = (2.0 * xi / (w * dt) + e * (((1.0 - 2.0 * xi * xi) / (wd * dt) - xi / s1) * sn -
+                                    (1.0 + 2.0 * xi / (w * dt)) * cs)) /
         k;
     D = (1.0 - 2.0 * xi / (w * dt) +
          e * ((2.0 * xi * xi - 1.0) / (wd * dt) * sn + 2.0 * xi / (w * dt) * cs)) /

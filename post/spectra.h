@@ -35,7 +35,8 @@ std::vector<double> sdof_displacement(const GroundMotion& motion, double period,
 Spectrum response_spectrum(const GroundMotion& motion, const std::vector<double>& periods,
                            const SpectrumOptions& options = {});
 
-// Mean and sample standard deviation over spectra (same periods), per period. One spectrum: sigma 0.
+// Mean and sample standard deviation over spectra (same periods), per period. One spectrum: sigma
+// 0.
 struct SpectrumStatistics {
   std::vector<double> period, mean_psa, sigma_psa, mean_sd, sigma_sd;
 };

@@ -87,13 +87,19 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
     ++index;
   }
   fig.lines.push_back({{{L, B}, {R, B}, {R, T}, {L, T}, {L, B}}, kFrame, 1.0});
-  fig.texts.push_back({{(L + R) / 2, y0 + 4}, panel.x_title, 12, kBlack, HAlign::kCentre,
-                       VAlign::kBottom});
-  fig.texts.push_back({{x0 + 14, (B + T) / 2}, panel.y_title, 12, kBlack, HAlign::kCentre,
-                       VAlign::kCentre, 90.0});
+  fig.texts.push_back(
+      {{(L + R) / 2, y0 + 4}, panel.x_title, 12, kBlack, HAlign::kCentre, VAlign::kBottom});
+  fig.texts.push_back(
+      {{x0 + 14, (B + T) / 2}, panel.y_title, 12, kBlack, HAlign::kCentre, VAlign::kCentre, 90.0});
   if (!panel.title.empty())
-    fig.texts.push_back({{(L + R) / 2, T + 6}, panel.title, 13, kBlack, HAlign::kCentre,
-                         VAlign::kBottom, 0.0, true});
+    fig.texts.push_back({{(L + R) / 2, T + 6},
+                         panel.title,
+                         13,
+                         kBlack,
+                         HAlign::kCentre,
+                         VAlign::kBottom,
+                         0.0,
+                         true});
   if (panel.legend) {
     double y = T - 14;
     index = 0;
@@ -120,8 +126,8 @@ Figure xy_figure(const std::vector<Panel>& panels, int columns, int width, int h
   const double cell_w = static_cast<double>(width) / columns;
   const double cell_h = (height - top) / std::max(1, rows);
   if (!title.empty())
-    fig.texts.push_back({{width / 2.0, height - 8.0}, title, 15, kBlack, HAlign::kCentre,
-                         VAlign::kTop, 0.0, true});
+    fig.texts.push_back(
+        {{width / 2.0, height - 8.0}, title, 15, kBlack, HAlign::kCentre, VAlign::kTop, 0.0, true});
   if (frames) frames->assign(panels.size(), {});
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const int r = static_cast<int>(i) / columns, c = static_cast<int>(i) % columns;

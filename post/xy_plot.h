@@ -38,7 +38,7 @@ struct Panel {
 // Where a panel's data lands on the figure (for tests and overlays).
 struct PanelFrame {
   double left = 0, bottom = 0, width = 0, height = 0;  // plot area, px
-  double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;      // data range shown
+  double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;       // data range shown
   Point2 to_pixel(double x, double y) const {
     return {left + (x - x_lo) / (x_hi - x_lo) * width,
             bottom + (y - y_lo) / (y_hi - y_lo) * height};

@@ -1,11 +1,11 @@
 // PNG reading for the post tests (VTK's PNG reader) and a check of it on a figure with a known
 // rectangle, so that pixel tests elsewhere cannot pass for a misread image.
 #include <gtest/gtest.h>
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPointData.h>
-#include <vtkDataArray.h>
 
 #include <stdexcept>
 
@@ -70,10 +70,10 @@ TEST(PostRender, FigureLandsOnTheExpectedPixels) {
     const unsigned char* p = img.at(x, y);
     return std::abs(p[0] - c.r) < 40 && std::abs(p[1] - c.g) < 40 && std::abs(p[2] - c.b) < 40;
   };
-  EXPECT_TRUE(is(80, 60, {255, 0, 0}));     // inside the rectangle
-  EXPECT_TRUE(is(20, 60, {255, 255, 255}));  // left of it
+  EXPECT_TRUE(is(80, 60, {255, 0, 0}));       // inside the rectangle
+  EXPECT_TRUE(is(20, 60, {255, 255, 255}));   // left of it
   EXPECT_TRUE(is(80, 100, {255, 255, 255}));  // above it
-  EXPECT_TRUE(is(150, 150, {0, 0, 255}));    // on the line
+  EXPECT_TRUE(is(150, 150, {0, 0, 255}));     // on the line
   EXPECT_TRUE(is(150, 140, {255, 255, 255}));
   // Some dark text pixels near the top centre.
   int dark = 0;

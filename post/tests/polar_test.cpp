@@ -104,8 +104,9 @@ std::string make_study(const std::filesystem::path& dir, bool with_angle) {
                            : std::vector<std::string>{"record", "gap"};
   layout.outputs = {"u_base", "F_impact"};
   const std::vector<std::string> records{"A", "B"};
-  const std::vector<double> angles{0, 30, 60, 90, 120, 150, 180, 210, 240, 270, 300, 330};
-  const std::vector<double> gaps{0.1, 0.2};
+  std::vector<double> angles;
+  for (int a = 0; a < 360; a += 15) angles.push_back(a);
+  const std::vector<double> gaps{0.05, 0.1, 0.15, 0.2, 0.25};
   const std::int64_t na = with_angle ? angles.size() : 1;
   const std::int64_t count = records.size() * na * gaps.size();
   const auto path = (dir / (with_angle ? "angles.db" : "noangle.db")).string();
@@ -125,8 +126,9 @@ std::string make_study(const std::filesystem::path& dir, bool with_angle) {
     RunRecord r;
     r.case_id = c;
     r.ok = true;
-    r.values = {0.3 + 0.1 * std::cos(a - 75 * kPi / 180) + (v[0].text == "B" ? 0.05 : 0.0),
-                1e6 * (1 + std::cos(a))};
+    const double gap = v.back().number;
+    r.values = {0.25 + 0.12 * std::cos(2 * (a - 75 * kPi / 180)) + (v[0].text == "B" ? 0.05 : 0.0),
+                1e6 * (1 + std::cos(a - 75 * kPi / 180)) * (0.1 / gap)};
     runs.push_back(r);
   }
   store.commit(runs, store.begin_session(1, 1, false, count));
@@ -136,13 +138,13 @@ std::string make_study(const std::filesystem::path& dir, bool with_angle) {
 TEST(PostPolar, CommandWritesEnvelopeAndContourFromAStudy) {
   const auto dir = test::scratch_dir("polarcli");
   const std::string db = make_study(dir, true);
-  auto r = test::run_post("polar " + db + " --quantity u_base --where gap=0.1 -o " +
+  auto r = test::run_post("polar " + db + " --quantity u_base --unit cm --where gap=0.1 -o " +
                           (dir / "env").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const test::Image img = test::read_png((dir / "env.png").string());
   EXPECT_EQ(img.width, 800);
   EXPECT_GT(img.variance(), 50.0);
-  // CSV: 12 angles, columns A, B, mean, min, max; the mean at 60 deg from the formula.
+  // CSV: 24 angles, columns A, B, mean, min, max; the mean at 60 deg from the formula.
   std::ifstream csv(dir / "env.csv");
   std::string header, line;
   std::getline(csv, header);
@@ -152,14 +154,22 @@ TEST(PostPolar, CommandWritesEnvelopeAndContourFromAStudy) {
     ++rows;
     if (line.rfind("60,", 0) == 0) {
       const double mean = std::stod(line.substr(line.find(',', line.find(',', 3) + 1) + 1));
-      // SI (m): this database names no study file to take the output's unit from.
-      EXPECT_NEAR(mean, 0.3 + 0.1 * std::cos(-15 * kPi / 180) + 0.025, 1e-8);
+      // In cm (--unit cm) from the SI values of the table.
+      EXPECT_NEAR(mean, 100 * (0.25 + 0.12 * std::cos(-30 * kPi / 180) + 0.025), 1e-6);
     }
   }
-  EXPECT_EQ(rows, 12);
-  r = test::run_post("polar " + db + " --quantity F_impact --contour gap -o " + (dir / "con").string());
+  EXPECT_EQ(rows, 24);
+  r = test::run_post("polar " + db + " --quantity F_impact --unit kN --contour gap -o " +
+                     (dir / "con").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_GT(test::read_png((dir / "con.png").string()).variance(), 50.0);
+  // ISOPOUND_POST_EXAMPLES=DIR keeps the two figures (the README's synthetic polar examples).
+  if (const char* keep = std::getenv("ISOPOUND_POST_EXAMPLES")) {
+    std::filesystem::copy_file(dir / "env.png", std::filesystem::path(keep) / "polar-envelope.png",
+                               std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(dir / "con.png", std::filesystem::path(keep) / "polar-contour.png",
+                               std::filesystem::copy_options::overwrite_existing);
+  }
   std::filesystem::remove_all(dir);
 }
 
@@ -178,6 +188,9 @@ TEST(PostPolar, CommandErrorsNameTheProblem) {
   r = test::run_post("polar " + (dir / "missing.db").string() + " --quantity u_base");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("not found"), std::string::npos) << r.output;
+  r = test::run_post("polar " + with + " --quantity u_base --unit furlong");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--unit 'furlong'"), std::string::npos) << r.output;
   r = test::run_post("polar " + with + " --quantity u_base --contour width");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("'width' is not in the study"), std::string::npos) << r.output;

@@ -22,12 +22,23 @@ namespace {
 
 // The chapter-4 Kelvin-Voigt pounding run (3-storey, walls both sides, Sylmar record from
 // ../shared): made once per test binary (about 0.1 s).
+std::filesystem::path g_run_dir;  // removed when the test program ends
+
+struct RunDirCleanup : ::testing::Environment {
+  void TearDown() override {
+    if (!g_run_dir.empty()) std::filesystem::remove_all(g_run_dir);
+  }
+};
+[[maybe_unused]] ::testing::Environment* const g_cleanup =
+    ::testing::AddGlobalTestEnvironment(new RunDirCleanup);
+
 const std::filesystem::path& pounding_run() {
   static const std::filesystem::path dir = [] {
     const auto d = test::scratch_dir("run-c4");
-    const auto r = test::run_solver("run " + (test::source_dir() / "configs" /
-                                              "chapter4-3storey-kelvin_voigt.yaml").string() +
-                                    " -o " + d.string());
+    g_run_dir = d;
+    const auto r = test::run_solver(
+        "run " + (test::source_dir() / "configs" / "chapter4-3storey-kelvin_voigt.yaml").string() +
+        " -o " + d.string());
     EXPECT_EQ(r.exit_code, 0) << r.output;
     return d;
   }();
@@ -39,7 +50,8 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
   const auto run_dir = pounding_run();
   const auto out = test::scratch_dir("anim");
   const double fps = 10.0;
-  const auto r = test::run_post("animate " + run_dir.string() + " --fps 10 --scale 5 -o " + out.string());
+  const auto r =
+      test::run_post("animate " + run_dir.string() + " --fps 10 --scale 5 -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   // Independent reading of the histories (header names) and the summary.
@@ -87,7 +99,8 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
                 g->GetCellData()->GetArray("bearing_force"));
     EXPECT_EQ(disp->GetDataType(), VTK_DOUBLE);
     EXPECT_EQ(block->GetDataType(), VTK_DOUBLE);
-    for (vtkIdType i = 0; i < disp->GetNumberOfTuples(); ++i) max_u = std::max(max_u, std::abs(disp->GetComponent(i, 0)));
+    for (vtkIdType i = 0; i < disp->GetNumberOfTuples(); ++i)
+      max_u = std::max(max_u, std::abs(disp->GetComponent(i, 0)));
     // Contact cells exactly when a wall force is positive at this frame time.
     const double t = frames[k].first;
     const int p_left = run.find("3-storey-bw/wall left (base)", "penetration");

@@ -20,8 +20,8 @@ constexpr double kPi = std::numbers::pi;
 
 // A synthetic accelerogram (m/s^2) written as a columns file and read back through the solver's
 // record reader, so the spectrum sees exactly what an analysis would.
-GroundMotion synthetic_record(const std::filesystem::path& dir, const std::string& name, double phase,
-                              double dt = 0.01, double duration = 6.0) {
+GroundMotion synthetic_record(const std::filesystem::path& dir, const std::string& name,
+                              double phase, double dt = 0.01, double duration = 6.0) {
   const auto path = dir / (name + ".txt");
   std::ofstream out(path);
   out.precision(17);
@@ -75,8 +75,9 @@ TEST(PostSpectra, OrdinateEqualsSolverLinearSdofPeak) {
     const double sd_fine = response_spectrum(gm, {period}, so).sd[0];
     const double e_coarse = solver_peak(gm, period, xi, gm.dt / n_coarse) - sd_coarse;
     const double e_fine = solver_peak(gm, period, xi, gm.dt / n_fine) - sd_fine;
-    std::printf("[ spectra ] T=%.2f SD %.6e m, solver - spectrum: h=dt/%d %.2e, h=dt/%d %.2e (rel %.2e)\n",
-                period, sd_fine, n_coarse, e_coarse, n_fine, e_fine, std::abs(e_fine) / sd_fine);
+    std::printf(
+        "[ spectra ] T=%.2f SD %.6e m, solver - spectrum: h=dt/%d %.2e, h=dt/%d %.2e (rel %.2e)\n",
+        period, sd_fine, n_coarse, e_coarse, n_fine, e_fine, std::abs(e_fine) / sd_fine);
     // Tolerance 1e-6 relative: average-acceleration Newmark has a relative period error
     // (w h)^2 / 12, at h = dt/80 and T = 0.5 s (w h)^2/12 = 3e-7 per cycle, carried into the peak
     // over the record's few cycles (measured: 6e-9, 2.2e-7, 1.8e-8 of the peak at T = 0.5, 1,
@@ -141,7 +142,8 @@ TEST(PostSpectra, RotD100IsTheMaximumOver180AnglesAndAtLeastRotD50) {
     for (int d = 0; d < 180; ++d) {
       const double c = std::cos(d * kPi / 180), s = std::sin(d * kPi / 180);
       std::vector<double> a(g1.acceleration.size());
-      for (std::size_t i = 0; i < a.size(); ++i) a[i] = c * g1.acceleration[i] + s * g2.acceleration[i];
+      for (std::size_t i = 0; i < a.size(); ++i)
+        a[i] = c * g1.acceleration[i] + s * g2.acceleration[i];
       peaks.push_back(independent_peak(a, g1.dt, periods[k], 0.05));
     }
     const double max = *std::max_element(peaks.begin(), peaks.end());
@@ -151,7 +153,8 @@ TEST(PostSpectra, RotD100IsTheMaximumOver180AnglesAndAtLeastRotD50) {
     EXPECT_NEAR(r.sd100[k], max, 1e-9 * max);
     EXPECT_NEAR(r.sd50[k], 0.5 * (peaks[89] + peaks[90]), 1e-9 * max);
     // Each component alone is one of the angles (0 and 90 deg): not above RotD100.
-    const Spectrum s1 = response_spectrum(g1, {periods[k]}), s2 = response_spectrum(g2, {periods[k]});
+    const Spectrum s1 = response_spectrum(g1, {periods[k]}),
+                   s2 = response_spectrum(g2, {periods[k]});
     EXPECT_LE(std::max(s1.sd[0], s2.sd[0]), r.sd100[k] * (1 + 1e-12));
   }
   std::filesystem::remove_all(dir);
