@@ -140,6 +140,36 @@ TEST(PostPlot, RunFiguresAreWrittenNonBlankWithTheirSize) {
   std::filesystem::remove_all(out);
 }
 
+TEST(PostRunData, ColumnsByHeaderNameAndHeightsInEitherSummaryShape) {
+  const ColumnName n = parse_column_name("3-storey-bw/wall left (base) penetration [m]");
+  EXPECT_EQ(n.label, "3-storey-bw/wall left (base)");
+  EXPECT_EQ(n.quantity, "penetration");
+  EXPECT_EQ(n.unit, "m");
+  EXPECT_EQ(parse_column_name("time [s]").quantity, "time");
+  // A hand-made run: columns in an unusual order, story heights once as height_m and once in the
+  // {value, unit} shape; elevations must follow, columns be found by name.
+  const auto dir = test::scratch_dir("rundata");
+  {
+    std::ofstream h(dir / "histories.csv");
+    h << "time [s],b/floor 2 u [m],ground_acceleration [m/s2],b/floor 1 u [m],b/base u [m]\n"
+      << "0,0,0,0,0\n0.1,0.3,1,0.2,0.1\n";
+    std::ofstream j(dir / "summary.json");
+    j << R"({"structures": [{"name": "b", "stories": [
+          {"label": "b/story 1", "height_m": 4.0},
+          {"label": "b/story 2", "height": {"value": 3.5, "unit": "m"}}]}]})";
+  }
+  const RunData run = read_run(dir);
+  ASSERT_EQ(run.structures.size(), 1u);
+  const auto& levels = run.structures[0].levels;
+  ASSERT_EQ(levels.size(), 3u);
+  EXPECT_EQ(levels[0].label, "b/base");
+  EXPECT_DOUBLE_EQ(levels[1].elevation, 4.0);
+  EXPECT_DOUBLE_EQ(levels[2].elevation, 7.5);
+  EXPECT_EQ(levels[2].u, 1);
+  EXPECT_DOUBLE_EQ(value_at(run, levels[1].u, 0.05), 0.1);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(PostCli, BadInputGivesOneClearErrorAndNonZeroExit) {
   const auto dir = test::scratch_dir("bad");
   auto r = test::run_post("plot " + (dir / "nope").string());
@@ -160,6 +190,11 @@ TEST(PostCli, BadInputGivesOneClearErrorAndNonZeroExit) {
   r = test::run_post("spectra " + (dir / "missing.AT2").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("record not found"), std::string::npos) << r.output;
+  r = test::run_post("spectra a.AT2 b.AT2 c.AT2 --pair");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("two by two"), std::string::npos) << r.output;
+  r = test::run_post("");
+  EXPECT_NE(r.exit_code, 0);
   r = test::run_post("animate " + dir.string() + " --fps 0");
   EXPECT_NE(r.exit_code, 0);
   std::filesystem::remove_all(dir);
@@ -169,6 +204,7 @@ TEST(PostHeadless, PrivateXvfbIsAnnouncedInOneLineAndGoneAfterTheCommand) {
   const auto dir = test::scratch_dir("xvfb");
   {
     std::ofstream rec(dir / "rec.txt");
+    rec.precision(17);
     for (int i = 0; i < 200; ++i) rec << std::sin(0.1 * i) << "\n";
   }
   const auto r = test::run_command("env -u DISPLAY " + std::string(ISOPOUND_POST_BINARY) +
@@ -188,6 +224,18 @@ TEST(PostHeadless, PrivateXvfbIsAnnouncedInOneLineAndGoneAfterTheCommand) {
                !std::filesystem::exists("/tmp/.X" + std::string(m[1]) + "-lock"))
       << "socket left behind";
   EXPECT_GT(test::read_png((dir / "out" / "spectra.png").string()).variance(), 50.0);
+  // spectra.csv: header, then T = 0 (PSA = PGA in g) and the 120 default periods.
+  std::ifstream csv(dir / "out" / "spectra.csv");
+  std::string header, first, row;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "period_s,rec_PSA_g,rec_SD_m");
+  std::getline(csv, first);
+  double pga = 0.0;
+  for (int i = 0; i < 200; ++i) pga = std::max(pga, std::abs(std::sin(0.1 * i)));
+  EXPECT_NEAR(std::stod(first.substr(first.find(',') + 1)), pga / 9.81, 1e-8);
+  int rows = 1;
+  while (std::getline(csv, row)) ++rows;
+  EXPECT_EQ(rows, 121);
   // Bad input is found before any server starts: no announcement.
   const auto bad = test::run_command("env -u DISPLAY " + std::string(ISOPOUND_POST_BINARY) +
                                      " plot " + (dir / "nope").string());
