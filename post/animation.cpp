@@ -73,9 +73,10 @@ const Level* level_named(const Structure& s, const std::string& level) {
 
 }  // namespace
 
-std::vector<double> frame_times(const RunData& run, double fps) {
+std::vector<double> frame_times(const RunData& run, double fps, double start, double end) {
   std::vector<double> times;
-  const double t0 = run.time().front(), t1 = run.time().back();
+  const double t0 = std::max(run.time().front(), start);
+  const double t1 = end < 0.0 ? run.time().back() : std::min(end, run.time().back());
   // Frame k at t0 + k/fps (integer k, no accumulated sum), up to t1 within round-off.
   for (long k = 0;; ++k) {
     const double t = t0 + static_cast<double>(k) / fps;

@@ -39,12 +39,16 @@ struct FrameMesh {
 struct AnimationOptions {
   double scale = 1.0;           // displacement magnification
   double fps = 25.0;            // frames per second of analysis time
+  double start = 0.0;           // s, first frame (clamped to the run)
+  double end = -1.0;            // s, last frame at or before it; < 0: the end of the run
   double slab_width = 12.0;     // m, drawn width of a floor slab
   double slab_thickness = 0.4;  // m
 };
 
-// Frame times: 0, 1/fps, 2/fps, ... up to the last history row (never beyond it).
-std::vector<double> frame_times(const RunData& run, double fps);
+// Frame times: start, start + 1/fps, start + 2/fps, ... up to `end` or the last history row
+// (never beyond it).
+std::vector<double> frame_times(const RunData& run, double fps, double start = 0.0,
+                                double end = -1.0);
 
 // The frame at time t (histories interpolated linearly between rows). Arrays:
 //   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s^2)

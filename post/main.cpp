@@ -253,7 +253,10 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   if (preview > run.time().back())
     throw BadInput("--preview " + std::to_string(preview) + " s: after the end of the run (" +
                    std::to_string(run.time().back()) + " s)");
-  const std::vector<double> times = frame_times(run, opt.fps);
+  if (opt.start < 0.0 || (opt.end >= 0.0 && opt.end < opt.start) || opt.start > run.time().back())
+    throw BadInput("--start/--end: need 0 <= start <= end, start before the end of the run (" +
+                   std::to_string(run.time().back()) + " s)");
+  const std::vector<double> times = frame_times(run, opt.fps, opt.start, opt.end);
   std::vector<std::string> files;
   std::fflush(stdout);
   Progress progress("frames", times.size());
@@ -345,6 +348,8 @@ int main(int argc, char** argv) {
   animate->add_option("--scale", ao.scale, "displacement magnification (default 1)");
   animate->add_option("--fps", ao.fps, "frames per second of analysis time (default 25)");
   animate->add_option("-o,--out", out, "output directory (default: RUN_DIR/animation)");
+  animate->add_option("--start", ao.start, "time of the first frame [s] (default 0)");
+  animate->add_option("--end", ao.end, "time of the last frame [s] (default: end of the run)");
   animate->add_option("--preview", preview, "also write preview.png of the frame at this time [s]");
   animate->add_option("--model", model, "model file (default: the one named in summary.json)");
 
