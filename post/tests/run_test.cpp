@@ -63,10 +63,24 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
   ASSERT_GE(f_left, 0);
   std::ifstream sj(run_dir / "summary.json");
   const auto summary = nlohmann::json::parse(sj);
-  // Largest level displacement of the run (every level's point carries its level's u).
-  double peak_level = 0.0;
+  // Largest level displacement of the run (every level's point carries its level's u), story
+  // drift ratio and wall force: the frames' arrays cannot exceed them.
+  // A peak in either summary shape: {peak_m | peak, time_s} now, {value, unit, time} later.
+  const auto peak = [](const nlohmann::json& j) {
+    for (const char* key : {"value", "peak_m", "peak"})
+      if (j.contains(key)) return j[key].get<double>();
+    ADD_FAILURE() << "no peak value in " << j.dump();
+    return 0.0;
+  };
+  double peak_level = 0.0, peak_drift = 0.0, peak_force = 0.0;
   for (const auto& level : summary["structures"][0]["levels"])
-    peak_level = std::max(peak_level, level["displacement"]["peak_m"].get<double>());
+    peak_level = std::max(peak_level, peak(level["displacement"]));
+  for (const auto& story : summary["structures"][0]["stories"])
+    peak_drift = std::max(peak_drift, peak(story["drift_ratio"]));
+  for (const auto& element : summary["elements"])
+    if (element["label"].get<std::string>().find("/wall ") != std::string::npos)
+      peak_force = std::max(peak_force, peak(element["peak_force"]));
+  ASSERT_GT(peak_force, 0.0);
 
   // The .pvd: one DataSet per frame at k / fps, files in order.
   std::ifstream pvd(out / "animation.pvd");
@@ -81,7 +95,7 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
   const double t_end = 12.0;  // --end: the strong motion (the rest is free vibration)
   ASSERT_EQ(frames.size(), static_cast<std::size_t>(std::floor(t_end * fps + 1e-9)) + 1);
 
-  double max_u = 0.0;
+  double max_u = 0.0, max_drift = 0.0, max_force = 0.0;
   int contact_frames = 0;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     EXPECT_NEAR(frames[k].first, k / fps, 1e-12);
@@ -101,12 +115,21 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
     EXPECT_EQ(block->GetDataType(), VTK_DOUBLE);
     for (vtkIdType i = 0; i < disp->GetNumberOfTuples(); ++i)
       max_u = std::max(max_u, std::abs(disp->GetComponent(i, 0)));
-    // Contact cells exactly when a wall force is positive at this frame time.
+    // Contact cells exactly when a wall's force or penetration is positive at this frame time.
+    // Frames at k/10 s fall on history rows (every 5 ms): read the row itself, no interpolation.
     const double t = frames[k].first;
+    std::size_t row = 0;
+    while (row < run.rows() && std::abs(run.time()[row] - t) > 1e-9) ++row;
+    ASSERT_LT(row, run.rows()) << "no history row at t = " << t;
     const int p_left = run.find("3-storey-bw/wall left (base)", "penetration");
     const int p_right = run.find("3-storey-bw/wall right (base)", "penetration");
-    const int expected = (value_at(run, f_left, t) > 0.0 || value_at(run, p_left, t) > 0.0) +
-                         (value_at(run, f_right, t) > 0.0 || value_at(run, p_right, t) > 0.0);
+    const int expected = (run.values[f_left][row] > 0.0 || run.values[p_left][row] > 0.0) +
+                         (run.values[f_right][row] > 0.0 || run.values[p_right][row] > 0.0);
+    vtkDataArray* drift = g->GetCellData()->GetArray("drift_ratio");
+    for (vtkIdType c = 0; c < drift->GetNumberOfTuples(); ++c)
+      max_drift = std::max(max_drift, std::abs(drift->GetComponent(c, 0)));
+    for (vtkIdType c = 0; c < force->GetNumberOfTuples(); ++c)
+      max_force = std::max(max_force, std::abs(force->GetComponent(c, 0)));
     int contacts = 0;
     for (vtkIdType c = 0; c < block->GetNumberOfTuples(); ++c)
       if (block->GetComponent(c, 0) == 4.0) {
@@ -123,6 +146,10 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
   // Displacements are the true ones (not scaled): not above the summary's peak (taken over every
   // step) and within 10 % of it at 10 frames/s (the isolated building sways with a ~2 s period).
   EXPECT_LE(max_u, peak_level * (1 + 1e-9));
+  EXPECT_LE(max_drift, peak_drift * (1 + 1e-9));
+  EXPECT_GT(max_drift, 0.5 * peak_drift);  // drift peaks are short (impacts): a looser bound
+  EXPECT_LE(max_force, peak_force * (1 + 1e-9));
+  EXPECT_GT(max_force, 0.0);
   EXPECT_GT(max_u, 0.9 * peak_level);
   std::filesystem::remove_all(out);
 }
