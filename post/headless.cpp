@@ -1,6 +1,7 @@
 // Private Xvfb for headless rendering (see headless.h).
 #include "post/headless.h"
 
+#include <X11/Xlib.h>
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -56,14 +57,30 @@ bool has_display() {
   return d != nullptr && *d != '\0';
 }
 
+bool display_reachable() {
+  if (!has_display()) return false;
+  Display* x = XOpenDisplay(nullptr);
+  if (x == nullptr) return false;
+  XCloseDisplay(x);
+  return true;
+}
+
 PrivateDisplay::PrivateDisplay(bool announce, double timeout_seconds) {
-  if (has_display()) {
+  if (display_reachable()) {
     display_ = std::getenv("DISPLAY");
     return;
   }
+  // A DISPLAY that cannot be opened (ssh without X forwarding, a stopped server) would make VTK
+  // abort: render on a private server instead, and say why.
+  const std::string reason =
+      has_display() ? "DISPLAY=" + std::string(std::getenv("DISPLAY")) + " cannot be opened"
+                    : std::string("no DISPLAY");
+  if (has_display()) previous_display_ = std::getenv("DISPLAY");
   int fds[2];
   if (pipe(fds) != 0) throw HeadlessError(std::string("pipe: ") + std::strerror(errno));
   install_cleanup_once();
+  char fd_text[16];  // formatted before fork: the child only calls async-signal-safe functions
+  std::snprintf(fd_text, sizeof fd_text, "%d", fds[1]);
   const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
@@ -82,8 +99,6 @@ PrivateDisplay::PrivateDisplay(bool announce, double timeout_seconds) {
       dup2(null_fd, STDOUT_FILENO);
       dup2(null_fd, STDERR_FILENO);
     }
-    char fd_text[16];
-    std::snprintf(fd_text, sizeof fd_text, "%d", fds[1]);
     execlp("Xvfb", "Xvfb", "-displayfd", fd_text, "-screen", "0", "1600x1200x24", "-nolisten",
            "tcp", "-noreset", static_cast<char*>(nullptr));
     _exit(127);
@@ -121,8 +136,8 @@ PrivateDisplay::PrivateDisplay(bool announce, double timeout_seconds) {
   display_ = std::string(1, ':') + text;
   setenv("DISPLAY", display_.c_str(), 1);
   if (announce)
-    std::fprintf(stderr, "isopound-post: no DISPLAY, rendering on a private Xvfb %s (pid %d)\n",
-                 display_.c_str(), static_cast<int>(pid_));
+    std::fprintf(stderr, "isopound-post: %s, rendering on a private Xvfb %s (pid %d)\n",
+                 reason.c_str(), display_.c_str(), static_cast<int>(pid_));
 }
 
 void PrivateDisplay::stop() {
@@ -132,7 +147,10 @@ void PrivateDisplay::stop() {
   int status = 0;
   waitpid(pid_, &status, 0);
   pid_ = -1;
-  unsetenv("DISPLAY");
+  if (previous_display_.empty())
+    unsetenv("DISPLAY");
+  else
+    setenv("DISPLAY", previous_display_.c_str(), 1);
 }
 
 PrivateDisplay::~PrivateDisplay() {

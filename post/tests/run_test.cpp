@@ -266,6 +266,14 @@ TEST(PostHeadless, PrivateXvfbIsAnnouncedInOneLineAndGoneAfterTheCommand) {
   int rows = 1;
   while (std::getline(csv, row)) ++rows;
   EXPECT_EQ(rows, 121);
+  // A DISPLAY that cannot be opened (ssh without X forwarding) is replaced, not fatal.
+  const auto stale = test::run_command("env DISPLAY=:65000 " + std::string(ISOPOUND_POST_BINARY) +
+                                       " spectra " + (dir / "rec.txt").string() +
+                                       " --unit m/s2 --dt 0.01 -o " + (dir / "out2").string());
+  EXPECT_EQ(stale.exit_code, 0) << stale.output;
+  EXPECT_NE(stale.output.find("DISPLAY=:65000 cannot be opened, rendering on a private Xvfb"),
+            std::string::npos)
+      << stale.output;
   // Bad input is found before any server starts: no announcement.
   const auto bad = test::run_command("env -u DISPLAY " + std::string(ISOPOUND_POST_BINARY) +
                                      " plot " + (dir / "nope").string());
