@@ -136,10 +136,12 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
 
   // Moat walls (rigid): 1 m thick, from 1.5 m below to 1 m above the level they face.
   const Structure& main = run.structures.front();
+  // A flexible wall (its own DOF) moves with its displacement.
+  const auto wall_u = [&](const Wall& w) { return w.u >= 0 ? value_at(run, w.u, t) : 0.0; };
   for (const Wall& w : run.walls) {
-    const double face = w.side * (W / 2 + S * w.gap);
+    const double u = wall_u(w), face = w.side * (W / 2 + S * w.gap) + S * u;
     f.rect(std::min(face, face + w.side * 1.0), std::max(face, face + w.side * 1.0),
-           w.elevation - 1.5, w.elevation + 1.0, 0.0, 0.0, Block::kWall);
+           w.elevation - 1.5, w.elevation + 1.0, u, 0.0, Block::kWall);
   }
   // Contacts in contact: the overlap between the slab edge and the face it hits, with the force
   // on the (first) building as a vector and the penetration.
@@ -157,7 +159,7 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
           if (lv.elevation == w.elevation) l = &lv;
         if (!l) break;
         const double u = u_of(*l), edge = S * u + w.side * W / 2;
-        const double face = w.side * (W / 2 + S * w.gap);
+        const double face = w.side * (W / 2 + S * w.gap) + S * wall_u(w);
         f.rect(std::min(edge, face), std::max(edge, face), l->elevation - H / 2,
                l->elevation + H / 2, u, a_of(*l), Block::kContact, -w.side * force, pen);
       }

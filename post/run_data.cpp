@@ -86,6 +86,7 @@ void find_structures(RunData& run) {
     const auto slash = n.label.find('/');
     if (slash == std::string::npos) continue;
     const std::string name = n.label.substr(0, slash), level = n.label.substr(slash + 1);
+    if (level.rfind("wall ", 0) == 0) continue;  // a flexible wall's own DOF (see find_geometry)
     auto it = std::find_if(run.structures.begin(), run.structures.end(),
                            [&](const Structure& s) { return s.name == name; });
     if (it == run.structures.end()) {
@@ -172,15 +173,16 @@ void find_geometry(RunData& run, const std::string& model_override) {
       throw RunDataError(std::string("model file of the run: ") + e.what());
     }
     for (const WallConfig& w : config.building.walls) {
-      const double z =
-          w.level < static_cast<int>(main.levels.size()) ? main.levels[w.level].elevation : 0.0;
-      const std::string level = w.level < static_cast<int>(main.levels.size())
-                                    ? main.levels[w.level].label.substr(main.name.size() + 1)
-                                    : "";
+      if (w.level < 0 || w.level >= static_cast<int>(main.levels.size())) continue;
+      // Labels as the solver writes them (structures/pounding2d.cpp).
+      const std::string where = w.level == 0 && config.building.isolated
+                                    ? std::string("base")
+                                    : "level " + std::to_string(w.level);
+      const double z = main.levels[w.level].elevation;
       if (w.left)
-        run.walls.push_back({main.name + "/wall left (" + level + ")", -1, w.gap_left, z});
+        run.walls.push_back({main.name + "/wall left (" + where + ")", -1, w.gap_left, z});
       if (w.right)
-        run.walls.push_back({main.name + "/wall right (" + level + ")", +1, w.gap_right, z});
+        run.walls.push_back({main.name + "/wall right (" + where + ")", +1, w.gap_right, z});
     }
     for (const NeighbourConfig& n : config.neighbours)
       for (Structure& s : run.structures)
@@ -189,6 +191,7 @@ void find_geometry(RunData& run, const std::string& model_override) {
           s.side = n.right ? +1 : -1;
           s.gap = n.gap;
         }
+    for (Wall& w : run.walls) w.u = run.find(w.label + " structure", "u");
     return;
   }
   run.notes.push_back("model file not found: wall gaps inferred from the contact histories");
@@ -205,17 +208,23 @@ void find_geometry(RunData& run, const std::string& model_override) {
                                   : "base";
     const Structure* s = structure_named(run, c.label.substr(0, pos));
     const Level* lv = nullptr;
-    if (s)
+    if (s) {
       for (const Level& l : s->levels)
         if (l.label == s->name + "/" + level) lv = &l;
+      // "level k" (walls of a fixed-base building): the k-th level from the bottom.
+      const int k = level.rfind("level ", 0) == 0 ? std::atoi(level.c_str() + 6) : -1;
+      if (!lv && k >= 0 && k < static_cast<int>(s->levels.size())) lv = &s->levels[k];
+    }
     if (!lv) continue;
+    w.u = run.find(c.label + " structure", "u");
     w.elevation = lv->elevation;
     double best = -1.0;
     for (std::size_t r = 0; r < run.rows(); ++r) {
       const double pen = run.values[c.penetration][r];
       if (pen > best) {
         best = pen;
-        w.gap = w.side * run.values[lv->u][r] - pen;
+        const double u_wall = w.u >= 0 ? run.values[w.u][r] : 0.0;
+        w.gap = w.side * (run.values[lv->u][r] - u_wall) - pen;
       }
     }
     if (best <= 0.0) {

@@ -54,6 +54,7 @@ struct Wall {
   double gap = 0.0;        // m at rest
   double elevation = 0.0;  // m, of the level it faces
   bool gap_known = true;   // false: inferred, see run_geometry notes
+  int u = -1;              // flexible wall: its own displacement column ("<label> structure u")
 };
 
 struct RunData {

@@ -1,6 +1,7 @@
 // plot and animate on real 2D runs: a pounding run of configs/ made by the solver, every .vtu read
 // back with VTK's XML reader and checked against the run's histories and summary.json; bad input.
 #include <gtest/gtest.h>
+#include <vtkCell.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
@@ -152,6 +153,63 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
   EXPECT_GT(max_force, 0.0);
   EXPECT_GT(max_u, 0.9 * peak_level);
   std::filesystem::remove_all(out);
+}
+
+TEST(PostAnimate, FlexibleWallsMoveAndAreNotLevelsOfTheBuilding) {
+  ISOPOUND_REQUIRE_RECORDS();
+  // The chapter-4 set-up with flexible walls (200 MN/m): each wall is a DOF of its own.
+  const auto dir = test::scratch_dir("flex");
+  std::ifstream in(test::source_dir() / "configs" / "chapter4-3storey-kelvin_voigt.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const auto mass = yaml.find("    mass: 500 t");
+  ASSERT_NE(mass, std::string::npos);
+  yaml.insert(mass, "    stiffness: 200 MN/m\n");
+  const auto rec = yaml.find("../../shared/records/");
+  ASSERT_NE(rec, std::string::npos);
+  yaml.replace(rec, 21, (::isopound::test::records_dir() / "").string());
+  std::ofstream(dir / "flex.yaml") << yaml;
+  auto r =
+      test::run_solver("run " + (dir / "flex.yaml").string() + " -o " + (dir / "run").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+
+  const RunData run = read_run(dir / "run", (dir / "flex.yaml").string());
+  ASSERT_EQ(run.structures.size(), 1u);
+  EXPECT_EQ(run.structures[0].levels.size(), 4u);  // base + 3 floors, no wall DOFs
+  ASSERT_EQ(run.walls.size(), 2u);
+  for (const Wall& w : run.walls) {
+    EXPECT_GE(w.u, 0) << w.label;
+    EXPECT_DOUBLE_EQ(w.gap, 0.2);
+  }
+  r = test::run_post("animate " + (dir / "run").string() + " --model " +
+                     (dir / "flex.yaml").string() + " --fps 10 --end 8 -o " +
+                     (dir / "anim").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  double max_wall_u = 0.0;
+  int contact_frames = 0;
+  for (int k = 0; k <= 80; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06d.vtu", k);
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((dir / "anim" / name).string().c_str());
+    reader->Update();
+    vtkUnstructuredGrid* g = reader->GetOutput();
+    vtkDataArray* block = g->GetCellData()->GetArray("block");
+    vtkDataArray* disp = g->GetPointData()->GetArray("displacement");
+    ASSERT_TRUE(block && disp) << name;
+    for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c) {
+      if (block->GetComponent(c, 0) == 4.0) ++contact_frames;
+      if (block->GetComponent(c, 0) != 3.0) continue;
+      const vtkIdType p = g->GetCell(c)->GetPointId(0);
+      max_wall_u = std::max(max_wall_u, std::abs(disp->GetComponent(p, 0)));
+    }
+  }
+  EXPECT_GT(contact_frames, 0);
+  // The walls are pushed: they move, by less than the base slab's peak.
+  EXPECT_GT(max_wall_u, 0.0);
+  EXPECT_LT(max_wall_u, 0.3);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(PostPlot, RunFiguresAreWrittenNonBlankWithTheirSize) {
