@@ -24,8 +24,10 @@ struct MeshArray {
   std::vector<double> values;  // components per point or per cell
 };
 
-// What a cell is (cell array "block"): the blocks of a frame. A 3D writer adds its own kinds
-// (extruded slabs, contact overlap polygons) without changing the writer.
+// What a cell is (cell array "block"): the blocks of a frame. The mesh and the .vtu writer know
+// no dimension: a 3D frame builder adds hexahedra (VTK type 12) for extruded slabs, polygons (7)
+// for contact overlaps and vertices with vector arrays for forces, new Block values after these,
+// and the writer, the .pvd and the tests' reader stay as they are.
 enum class Block { kSlab = 0, kColumn = 1, kBearing = 2, kWall = 3, kContact = 4 };
 
 struct FrameMesh {
