@@ -1,0 +1,69 @@
+// Animation frames of a run as plain meshes (points, cells, named Float64 arrays), one per output
+// time: 2D runs as a stick model in the x-z plane (slabs, columns, bearings, walls, contacts).
+// Displacements are drawn magnified by `scale` (gaps too, so bodies touch exactly when in contact).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "post/figure.h"
+#include "post/run_data.h"
+
+namespace isopound::post {
+
+// A cell: VTK cell type number (3 line, 9 quad, 7 polygon) and its point indices.
+struct MeshCell {
+  int vtk_type = 3;
+  std::vector<int> points;
+};
+
+struct MeshArray {
+  std::string name;
+  int components = 1;
+  std::vector<double> values;  // components per point or per cell
+};
+
+// What a cell is (cell array "block"): the blocks of a frame. The mesh and the .vtu writer know
+// no dimension: a 3D frame builder adds hexahedra (VTK type 12) for extruded slabs, polygons (7)
+// for contact overlaps and vertices with vector arrays for forces, new Block values after these,
+// and the writer, the .pvd and the tests' reader stay as they are.
+enum class Block { kSlab = 0, kColumn = 1, kBearing = 2, kWall = 3, kContact = 4 };
+
+struct FrameMesh {
+  double time = 0.0;                          // s
+  std::vector<std::array<double, 3>> points;  // m, drawing coordinates (x right, y, z up)
+  std::vector<MeshCell> cells;
+  std::vector<MeshArray> point_data;  // one value set per point
+  std::vector<MeshArray> cell_data;   // one value set per cell
+};
+
+struct AnimationOptions {
+  double scale = 1.0;           // displacement magnification
+  double fps = 25.0;            // frames per second of analysis time
+  double start = 0.0;           // s, first frame (clamped to the run)
+  double end = -1.0;            // s, last frame at or before it; < 0: the end of the run
+  double slab_width = 12.0;     // m, drawn width of a floor slab
+  double slab_thickness = 0.4;  // m
+};
+
+// Frame times: start, start + 1/fps, start + 2/fps, ... up to `end` or the last history row
+// (never beyond it).
+std::vector<double> frame_times(const RunData& run, double fps, double start = 0.0,
+                                double end = -1.0);
+
+// The frame at time t (histories interpolated linearly between rows). Arrays:
+//   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s^2)
+//   cell data:  block, drift_ratio (columns), bearing_force (bearings, N), contact_force (3, N,
+//               on the body, contacts), penetration (contacts, m)
+// Contact cells exist only in frames where that contact's force or penetration is > 0.
+FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& options);
+
+// A picture of one frame (x-z view, equal axes, coloured by block, with the time and the scale):
+// the README's preview of an animation, and a quick look without ParaView.
+Figure frame_figure(const FrameMesh& mesh, double scale, int width = 900, int height = 520);
+
+// The .pvd collection (ParaView Data) for files written at times.
+std::string pvd_text(const std::vector<double>& times, const std::vector<std::string>& files);
+
+}  // namespace isopound::post

@@ -1,0 +1,388 @@
+// isopound-post: plots of a run, response spectra of records, polar figures of a study and
+// ParaView animations. Headless by default (a private Xvfb when there is no DISPLAY).
+// Exit codes: 0 success, 2 bad input (message names the file / key), 1 anything else.
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+
+#include "post/animation.h"
+#include "post/headless.h"
+#include "post/plot_run.h"
+#include "post/polar_study.h"
+#include "post/render_png.h"
+#include "post/run_data.h"
+#include "post/spectra.h"
+#include "post/vtu_writer.h"
+#include "post/xy_plot.h"
+#include "solver/core/constants.h"
+#include "solver/excitation/ground_motion.h"
+
+namespace fs = std::filesystem;
+using namespace isopound;
+using namespace isopound::post;
+
+namespace {
+
+enum ExitCode { kOk = 0, kFailure = 1, kBadInput = 2 };
+
+// Input errors: a message already naming file/key; exit code 2.
+struct BadInput : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+// Progress on stderr for long loops, only on a terminal (CI logs stay clean).
+class Progress {
+ public:
+  Progress(std::string what, std::size_t total) : what_(std::move(what)), total_(total) {
+    tty_ = isatty(STDERR_FILENO) != 0;
+  }
+  void tick(std::size_t done) {
+    if (!tty_ || total_ == 0) return;
+    const int pct = static_cast<int>(100 * done / total_);
+    if (pct == last_) return;
+    last_ = pct;
+    std::fprintf(stderr, "\r%s [%-40s] %3d%%", what_.c_str(),
+                 std::string(pct * 40 / 100, '#').c_str(), pct);
+    if (done == total_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  std::string what_;
+  std::size_t total_;
+  bool tty_ = false;
+  int last_ = -1;
+};
+
+// ---- spectra -----------------------------------------------------------------------------
+
+struct SpectraArgs {
+  std::vector<std::string> records;
+  bool pair = false;
+  double damping = 5.0;  // %
+  std::string out = "spectra";
+  std::string unit;  // g | m/s2 | cm/s2 (columns)
+  double dt = 0.0;
+  int column = 0;
+  int time_column = -1;
+  double scale = 1.0;
+  int oversample = 1;
+};
+
+GroundMotion load(const std::string& path, const SpectraArgs& a) {
+  RecordReadOptions o;
+  o.column = a.column;
+  o.time_column = a.time_column;
+  o.dt = a.dt;
+  o.scale = a.scale;
+  if (a.unit == "g" || a.unit.empty())
+    o.unit = AccelerationUnit::kG;
+  else if (a.unit == "m/s2")
+    o.unit = AccelerationUnit::kMetrePerSecond2;
+  else if (a.unit == "cm/s2")
+    o.unit = AccelerationUnit::kCentimetrePerSecond2;
+  else
+    throw BadInput("--unit: '" + a.unit + "' is not one of g, m/s2, cm/s2");
+  if (!fs::exists(path)) throw BadInput(path + ": record not found");
+  try {
+    return read_record(path, o);
+  } catch (const RecordError& e) {
+    throw BadInput(e.file() + (e.line() > 0 ? ":" + std::to_string(e.line()) : "") + ": " +
+                   e.what());
+  }
+}
+
+int run_spectra(const SpectraArgs& a) {
+  if (a.pair && a.records.size() % 2 != 0)
+    throw BadInput("--pair: give the records two by two (component 1, component 2, ...); got " +
+                   std::to_string(a.records.size()));
+  if (!(a.damping >= 0.0 && a.damping < 100.0)) throw BadInput("--damping: must be in [0, 100) %");
+  if (a.oversample < 1) throw BadInput("--oversample: must be >= 1");
+  std::vector<GroundMotion> motions;
+  for (const std::string& r : a.records) motions.push_back(load(r, a));
+  SpectrumOptions opt;
+  opt.damping = a.damping / 100.0;
+  opt.oversample = a.oversample;
+  const std::vector<double> periods = default_periods();
+  fs::create_directories(a.out);
+
+  std::vector<Spectrum> spectra;
+  Progress progress("spectra", motions.size());
+  for (const GroundMotion& m : motions) {
+    spectra.push_back(response_spectrum(m, periods, opt));
+    progress.tick(spectra.size());
+  }
+  const SpectrumStatistics st = spectrum_statistics(spectra);
+  std::vector<RotDSpectrum> rotd;
+  if (a.pair)
+    for (std::size_t i = 0; i + 1 < motions.size(); i += 2) {
+      try {
+        rotd.push_back(rotd_spectrum(motions[i], motions[i + 1], periods, opt));
+      } catch (const std::invalid_argument& e) {
+        throw BadInput(e.what());
+      }
+    }
+
+  // CSV: PSA in g and SD in m per record, statistics, RotD.
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "period_s";
+  for (const Spectrum& s : spectra) csv << "," << s.name << "_PSA_g," << s.name << "_SD_m";
+  const bool stats = spectra.size() > 1;
+  if (stats) csv << ",mean_PSA_g,sigma_PSA_g,mean_SD_m,sigma_SD_m";
+  for (const RotDSpectrum& r : rotd)
+    csv << "," << r.name << "_RotD50_PSA_g," << r.name << "_RotD100_PSA_g," << r.name
+        << "_RotD50_SD_m," << r.name << "_RotD100_SD_m";
+  csv << "\n";
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    csv << periods[i];
+    for (const Spectrum& s : spectra) csv << "," << s.psa[i] / kGravity << "," << s.sd[i];
+    if (stats)
+      csv << "," << st.mean_psa[i] / kGravity << "," << st.sigma_psa[i] / kGravity << ","
+          << st.mean_sd[i] << "," << st.sigma_sd[i];
+    for (const RotDSpectrum& r : rotd)
+      csv << "," << r.psa50[i] / kGravity << "," << r.psa100[i] / kGravity << "," << r.sd50[i]
+          << "," << r.sd100[i];
+    csv << "\n";
+  }
+  write_text(fs::path(a.out) / "spectra.csv", csv.str());
+
+  // Figure: PSA [g] and SD [cm] against period.
+  char damping_text[32];
+  std::snprintf(damping_text, sizeof damping_text, "%g %%", a.damping);
+  Panel psa{"Pseudo-acceleration, ξ = " + std::string(damping_text),
+            "period T [s]",
+            "PSA [g]",
+            {},
+            true,
+            false,
+            true};
+  Panel sd{"Displacement, ξ = " + std::string(damping_text),
+           "period T [s]",
+           "SD [cm]",
+           {},
+           true,
+           false,
+           true};
+  const auto add = [&](const std::string& label, const std::vector<double>& p,
+                       const std::vector<double>& d, std::optional<Rgb> c, double w) {
+    std::vector<double> pg, dc;
+    for (double x : p) pg.push_back(x / kGravity);
+    for (double x : d) dc.push_back(x * 100.0);
+    psa.series.push_back({label, periods, pg, c, w});
+    sd.series.push_back({label, periods, dc, c, w});
+  };
+  const bool many = spectra.size() > 1;
+  for (std::size_t k = 0; k < spectra.size(); ++k)
+    add(spectra[k].name, spectra[k].psa, spectra[k].sd,
+        many ? std::optional<Rgb>(Rgb{170, 170, 170}) : std::nullopt, many ? 1.0 : 1.8);
+  if (many) {
+    std::vector<double> lo_p, hi_p, lo_d, hi_d;
+    for (std::size_t i = 0; i < periods.size(); ++i) {
+      lo_p.push_back(st.mean_psa[i] - st.sigma_psa[i]);
+      hi_p.push_back(st.mean_psa[i] + st.sigma_psa[i]);
+      lo_d.push_back(st.mean_sd[i] - st.sigma_sd[i]);
+      hi_d.push_back(st.mean_sd[i] + st.sigma_sd[i]);
+    }
+    add("mean", st.mean_psa, st.mean_sd, Rgb{0, 0, 0}, 2.5);
+    add("mean ± σ", hi_p, hi_d, Rgb{214, 39, 40}, 1.5);
+    add("", lo_p, lo_d, Rgb{214, 39, 40}, 1.5);
+  }
+  for (std::size_t k = 0; k < rotd.size(); ++k) {
+    const std::string pre = rotd.size() > 1 ? rotd[k].name + " " : "";
+    add(pre + "RotD50", rotd[k].psa50, rotd[k].sd50, series_colour(2 * k), 2.0);
+    add(pre + "RotD100", rotd[k].psa100, rotd[k].sd100, series_colour(2 * k + 1), 2.0);
+  }
+  if (many) {
+    // Individual records are grey and unlabelled in the legend.
+    for (Panel* p : {&psa, &sd})
+      for (std::size_t k = 0; k < spectra.size(); ++k) p->series[k].label = "";
+    psa.series.front().label = sd.series.front().label = "records";
+  }
+  const PrivateDisplay display;
+  render_png(xy_figure({psa, sd}, 2, 1200, 480, "Elastic response spectra"),
+             (fs::path(a.out) / "spectra.png").string());
+  std::printf("Wrote %s/spectra.csv and %s/spectra.png\n", a.out.c_str(), a.out.c_str());
+  return kOk;
+}
+
+// ---- plot / animate -------------------------------------------------------------------------
+
+RunData load_run(const std::string& dir, const std::string& model) {
+  try {
+    RunData run = read_run(dir, model);
+    for (const std::string& n : run.notes)
+      std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
+    return run;
+  } catch (const RunDataError& e) {
+    throw BadInput(e.what());
+  }
+}
+
+int run_plot(const std::string& dir, const std::string& out, const std::string& model) {
+  const RunData run = load_run(dir, model);
+  const fs::path out_dir = out.empty() ? fs::path(dir) : fs::path(out);
+  fs::create_directories(out_dir);
+  const auto figures = run_figures(run);
+  const PrivateDisplay display;
+  for (const NamedFigure& f : figures) {
+    render_png(f.figure, (out_dir / f.file).string());
+    std::printf("Wrote %s\n", (out_dir / f.file).string().c_str());
+  }
+  return kOk;
+}
+
+int run_animate(const std::string& dir, const std::string& out, const std::string& model,
+                const AnimationOptions& opt, double preview) {
+  if (!(opt.scale > 0.0) || !std::isfinite(opt.scale)) throw BadInput("--scale: must be > 0");
+  if (!(opt.fps > 0.0) || !std::isfinite(opt.fps)) throw BadInput("--fps: must be > 0");
+  const RunData run = load_run(dir, model);
+  const fs::path out_dir = out.empty() ? fs::path(dir) / "animation" : fs::path(out);
+  fs::create_directories(out_dir);
+  if (preview > run.time().back())
+    throw BadInput("--preview " + std::to_string(preview) + " s: after the end of the run (" +
+                   std::to_string(run.time().back()) + " s)");
+  if (opt.start < 0.0 || (opt.end >= 0.0 && opt.end < opt.start) || opt.start > run.time().back())
+    throw BadInput("--start/--end: need 0 <= start <= end, start before the end of the run (" +
+                   std::to_string(run.time().back()) + " s)");
+  const std::vector<double> times = frame_times(run, opt.fps, opt.start, opt.end);
+  std::vector<std::string> files;
+  std::fflush(stdout);
+  Progress progress("frames", times.size());
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06zu.vtu", k);
+    write_vtu(animation_frame(run, times[k], opt), (out_dir / name).string());
+    files.push_back(name);
+    progress.tick(k + 1);
+  }
+  write_text(out_dir / "animation.pvd", pvd_text(times, files));
+  std::printf("Wrote %s/animation.pvd and %zu frames (%.4g s to %.4g s at %g frames/s, scale %g)\n",
+              out_dir.string().c_str(), files.size(), times.front(), times.back(), opt.fps,
+              opt.scale);
+  if (preview >= 0.0) {
+    std::fflush(stdout);
+    const PrivateDisplay display;
+    render_png(frame_figure(animation_frame(run, preview, opt), opt.scale),
+               (out_dir / "preview.png").string());
+    std::printf("Wrote %s/preview.png (t = %g s)\n", out_dir.string().c_str(), preview);
+  }
+  return kOk;
+}
+
+// ---- polar ------------------------------------------------------------------------------------
+
+int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<std::string>& where,
+              const std::string& out) {
+  for (const std::string& w : where) {
+    const auto eq = w.find('=');
+    if (eq == std::string::npos || eq == 0) throw BadInput("--where '" + w + "': write AXIS=VALUE");
+    opt.where.push_back({w.substr(0, eq), w.substr(eq + 1)});
+  }
+  PolarStudyResult r;
+  try {
+    r = read_polar_study(db, opt);
+  } catch (const PolarStudyError& e) {
+    throw BadInput(e.what());
+  }
+  for (const std::string& n : r.notes) std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
+  const std::string stem = out.empty()
+                               ? (fs::path(db).parent_path() /
+                                  (fs::path(db).stem().string() + "-polar-" + opt.quantity +
+                                   (opt.contour_axis.empty() ? "" : "-" + opt.contour_axis)))
+                                     .string()
+                               : out;
+  if (!fs::path(stem).parent_path().empty()) fs::create_directories(fs::path(stem).parent_path());
+  write_text(stem + ".csv", r.csv);
+  const PrivateDisplay display;
+  render_png(opt.contour_axis.empty() ? polar_envelope_figure(r.envelope)
+                                      : polar_contour_figure(r.contour),
+             stem + ".png");
+  std::printf("Wrote %s.png and %s.csv\n", stem.c_str(), stem.c_str());
+  return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"isopound-post: plots, response spectra, polar figures and animations"};
+  app.require_subcommand(1);
+
+  SpectraArgs sa;
+  auto* spectra =
+      app.add_subcommand("spectra", "5 %-damped PSA and SD spectra of records (CSV, PNG)");
+  spectra->add_option("records", sa.records, "record files (PEER .AT2 or columns)")->required();
+  spectra->add_flag("--pair", sa.pair, "records two by two form horizontal pairs: RotD50/RotD100");
+  spectra->add_option("--damping", sa.damping, "damping ratio in % (default 5)");
+  spectra->add_option("-o,--out", sa.out, "output directory (default: spectra)");
+  spectra->add_option("--unit", sa.unit, "columns files: g | m/s2 | cm/s2");
+  spectra->add_option("--dt", sa.dt, "columns files without a time column: time step [s]");
+  spectra->add_option("--column", sa.column, "columns files: acceleration column (0-based)");
+  spectra->add_option("--time-column", sa.time_column, "columns files: time column (0-based)");
+  spectra->add_option("--scale", sa.scale, "multiplies the acceleration");
+  spectra->add_option("--oversample", sa.oversample,
+                      "sub-steps per record step for the peak (exact either way; default 1)");
+
+  std::string run_dir, out, model;
+  auto* plot = app.add_subcommand("plot", "time histories and hysteresis loops of a run (PNG)");
+  plot->add_option("run_dir", run_dir, "directory with histories.csv and summary.json")->required();
+  plot->add_option("-o,--out", out, "output directory (default: the run directory)");
+  plot->add_option("--model", model, "model file (default: the one named in summary.json)");
+
+  AnimationOptions ao;
+  double preview = -1.0;
+  auto* animate = app.add_subcommand("animate", "ParaView animation of a run (.pvd + .vtu frames)");
+  animate->add_option("run_dir", run_dir, "directory with histories.csv and summary.json")
+      ->required();
+  animate->add_option("--scale", ao.scale, "displacement magnification (default 1)");
+  animate->add_option("--fps", ao.fps, "frames per second of analysis time (default 25)");
+  animate->add_option("-o,--out", out, "output directory (default: RUN_DIR/animation)");
+  animate->add_option("--start", ao.start, "time of the first frame [s] (default 0)");
+  animate->add_option("--end", ao.end, "time of the last frame [s] (default: end of the run)");
+  animate->add_option("--preview", preview, "also write preview.png of the frame at this time [s]");
+  animate->add_option("--model", model, "model file (default: the one named in summary.json)");
+
+  std::string db;
+  PolarStudyOptions po;
+  std::vector<std::string> where;
+  auto* polar = app.add_subcommand("polar", "polar envelope / contour of a study (PNG, CSV)");
+  polar->add_option("study_db", db, "the study's SQLite database")->required();
+  polar->add_option("--quantity", po.quantity, "an output column of the study")->required();
+  polar->add_option("--where", where, "AXIS=VALUE filters (repeatable)");
+  polar->add_option("--per", po.per, "curves per: record (default) | case | an axis name");
+  polar->add_option("--contour", po.contour_axis, "radial axis for a contour plot (e.g. gap)");
+  polar->add_option("--unit", po.unit, "display unit of the quantity (cm, g, kN, %, ...)");
+  polar->add_option("--angle-axis", po.angle_axis,
+                    "the incidence-angle axis (default: found by name)");
+  polar->add_option("-o,--out", out, "output path without extension");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kOk : kBadInput;
+  }
+  try {
+    if (*spectra) return run_spectra(sa);
+    if (*plot) return run_plot(run_dir, out, model);
+    if (*animate) return run_animate(run_dir, out, model, ao, preview);
+    if (*polar) return run_polar(db, po, where, out);
+  } catch (const BadInput& e) {
+    std::fprintf(stderr, "isopound-post: error: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "isopound-post: error: %s\n", e.what());
+    return kFailure;
+  }
+  return kFailure;
+}

@@ -1,0 +1,273 @@
+// Study database -> polar figure data (see polar_study.h).
+#include "post/polar_study.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "solver/study/study_outputs.h"
+#include "solver/study/study_spec.h"
+#include "solver/study/study_store.h"
+
+namespace isopound::post {
+namespace {
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const std::string& x : v) {
+    if (!s.empty()) s += ", ";
+    s += x;
+  }
+  return s.empty() ? "(none)" : s;
+}
+
+std::string cell_text(const Cell& c) {
+  if (!c.numeric) return c.text;
+  std::ostringstream o;
+  o << c.number;
+  return c.text.empty() ? o.str() : c.text;
+}
+
+bool is_angle_name(std::string n) {
+  std::transform(n.begin(), n.end(), n.begin(), ::tolower);
+  return n == "angle" || n == "incidence" || n == "theta" ||
+         (n.size() >= 5 && n.compare(n.size() - 5, 5, "angle") == 0);
+}
+
+// Unit of a selector's quantity (SI) and how it is shown.
+DisplayUnit display_unit_of(const std::string& quantity) {
+  if (quantity == "displacement" || quantity == "drift" || quantity == "deformation" ||
+      quantity == "penetration" || quantity == "indentation" || quantity == "pgd")
+    return {"cm", 0.01};
+  if (quantity == "velocity" || quantity == "impact_velocity" || quantity == "pgv")
+    return {"m/s", 1.0};
+  if (quantity == "absolute_acceleration" || quantity == "pga") return {"g", 9.81};
+  if (quantity == "force") return {"kN", 1e3};
+  if (quantity == "drift_ratio") return {"%", 0.01};
+  if (quantity == "impacts" || quantity == "z" || quantity == "relative_error" ||
+      quantity == "max_relative_error")
+    return {"-", 1.0};
+  if (quantity == "dissipated_energy" || quantity == "input" || quantity == "kinetic" ||
+      quantity == "elastic" || quantity == "viscous" || quantity == "hysteretic" ||
+      quantity == "error")
+    return {"kJ", 1e3};
+  return {"SI", 1.0};
+}
+
+DisplayUnit unit_from_study(const StudyStore& store, const std::string& column) {
+  const std::string file = store.meta("study_file");
+  if (file.empty() || !std::filesystem::exists(file)) return {"SI", 1.0};
+  try {
+    const Study study = load_study_file(file);
+    for (const OutputSpec& o : study.outputs)
+      if (o.column == column) return display_unit_of(parse_output_selector(o.selector).quantity);
+  } catch (const std::exception&) {
+  }
+  return {"SI", 1.0};
+}
+
+}  // namespace
+
+double unit_divisor(const std::string& unit) {
+  static const std::map<std::string, double> kUnits{
+      {"m", 1.0},  {"cm", 0.01}, {"mm", 1e-3}, {"m/s", 1.0}, {"g", 9.81}, {"m/s2", 1.0},
+      {"N", 1.0},  {"kN", 1e3},  {"MN", 1e6},  {"%", 0.01},  {"-", 1.0},  {"J", 1.0},
+      {"kJ", 1e3}, {"MJ", 1e6},  {"rad", 1.0}, {"SI", 1.0}};
+  const auto it = kUnits.find(unit);
+  if (it == kUnits.end()) {
+    std::string names;
+    std::vector<std::string> all;
+    for (const auto& entry : kUnits) all.push_back(entry.first);
+    names = join(all);
+    throw PolarStudyError("--unit '" + unit + "': not one of " + names);
+  }
+  return it->second;
+}
+
+PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOptions& opt) {
+  if (!std::filesystem::exists(db_path))
+    throw PolarStudyError(db_path + ": study database not found");
+  std::optional<StudyStore> store;
+  try {
+    store.emplace(StudyStore::open(db_path, true));
+  } catch (const std::exception& e) {
+    throw PolarStudyError(db_path + ": not a study database: " + e.what());
+  }
+  const StoreLayout& layout = store->layout();
+  PolarStudyResult result;
+
+  // The angle axis.
+  int angle = -1;
+  for (std::size_t i = 0; i < layout.axes.size(); ++i)
+    if (opt.angle_axis.empty() ? is_angle_name(layout.axes[i]) : layout.axes[i] == opt.angle_axis)
+      angle = static_cast<int>(i);
+  if (angle < 0)
+    throw PolarStudyError(db_path + ": the study has no " +
+                          (opt.angle_axis.empty()
+                               ? std::string("incidence-angle axis (an axis named angle, "
+                                             "incidence or *angle)")
+                               : "axis '" + opt.angle_axis + "'") +
+                          "; its axes are: " + join(layout.axes));
+  const auto q = std::find(layout.outputs.begin(), layout.outputs.end(), opt.quantity);
+  if (q == layout.outputs.end())
+    throw PolarStudyError(db_path + ": quantity '" + opt.quantity +
+                          "' is not in the table; its quantities are: " + join(layout.outputs));
+  const std::size_t qi = static_cast<std::size_t>(q - layout.outputs.begin());
+  const auto axis_index = [&](const std::string& name, const char* what) {
+    const auto it = std::find(layout.axes.begin(), layout.axes.end(), name);
+    if (it == layout.axes.end())
+      throw PolarStudyError(db_path + ": " + what + " axis '" + name +
+                            "' is not in the study; its axes are: " + join(layout.axes));
+    return static_cast<int>(it - layout.axes.begin());
+  };
+  int per = -1;
+  if (opt.per != "case") {
+    const bool has =
+        std::find(layout.axes.begin(), layout.axes.end(), opt.per) != layout.axes.end();
+    if (has)
+      per = axis_index(opt.per, "--per");
+    else if (opt.per != "record")
+      axis_index(opt.per, "--per");  // throws
+  }
+  const int radial = opt.contour_axis.empty() ? -1 : axis_index(opt.contour_axis, "--contour");
+  std::vector<std::pair<int, std::string>> filters;
+  for (const auto& [axis, label] : opt.where)
+    filters.push_back({axis_index(axis, "--where"), label});
+
+  const DisplayUnit unit = opt.unit.empty() ? unit_from_study(*store, opt.quantity)
+                                            : DisplayUnit{opt.unit, unit_divisor(opt.unit)};
+  // Rows that pass the filters, finished.
+  bool degrees = false;
+  struct Row {
+    double angle_deg, radius;
+    std::string group;
+    double value;
+  };
+  std::vector<Row> rows;
+  for (const RunRow& r : store->read_runs()) {
+    if (r.status != "done" || r.values.size() <= qi || !std::isfinite(r.values[qi])) continue;
+    bool keep = true;
+    for (const auto& [axis, label] : filters)
+      if (cell_text(r.axes[axis]) != label) keep = false;
+    if (!keep) continue;
+    if (!r.axes[angle].numeric) throw PolarStudyError(db_path + ": angle axis holds labels");
+    Row row{r.axes[angle].number, 0.0, "", r.values[qi] / unit.divisor};
+    if (std::abs(row.angle_deg) > 2 * std::numbers::pi + 1e-9) degrees = true;
+    if (radial >= 0) row.radius = r.axes[radial].numeric ? r.axes[radial].number : 0.0;
+    // Group: the --per axis, or every other axis (case) except angle and radial.
+    for (std::size_t a = 0; a < r.axes.size(); ++a) {
+      if (static_cast<int>(a) == angle || static_cast<int>(a) == radial) continue;
+      if (per >= 0 && static_cast<int>(a) != per) continue;
+      if (!row.group.empty()) row.group += ' ';
+      row.group += cell_text(r.axes[a]);
+    }
+    rows.push_back(row);
+  }
+  if (rows.empty())
+    throw PolarStudyError(db_path + ": no finished runs with '" + opt.quantity +
+                          "' (after --where)");
+  for (Row& r : rows)
+    if (!degrees) r.angle_deg *= 180.0 / std::numbers::pi;
+  std::set<double> angles_set, radii_set;
+  std::vector<std::string> groups;
+  for (const Row& r : rows) {
+    angles_set.insert(r.angle_deg);
+    radii_set.insert(r.radius);
+    if (std::find(groups.begin(), groups.end(), r.group) == groups.end()) groups.push_back(r.group);
+  }
+  const std::vector<double> angles(angles_set.begin(), angles_set.end());
+  const std::vector<double> radii(radii_set.begin(), radii_set.end());
+  const std::string qtitle = opt.quantity + " [" + unit.unit + "]";
+  const auto idx = [](const std::vector<double>& v, double x) {
+    return static_cast<std::size_t>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
+  };
+  std::ostringstream csv;
+  csv.precision(10);
+
+  if (radial < 0) {
+    // value[group][angle]: max over rows that share them (other axes not fixed by --where).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<std::vector<double>> v(groups.size(), std::vector<double>(angles.size(), nan));
+    std::vector<std::vector<int>> count(groups.size(), std::vector<int>(angles.size(), 0));
+    for (const Row& r : rows) {
+      const std::size_t g = std::find(groups.begin(), groups.end(), r.group) - groups.begin();
+      const std::size_t a = idx(angles, r.angle_deg);
+      v[g][a] = count[g][a]++ ? std::max(v[g][a], r.value) : r.value;
+    }
+    for (auto& c : count)
+      if (std::any_of(c.begin(), c.end(), [](int n) { return n > 1; })) {
+        result.notes.push_back(
+            "several runs per curve and angle (other axes vary): their maximum "
+            "is drawn; fix them with --where AXIS=VALUE");
+        break;
+      }
+    PolarEnvelopeData& e = result.envelope;
+    e.title = opt.quantity + " against incidence angle";
+    e.quantity = qtitle;
+    csv << "angle_deg";
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      e.curves.push_back({groups[g].empty() ? opt.quantity : groups[g], angles, v[g], {}, 1.5});
+      csv << "," << (groups[g].empty() ? opt.quantity : groups[g]);
+    }
+    if (groups.size() > 1) {
+      PolarCurve mean{"mean", angles, {}, {}, 3.0};
+      for (std::size_t a = 0; a < angles.size(); ++a) {
+        double sum = 0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        int n = 0;
+        for (std::size_t g = 0; g < groups.size(); ++g)
+          if (std::isfinite(v[g][a]))
+            sum += v[g][a], ++n, lo = std::min(lo, v[g][a]), hi = std::max(hi, v[g][a]);
+        mean.value.push_back(n ? sum / n : nan);
+        e.band_lo.push_back(n ? lo : nan);
+        e.band_hi.push_back(n ? hi : nan);
+      }
+      e.band_angle_deg = angles;
+      e.mean = mean;
+      csv << ",mean,min,max";
+    }
+    csv << "\n";
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+      csv << angles[a];
+      for (std::size_t g = 0; g < groups.size(); ++g) csv << "," << v[g][a];
+      if (e.mean) csv << "," << e.mean->value[a] << "," << e.band_lo[a] << "," << e.band_hi[a];
+      csv << "\n";
+    }
+  } else {
+    // Mean over the groups (records or cases) at each (radius, angle).
+    const DisplayUnit runit = [&] {
+      std::string n = layout.axes[radial];
+      return n.find("gap") != std::string::npos ? DisplayUnit{"cm", 0.01} : DisplayUnit{"SI", 1.0};
+    }();
+    std::vector<double> sum(angles.size() * radii.size(), 0.0);
+    std::vector<int> n(sum.size(), 0);
+    for (const Row& r : rows) {
+      const std::size_t k = idx(radii, r.radius) * angles.size() + idx(angles, r.angle_deg);
+      sum[k] += r.value;
+      ++n[k];
+    }
+    PolarContourData& c = result.contour;
+    c.title = opt.quantity + " against incidence angle and " + layout.axes[radial];
+    if (groups.size() > 1) c.title += " (mean of " + std::to_string(groups.size()) + ")";
+    c.radius_title = layout.axes[radial] + " [" + runit.unit + "]";
+    c.value_title = qtitle;
+    c.angle_deg = angles;
+    for (double r : radii) c.radius.push_back(r / runit.divisor);
+    csv << "angle_deg," << layout.axes[radial] << "_" << runit.unit << "," << opt.quantity << "_"
+        << unit.unit << "\n";
+    for (std::size_t i = 0; i < radii.size(); ++i)
+      for (std::size_t a = 0; a < angles.size(); ++a) {
+        const std::size_t k = i * angles.size() + a;
+        c.value.push_back(n[k] ? sum[k] / n[k] : std::numeric_limits<double>::quiet_NaN());
+        csv << angles[a] << "," << c.radius[i] << "," << c.value.back() << "\n";
+      }
+  }
+  result.csv = csv.str();
+  return result;
+}
+
+}  // namespace isopound::post

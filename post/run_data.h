@@ -1,0 +1,85 @@
+// A finished run read back from its directory: histories.csv (columns by the names in the header)
+// and summary.json, plus the model geometry (story heights, walls, neighbours). The only place
+// that knows the output formats: adapt here when summary.json or histories.csv change.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace isopound::post {
+
+class RunDataError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A history column "<label> <quantity> [<unit>]", e.g. "3-storey/floor 1 a_abs [m/s2]".
+struct ColumnName {
+  std::string label, quantity, unit;
+};
+ColumnName parse_column_name(const std::string& header);
+
+// A level of a structure (base slab or floor) with its history columns.
+struct Level {
+  std::string label;               // "3-storey/floor 1"
+  double elevation = 0.0;          // m above the ground (base slab: 0)
+  int u = -1, v = -1, a_abs = -1;  // column indices (-1: absent)
+};
+
+struct Structure {
+  std::string name;
+  std::vector<Level> levels;  // bottom to top
+  // Placement in the x-z drawing: +1 the main building, or a neighbour's side (+1 right, -1 left).
+  bool neighbour = false;
+  int side = 0;
+  double gap = 0.0;  // m, neighbours: clear distance to the main building at rest
+};
+
+// An element output group: isolator (force, deformation) or contact (force, penetration, ...).
+struct ElementColumns {
+  std::string label;
+  bool contact = false;
+  int force = -1, deformation = -1, penetration = -1, indentation = -1;
+};
+
+// A moat wall next to a level of the main building.
+struct Wall {
+  std::string label;       // the contact's label, "" when not found among the outputs
+  int side = +1;           // +1 right of the building, -1 left
+  double gap = 0.0;        // m at rest
+  double elevation = 0.0;  // m, of the level it faces
+  bool gap_known = true;   // false: inferred, see run_geometry notes
+  int u = -1;              // flexible wall: its own displacement column ("<label> structure u")
+};
+
+struct RunData {
+  std::filesystem::path dir;
+  std::vector<std::string> columns;         // header names as written
+  std::vector<std::vector<double>> values;  // per column, per row
+  nlohmann::json summary;                   // null when summary.json is absent
+  std::vector<Structure> structures;        // main building first
+  std::vector<ElementColumns> isolators, contacts;
+  std::vector<Wall> walls;
+  std::vector<std::string> notes;  // what could not be found and was assumed
+
+  std::size_t rows() const { return values.empty() ? 0 : values[0].size(); }
+  int find(const std::string& label, const std::string& quantity) const;  // -1 when absent
+  const std::vector<double>& column(int index) const { return values.at(index); }
+  const std::vector<double>& time() const { return values.at(0); }
+  std::string unit_of(int index) const { return parse_column_name(columns.at(index)).unit; }
+};
+
+// Reads RUN_DIR. `model_file` overrides the model named in summary.json (for wall gaps and
+// neighbour placement); without either, wall gaps are inferred from the contact histories.
+// Throws RunDataError naming the file (and line) on anything missing or malformed.
+RunData read_run(const std::filesystem::path& dir, const std::string& model_file = "");
+
+// Linear interpolation of a column at time t (clamped to the recorded span).
+double value_at(const RunData& run, int column, double t);
+
+}  // namespace isopound::post

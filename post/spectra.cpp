@@ -1,0 +1,175 @@
+// Response spectra by the Nigam-Jennings recurrence (see spectra.h).
+#include "post/spectra.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace isopound::post {
+namespace {
+
+// Chopra, Dynamics of Structures, table 5.2.1, for unit mass (k = w^2): exact step of
+// u'' + 2 xi w u' + w^2 u = p(t) with p linear from p_i to p_{i+1} over dt (xi < 1).
+struct Recurrence {
+  double A, B, C, D, Ap, Bp, Cp, Dp;
+  Recurrence(double w, double xi, double dt) {
+    const double k = w * w;
+    const double s1 = std::sqrt(1.0 - xi * xi);
+    const double wd = w * s1;
+    const double e = std::exp(-xi * w * dt);
+    const double sn = std::sin(wd * dt), cs = std::cos(wd * dt);
+    A = e * (xi / s1 * sn + cs);
+    B = e * sn / wd;
+    C = (2.0 * xi / (w * dt) + e * (((1.0 - 2.0 * xi * xi) / (wd * dt) - xi / s1) * sn -
+                                    (1.0 + 2.0 * xi / (w * dt)) * cs)) /
+        k;
+    D = (1.0 - 2.0 * xi / (w * dt) +
+         e * ((2.0 * xi * xi - 1.0) / (wd * dt) * sn + 2.0 * xi / (w * dt) * cs)) /
+        k;
+    Ap = -e * w / s1 * sn;
+    Bp = e * (cs - xi / s1 * sn);
+    Cp = (-1.0 / dt + e * ((w / s1 + xi / (dt * s1)) * sn + cs / dt)) / k;
+    Dp = (1.0 - e * (xi / s1 * sn + cs)) / (k * dt);
+  }
+};
+
+void check(const GroundMotion& motion, double period, const SpectrumOptions& options) {
+  if (!(motion.dt > 0.0) || motion.acceleration.size() < 2)
+    throw std::invalid_argument("record " + motion.name + ": needs dt > 0 and 2 samples or more");
+  if (!(period > 0.0)) throw std::invalid_argument("period must be > 0");
+  if (!(options.damping >= 0.0 && options.damping < 1.0))
+    throw std::invalid_argument("damping ratio must be in [0, 1)");
+  if (options.oversample < 1) throw std::invalid_argument("oversample must be >= 1");
+}
+
+double pga_of(const GroundMotion& motion) {
+  double m = 0.0;
+  for (double a : motion.acceleration) m = std::max(m, std::abs(a));
+  return m;
+}
+
+}  // namespace
+
+std::vector<double> default_periods() {
+  std::vector<double> t{0.0};
+  const int n = 120;
+  for (int i = 0; i < n; ++i) t.push_back(0.02 * std::pow(10.0 / 0.02, i / double(n - 1)));
+  return t;
+}
+
+std::vector<double> sdof_displacement(const GroundMotion& motion, double period,
+                                      const SpectrumOptions& options) {
+  check(motion, period, options);
+  const int m = options.oversample;
+  const double h = motion.dt / m;
+  const double w = 2.0 * std::numbers::pi / period;
+  const Recurrence r(w, options.damping, h);
+  const std::size_t n = motion.acceleration.size();
+  std::vector<double> u((n - 1) * m + 1, 0.0);
+  double ui = 0.0, vi = 0.0;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double a0 = motion.acceleration[i], a1 = motion.acceleration[i + 1];
+    for (int j = 0; j < m; ++j) {
+      // p = -a_g, linear over the sub-step (the same straight line as over the record step).
+      const double p0 = -(a0 + (a1 - a0) * j / m), p1 = -(a0 + (a1 - a0) * (j + 1) / m);
+      const double un = r.A * ui + r.B * vi + r.C * p0 + r.D * p1;
+      vi = r.Ap * ui + r.Bp * vi + r.Cp * p0 + r.Dp * p1;
+      ui = un;
+      u[++k] = ui;
+    }
+  }
+  return u;
+}
+
+Spectrum response_spectrum(const GroundMotion& motion, const std::vector<double>& periods,
+                           const SpectrumOptions& options) {
+  Spectrum s;
+  s.name = motion.name;
+  for (double t : periods) {
+    s.period.push_back(t);
+    if (t == 0.0) {
+      s.sd.push_back(0.0);
+      s.psa.push_back(pga_of(motion));
+      continue;
+    }
+    double peak = 0.0;
+    for (double u : sdof_displacement(motion, t, options)) peak = std::max(peak, std::abs(u));
+    const double w = 2.0 * std::numbers::pi / t;
+    s.sd.push_back(peak);
+    s.psa.push_back(w * w * peak);
+  }
+  return s;
+}
+
+SpectrumStatistics spectrum_statistics(const std::vector<Spectrum>& spectra) {
+  SpectrumStatistics st;
+  if (spectra.empty()) return st;
+  st.period = spectra.front().period;
+  const std::size_t n = spectra.size();
+  const auto stats = [&](auto member, std::vector<double>& mean, std::vector<double>& sigma) {
+    for (std::size_t i = 0; i < st.period.size(); ++i) {
+      double sum = 0.0;
+      for (const Spectrum& s : spectra) sum += (s.*member)[i];
+      const double mu = sum / n;
+      double ss = 0.0;
+      for (const Spectrum& s : spectra) ss += ((s.*member)[i] - mu) * ((s.*member)[i] - mu);
+      mean.push_back(mu);
+      sigma.push_back(n > 1 ? std::sqrt(ss / (n - 1)) : 0.0);
+    }
+  };
+  stats(&Spectrum::psa, st.mean_psa, st.sigma_psa);
+  stats(&Spectrum::sd, st.mean_sd, st.sigma_sd);
+  return st;
+}
+
+RotDSpectrum rotd_spectrum(const GroundMotion& first, const GroundMotion& second,
+                           const std::vector<double>& periods, const SpectrumOptions& options) {
+  if (std::abs(first.dt - second.dt) > 1e-9 * first.dt)
+    throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
+                                ": the records have different time steps");
+  GroundMotion a = first, b = second;
+  const std::size_t n = std::max(a.acceleration.size(), b.acceleration.size());
+  a.acceleration.resize(n, 0.0);
+  b.acceleration.resize(n, 0.0);
+  RotDSpectrum s;
+  s.name = first.name + "+" + second.name;
+  std::vector<double> c(180), sn(180), peaks(180);
+  for (int d = 0; d < 180; ++d) {
+    c[d] = std::cos(d * std::numbers::pi / 180.0);
+    sn[d] = std::sin(d * std::numbers::pi / 180.0);
+  }
+  for (double t : periods) {
+    s.period.push_back(t);
+    std::vector<double> u1, u2;
+    if (t == 0.0) {
+      u1 = a.acceleration;  // zero period: the rotated ground acceleration itself
+      u2 = b.acceleration;
+    } else {
+      u1 = sdof_displacement(a, t, options);
+      u2 = sdof_displacement(b, t, options);
+    }
+    std::fill(peaks.begin(), peaks.end(), 0.0);
+    for (std::size_t k = 0; k < u1.size(); ++k)
+      for (int d = 0; d < 180; ++d)
+        peaks[d] = std::max(peaks[d], std::abs(u1[k] * c[d] + u2[k] * sn[d]));
+    std::sort(peaks.begin(), peaks.end());
+    const double p50 = 0.5 * (peaks[89] + peaks[90]), p100 = peaks[179];
+    if (t == 0.0) {
+      s.sd50.push_back(0.0);
+      s.sd100.push_back(0.0);
+      s.psa50.push_back(p50);
+      s.psa100.push_back(p100);
+    } else {
+      const double w2 = std::pow(2.0 * std::numbers::pi / t, 2);
+      s.sd50.push_back(p50);
+      s.sd100.push_back(p100);
+      s.psa50.push_back(w2 * p50);
+      s.psa100.push_back(w2 * p100);
+    }
+  }
+  return s;
+}
+
+}  // namespace isopound::post

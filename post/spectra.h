@@ -1,0 +1,59 @@
+// Elastic response spectra of ground motions: SDOF u'' + 2 xi w u' + w^2 u = -a_g(t) solved exactly
+// for piecewise-linear a_g (Nigam-Jennings recurrence); SD = max|u|, PSA = w^2 SD; RotD50/RotD100.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "solver/excitation/ground_motion.h"
+
+namespace isopound::post {
+
+struct SpectrumOptions {
+  double damping = 0.05;  // critical damping ratio xi
+  // The peak is taken at the record samples, each record step split into `oversample` equal
+  // sub-steps (the piecewise-linear record is unchanged, so the recurrence stays exact; more
+  // sub-steps only sample the continuous peak more finely). 1 = the usual convention.
+  int oversample = 1;
+};
+
+// Default periods: 0 (PGA) and 120 log-spaced periods from 0.02 s to 10 s.
+std::vector<double> default_periods();
+
+struct Spectrum {
+  std::string name;
+  std::vector<double> period;  // s (0 = zero period: SD 0, PSA = PGA)
+  std::vector<double> sd;      // m
+  std::vector<double> psa;     // m/s^2
+};
+
+// The displacement history u(t_k) of the SDOF (period T > 0) from rest at every (sub)sample
+// t_k = k dt / oversample. Exact for the piecewise-linear record.
+std::vector<double> sdof_displacement(const GroundMotion& motion, double period,
+                                      const SpectrumOptions& options);
+
+Spectrum response_spectrum(const GroundMotion& motion, const std::vector<double>& periods,
+                           const SpectrumOptions& options = {});
+
+// Mean and sample standard deviation over spectra (same periods), per period. One spectrum: sigma
+// 0.
+struct SpectrumStatistics {
+  std::vector<double> period, mean_psa, sigma_psa, mean_sd, sigma_sd;
+};
+SpectrumStatistics spectrum_statistics(const std::vector<Spectrum>& spectra);
+
+// Orientation-independent spectra of a horizontal pair (Boore 2010): the two components rotated
+// by theta = 0, 1, ..., 179 deg, u_theta(t) = u_1(t) cos(theta) + u_2(t) sin(theta) (exact for a
+// linear SDOF); RotD100 = max over theta of max_t |u_theta|, RotD50 = the median over theta
+// (mean of the 90th and 91st sorted values). The shorter record is padded with zeros. The two
+// records must have the same time step (std::invalid_argument otherwise).
+struct RotDSpectrum {
+  std::string name;
+  std::vector<double> period;
+  std::vector<double> sd50, sd100;    // m
+  std::vector<double> psa50, psa100;  // m/s^2
+};
+RotDSpectrum rotd_spectrum(const GroundMotion& first, const GroundMotion& second,
+                           const std::vector<double>& periods, const SpectrumOptions& options = {});
+
+}  // namespace isopound::post

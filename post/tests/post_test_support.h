@@ -1,0 +1,46 @@
+// Helpers of the isopound-post tests: temporary directories, running the tools, reading PNGs.
+// PNG rows are read top to bottom; pixel(x, y_up) takes y from the bottom like Figure coordinates.
+#pragma once
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "test_support.h"
+
+namespace isopound::post::test {
+
+using ::isopound::test::run_command;
+using ::isopound::test::source_dir;
+
+// A fresh directory under the build tree for one test.
+inline std::filesystem::path scratch_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("isopound-post-test-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline ::isopound::test::CommandResult run_post(const std::string& args) {
+  return ::isopound::test::run_command(std::string(ISOPOUND_POST_BINARY) + " " + args);
+}
+inline ::isopound::test::CommandResult run_solver(const std::string& args) {
+  return ::isopound::test::run_command(std::string(ISOPOUND_BINARY) + " " + args);
+}
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;  // row 0 = top
+  const unsigned char* at(int x, int y_up) const {
+    return &rgb[3 * (static_cast<std::size_t>(height - 1 - y_up) * width + x)];
+  }
+  // Variance of the grey level: 0 for a blank image.
+  double variance() const;
+};
+
+Image read_png(const std::string& path);  // throws std::runtime_error
+
+}  // namespace isopound::post::test

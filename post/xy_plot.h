@@ -1,0 +1,52 @@
+// Line charts laid out as a Figure: one or more panels of x-y series, with ticks, grid, axis
+// titles (with units) and a legend. Data in any units; the mapping to pixels is linear.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "post/figure.h"
+
+namespace isopound::post {
+
+struct Series {
+  std::string label;  // legend text ("" = not in the legend)
+  std::vector<double> x, y;
+  std::optional<Rgb> colour;  // default: series_colour(index in the panel)
+  double width = 1.5;         // px
+};
+
+// A series in the default colour and width.
+inline Series line_series(std::string label, std::vector<double> x, std::vector<double> y) {
+  Series s;
+  s.label = std::move(label);
+  s.x = std::move(x);
+  s.y = std::move(y);
+  return s;
+}
+
+struct Panel {
+  std::string title;
+  std::string x_title, y_title;  // with units, e.g. "time [s]"
+  std::vector<Series> series;
+  bool legend = true;
+  bool symmetric_y = false;  // y range symmetric about 0 (time histories)
+  bool y_from_zero = false;  // y range includes 0 (spectra)
+};
+
+// Where a panel's data lands on the figure (for tests and overlays).
+struct PanelFrame {
+  double left = 0, bottom = 0, width = 0, height = 0;  // plot area, px
+  double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;       // data range shown
+  Point2 to_pixel(double x, double y) const {
+    return {left + (x - x_lo) / (x_hi - x_lo) * width,
+            bottom + (y - y_lo) / (y_hi - y_lo) * height};
+  }
+};
+
+// Panels in a grid of `columns` columns, row by row from the top, under an optional title.
+Figure xy_figure(const std::vector<Panel>& panels, int columns, int width, int height,
+                 const std::string& title = "", std::vector<PanelFrame>* frames = nullptr);
+
+}  // namespace isopound::post
