@@ -34,7 +34,7 @@ struct IsolatorConfig {
   double radius = 0.0;
   double mu_slow = 0.0;
   double mu_fast = 0.0;
-  double rate_parameter = 0.0;  // a, s/m
+  double rate_parameter = 0.0;   // a, s/m
   bool smooth_friction = false;  // z: false = radial return (sharp), true = Bouc-Wen (n, beta...)
 };
 
