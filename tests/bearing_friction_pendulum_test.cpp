@@ -3,7 +3,11 @@
 // balance.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 
@@ -12,6 +16,7 @@
 #include "solver/materials/friction_pendulum.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/isolator.h"
+#include "test_support.h"
 
 namespace isopound {
 namespace {
@@ -148,6 +153,34 @@ TEST(FrictionPendulum, IsolatorPropertiesArePendulumStiffnessAndFriction) {
   EXPECT_DOUBLE_EQ(p.characteristic_strength, 0.06 * m * kGravity);
   EXPECT_NEAR(isolation_period(c), 2 * kPi * std::sqrt(2.5 / kGravity), 1e-12);
   EXPECT_THROW(make_isolator_material(c, m), std::invalid_argument);
+}
+
+// `isopound run` on the shipped configs/3storey-friction-pendulum.yaml (RSN1084 SCS052): the
+// peak isolator force lies between the parallelogram's corners at the peak displacement,
+// W u_max/R + mu_slow W (at the turning point v = 0) and W u_max/R + mu_fast W (an upper bound
+// at any velocity); the energy balance closes.
+TEST(FrictionPendulum, ShippedConfigRunsWithIsopoundRun) {
+  ISOPOUND_REQUIRE_RECORDS();
+  namespace fs = std::filesystem;
+  const fs::path out = fs::temp_directory_path() / ("isopound_fp_" + std::to_string(::getpid()));
+  const test::CommandResult run = test::run_isopound(
+      "run '" + (test::source_dir() / "configs" / "3storey-friction-pendulum.yaml").string() +
+      "' -q --no-histories -o '" + out.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  fs::remove_all(out);
+  const nlohmann::json* isolator = nullptr;
+  for (const auto& e : j["elements"])
+    if (e["label"] == "3-storey-fp/isolator") isolator = &e;
+  ASSERT_NE(isolator, nullptr);
+  const double W = (3 * 340e3 + 250e3) * kGravity, R = 2.24;
+  const double u_max = (*isolator)["peak_deformation"]["value"];
+  const double f_max = (*isolator)["peak_force"]["value"];
+  EXPECT_GT(u_max, 0.1);
+  EXPECT_GE(f_max, W * u_max / R + 0.04 * W * 0.99);
+  EXPECT_LE(f_max, W * u_max / R + 0.10 * W);
+  EXPECT_LT(j["energy"]["relative_error"].get<double>(), 1e-4);
 }
 
 }  // namespace
