@@ -86,6 +86,22 @@ Matrix2d CoupledBoucWenMaterial::phi_jacobian(const Vector2d& z, const Vector2d&
   return -w.dot(z) * dg - (p * z) * w.transpose();
 }
 
+void CoupledBoucWenMaterial::phi_parts(const Vector2d& z, const Vector2d& c, const Vector2d& w,
+                                       Matrix2d& M, Matrix2d& J) const {
+  // phi_matrix and phi_jacobian with one |z| and one |z|^(n-2) (the inner loop's cost).
+  M = p_.A * Matrix2d::Identity();
+  const double r = z.norm();
+  if (r == 0.0) {
+    J.setZero();
+    return;
+  }
+  const double p = pow_n_minus_2(r);
+  const Vector2d g = p * z;
+  M -= g * c.cwiseProduct(z).transpose();
+  J = (-w.dot(z) * p) * Matrix2d::Identity() - g * w.transpose();
+  if (p_.n != 2.0) J -= (w.dot(z) * p * (p_.n - 2.0) / (r * r)) * z * z.transpose();
+}
+
 Vector2d CoupledBoucWenMaterial::trapezoid_step(const Vector2d& z, const Vector2d& phi_z, double h,
                                                 const Vector2d& e, const Vector2d& c) const {
   const Vector2d w = c.cwiseProduct(e);
@@ -159,7 +175,8 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
     const long full = static_cast<long>(std::floor(L / h_sub));
     const double remainder = L - static_cast<double>(full) * h_sub;
 
-    Matrix2d M0 = phi_matrix(z, c), J0 = phi_jacobian(z, w);
+    Matrix2d M0, J0;
+    phi_parts(z, c, w, M0, J0);
     Vector2d phi0 = M0 * e;
     // One trapezoidal step of size h (gradient dh_dx) from (z, phi0, M0, J0), updating S.
     // For gamma >= 0 the exact z never leaves the disc |z| <= z_sat (on its rim
@@ -169,7 +186,8 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
     const bool keep_in_disc = p_.gamma >= 0.0 && z_norm <= z_saturation_ * (1.0 + 1e-12);
     const auto advance = [&](double h, const RowVector2d& dh_dx) {
       const Vector2d z1 = h > 0.0 ? trapezoid_step(z, phi0, h, e, c) : z;
-      Matrix2d M1 = phi_matrix(z1, c), J1 = phi_jacobian(z1, w);
+      Matrix2d M1, J1;
+      phi_parts(z1, c, w, M1, J1);
       Vector2d phi1 = M1 * e;
       const double hh = h > 0.0 ? 0.5 * h : 0.0;
       const Matrix2d rhs = (I + hh * J0) * S + 0.5 * (phi0 + phi1) * dh_dx + hh * (M0 + M1) * de_dx;
@@ -182,8 +200,7 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
         const Vector2d n = z1 / r1;
         S = scale * (I - n * n.transpose()) * S;
         z = scale * z1;
-        M1 = phi_matrix(z, c);
-        J1 = phi_jacobian(z, w);
+        phi_parts(z, c, w, M1, J1);
         phi1 = M1 * e;
       }
       phi0 = phi1;
