@@ -69,7 +69,8 @@ std::vector<Trial> irregular_history(double u_y, unsigned seed) {
 
 // Acceptance: a uniaxial orbit reproduces the 2D Bouc-Wen exactly. The biaxial scheme is the
 // uniaxial one component for component (same branches, split points, sub-increments and
-// trapezoidal roots), so the only differences are round-off: 1e-12 of F_y after 1200 trials.
+// trapezoidal roots), so the only differences are round-off (measured <= 2e-15 F_y over 20,000
+// steps; asserted 1e-13).
 TEST(CoupledBoucWen, UniaxialOrbitReproducesUniaxialBoucWen) {
   struct Shape {
     double n, beta, gamma;
@@ -97,7 +98,7 @@ TEST(CoupledBoucWen, UniaxialOrbitReproducesUniaxialBoucWen) {
       SCOPED_TRACE(testing::Message() << "n " << s.n << " beta " << s.beta << " angle " << angle);
       // Along an axis the arithmetic is nearly the uniaxial one; along an oblique line each
       // component carries its own rounding.
-      EXPECT_LE(worst_force, 1e-12 * p.yield_force);
+      EXPECT_LE(worst_force, 1e-13 * p.yield_force);  // measured <= 2e-15 F_y
       EXPECT_LE(worst_tangent, 1e-9 * p.elastic_stiffness);
     }
   }
