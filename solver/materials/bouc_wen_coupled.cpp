@@ -86,20 +86,21 @@ Matrix2d CoupledBoucWenMaterial::phi_jacobian(const Vector2d& z, const Vector2d&
   return -w.dot(z) * dg - (p * z) * w.transpose();
 }
 
-void CoupledBoucWenMaterial::phi_parts(const Vector2d& z, const Vector2d& c, const Vector2d& w,
-                                       Matrix2d& M, Matrix2d& J) const {
+double CoupledBoucWenMaterial::phi_parts(const Vector2d& z, const Vector2d& c, const Vector2d& w,
+                                         Matrix2d& M, Matrix2d& J) const {
   // phi_matrix and phi_jacobian with one |z| and one |z|^(n-2) (the inner loop's cost).
   M = p_.A * Matrix2d::Identity();
   const double r = z.norm();
   if (r == 0.0) {
     J.setZero();
-    return;
+    return r;
   }
   const double p = pow_n_minus_2(r);
   const Vector2d g = p * z;
   M -= g * c.cwiseProduct(z).transpose();
   J = (-w.dot(z) * p) * Matrix2d::Identity() - g * w.transpose();
   if (p_.n != 2.0) J -= (w.dot(z) * p * (p_.n - 2.0) / (r * r)) * z * z.transpose();
+  return r;
 }
 
 Vector2d CoupledBoucWenMaterial::trapezoid_step(const Vector2d& z, const Vector2d& phi_z, double h,
@@ -146,6 +147,7 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
 
   Vector2d z = z0;
   Matrix2d S = Matrix2d::Zero();  // dz/dx
+  bool s_is_zero = true;          // S is still exactly zero (skip its products)
   double L = length;              // length left to integrate
   RowVector2d dL_dx = e.transpose();
 
@@ -167,13 +169,16 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
     const double max_slope = w_norm * p_.n * bound_pow_n / z_bound;
     const double h_bound = max_slope > 0 ? kMaxSubincrementStiffness / max_slope : 1e300;
     const double h_sub = std::max(h_bound, L / kMaxSubincrements);
-    RowVector2d dh_sub_dx = RowVector2d::Zero();
-    if (h_sub != h_bound)
-      dh_sub_dx = dL_dx / static_cast<double>(kMaxSubincrements);
-    else if (max_slope > 0)  // h_bound = K / |w|, d|w| = (w o c)^T de / |w|
-      dh_sub_dx = (-h_bound / (w_norm * w_norm)) * w.cwiseProduct(c).transpose() * de_dx;
     const long full = static_cast<long>(std::floor(L / h_sub));
     const double remainder = L - static_cast<double>(full) * h_sub;
+    // dh_sub/dx matters only when full sub-increments are taken.
+    RowVector2d dh_sub_dx = RowVector2d::Zero();
+    if (full > 0) {
+      if (h_sub != h_bound)
+        dh_sub_dx = dL_dx / static_cast<double>(kMaxSubincrements);
+      else if (max_slope > 0)  // h_bound = K / |w|, d|w| = (w o c)^T de / |w|
+        dh_sub_dx = (-h_bound / (w_norm * w_norm)) * w.cwiseProduct(c).transpose() * de_dx;
+    }
 
     Matrix2d M0, J0;
     phi_parts(z, c, w, M0, J0);
@@ -187,13 +192,14 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
     const auto advance = [&](double h, const RowVector2d& dh_dx) {
       const Vector2d z1 = h > 0.0 ? trapezoid_step(z, phi0, h, e, c) : z;
       Matrix2d M1, J1;
-      phi_parts(z1, c, w, M1, J1);
+      const double r1 = phi_parts(z1, c, w, M1, J1);
       Vector2d phi1 = M1 * e;
       const double hh = h > 0.0 ? 0.5 * h : 0.0;
-      const Matrix2d rhs = (I + hh * J0) * S + 0.5 * (phi0 + phi1) * dh_dx + hh * (M0 + M1) * de_dx;
+      Matrix2d rhs = 0.5 * (phi0 + phi1) * dh_dx + hh * (M0 + M1) * de_dx;
+      if (!s_is_zero) rhs += (I + hh * J0) * S;
       S = (I - hh * J1).inverse() * rhs;
+      s_is_zero = false;
       z = z1;
-      const double r1 = z1.norm();
       if (keep_in_disc && r1 > z_saturation_) {
         // z <- z_sat z/|z|, so dz <- (z_sat/|z|) (I - n n^T) dz.
         const double scale = z_saturation_ / r1;

@@ -53,9 +53,9 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   // Phi(z) = M(z) e, M = A I - g(z) (c o z)^T; its Jacobian dPhi/dz.
   Eigen::Matrix2d phi_matrix(const Eigen::Vector2d& z, const Eigen::Vector2d& c) const;
   Eigen::Matrix2d phi_jacobian(const Eigen::Vector2d& z, const Eigen::Vector2d& w) const;
-  // Both at once, w = c o e.
-  void phi_parts(const Eigen::Vector2d& z, const Eigen::Vector2d& c, const Eigen::Vector2d& w,
-                 Eigen::Matrix2d& M, Eigen::Matrix2d& J) const;
+  // Both at once, w = c o e; returns |z|.
+  double phi_parts(const Eigen::Vector2d& z, const Eigen::Vector2d& c, const Eigen::Vector2d& w,
+                   Eigen::Matrix2d& M, Eigen::Matrix2d& J) const;
   // One trapezoidal sub-increment of size h >= 0 along e from z (Phi(z) = phi_z).
   Eigen::Vector2d trapezoid_step(const Eigen::Vector2d& z, const Eigen::Vector2d& phi_z, double h,
                                  const Eigen::Vector2d& e, const Eigen::Vector2d& c) const;
