@@ -25,50 +25,57 @@ using Eigen::Vector2d;
 constexpr double kPi = std::numbers::pi;
 
 // Prescribed slow motion u = u_0 sin(w t) (along x, then along a 40-degree line): v_max =
-// u_0 w = 2e-4 m/s, so a v <= 0.006 and mu(v) stays within 0.4 % of mu_slow. Away from the
-// reversals (the first 4 u_y of travel, where z turns over in 2 u_y) the force is the
-// parallelogram to 1 % of the friction force mu W; the loop area (work per cycle) is 4 mu W u_0
-// up to the pre-sliding corners (a relative u_y/u_0 = 0.25 %), asserted to 1 %.
+// u_0 w = 2e-4 m/s, so a v <= 0.006 and mu(v) exceeds mu_slow by at most 0.75 %. Away from the
+// reversals the force is the parallelogram to 1 % of the friction force mu W (measured 0.72 %,
+// the rise of mu); the loop area (work per cycle) is 4 mu_slow W u_0 to 1 % (measured +0.31 %
+// plastic, +0.29 % smooth: the rise of mu adds, the rounded corners cut ~u_y/u_0). Plastic z
+// turns over within 2 u_y, so points 4 u_y past a reversal are checked; the smooth (Bouc-Wen
+// n = 2) z is within 1e-15 of 1 after 20 u_y.
 TEST(FrictionPendulum, SlowSinusoidGivesTheTextbookParallelogram) {
-  FrictionPendulumParameters p;
-  p.weight = 1.27e6 / 16 * kGravity;
-  p.radius = 2.2;
-  p.mu_slow = 0.05;
-  p.mu_fast = 0.11;
-  p.rate_parameter = 30;
-  p.yield_displacement = 5e-4;
-  const double u0 = 0.2, w = 1e-3;
-  const int steps = 8000;  // per cycle
-  for (const double angle : {0.0, 40.0 * kPi / 180}) {
-    const Vector2d e(std::cos(angle), std::sin(angle));
-    FrictionPendulumMaterial law(p);
-    double work = 0.0, worst = 0.0, last_reversal = 0.0, previous_u = 0.0;
-    Vector2d f0 = Vector2d::Zero();
-    int checked = 0, sign = 1;
-    const double T = 2 * kPi / w;
-    for (int k = 1; k <= 2 * steps; ++k) {  // two cycles, the second one measured
-      const double t = T * k / steps;
-      const double u = u0 * std::sin(w * t), v = u0 * w * std::cos(w * t);
-      law.set_trial(u * e, v * e);
-      law.commit();
-      const Vector2d f = law.force();
-      if (k > steps) work += 0.5 * (f + f0).dot((u - previous_u) * e);
-      f0 = f;
-      const int s = (u - previous_u) >= 0 ? 1 : -1;
-      if (s != sign) last_reversal = previous_u;
-      sign = s;
-      previous_u = u;
-      if (std::abs(u - last_reversal) > 4 * p.yield_displacement) {
-        const double textbook = p.weight * u / p.radius + p.mu_slow * p.weight * s;
-        worst = std::max(worst, std::abs(e.dot(f) - textbook));
-        ++checked;
+  for (const bool smooth : {false, true}) {
+    FrictionPendulumParameters p;
+    p.weight = 1.27e6 / 16 * kGravity;
+    p.radius = 2.2;
+    p.mu_slow = 0.05;
+    p.mu_fast = 0.11;
+    p.rate_parameter = 30;
+    p.yield_displacement = 5e-4;
+    p.smooth = smooth;
+    const double band = (smooth ? 20 : 4) * p.yield_displacement;
+    const double u0 = 0.2, w = 1e-3;
+    const int steps = 8000;  // per cycle
+    for (const double angle : {0.0, 40.0 * kPi / 180}) {
+      SCOPED_TRACE(testing::Message() << "smooth " << smooth << " angle " << angle);
+      const Vector2d e(std::cos(angle), std::sin(angle));
+      FrictionPendulumMaterial law(p);
+      double work = 0.0, worst = 0.0, last_reversal = 0.0, previous_u = 0.0;
+      Vector2d f0 = Vector2d::Zero();
+      int checked = 0, sign = 1;
+      const double T = 2 * kPi / w;
+      for (int k = 1; k <= 2 * steps; ++k) {  // two cycles, the second one measured
+        const double t = T * k / steps;
+        const double u = u0 * std::sin(w * t), v = u0 * w * std::cos(w * t);
+        law.set_trial(u * e, v * e);
+        law.commit();
+        const Vector2d f = law.force();
+        if (k > steps) work += 0.5 * (f + f0).dot((u - previous_u) * e);
+        f0 = f;
+        const int s = (u - previous_u) >= 0 ? 1 : -1;
+        if (s != sign) last_reversal = previous_u;
+        sign = s;
+        previous_u = u;
+        if (std::abs(u - last_reversal) > band) {
+          const double textbook = p.weight * u / p.radius + p.mu_slow * p.weight * s;
+          worst = std::max(worst, std::abs(e.dot(f) - textbook));
+          ++checked;
+        }
+        EXPECT_NEAR((f - e.dot(f) * e).norm(), 0.0, 1e-9 * p.weight);  // no force across
       }
-      EXPECT_NEAR((f - e.dot(f) * e).norm(), 0.0, 1e-9 * p.weight);  // no force across
+      EXPECT_GT(checked, steps);  // most of the loop is checked
+      EXPECT_LE(worst, 0.01 * p.mu_slow * p.weight);
+      const double area = 4 * p.mu_slow * p.weight * u0;
+      EXPECT_NEAR(work, area, 0.01 * area);
     }
-    EXPECT_GT(checked, steps);  // most of the loop is checked
-    EXPECT_LE(worst, 0.01 * p.mu_slow * p.weight);
-    const double area = 4 * p.mu_slow * p.weight * u0;
-    EXPECT_NEAR(work, area, 0.01 * area);
   }
 }
 
