@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace isopound {
@@ -140,6 +141,11 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
   if (length == 0.0) {
     // No increment: the elastic-side (unloading) slope, as the uniaxial law.
     return {z0, phi_matrix(z0, Vector2d::Constant(p_.beta - p_.gamma))};
+  }
+  if (!std::isfinite(length)) {
+    // A diverging Newton iterate: report NaN (the stepper then cuts the step), never loop.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {Vector2d::Constant(nan), Matrix2d::Constant(nan)};
   }
   const Matrix2d I = Matrix2d::Identity();
   const Vector2d e = dx / length;
