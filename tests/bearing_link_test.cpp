@@ -153,6 +153,10 @@ TEST(MakeBearingMaterial, ReproducesIsolatorPropertiesForTheSameNumbers) {
     const double q = 0.1 * m * kGravity;
     EXPECT_NEAR(p.yield_force, yield_force ? q : q + k_post * 0.015, 1e-9 * q);
 
+    const IsolatorProperties pb = bearing_properties(c, m);
+    EXPECT_EQ(pb.post_yield_stiffness, p.post_yield_stiffness);
+    EXPECT_EQ(pb.yield_force, p.yield_force);
+    EXPECT_EQ(pb.elastic_stiffness, p.elastic_stiffness);
     using M = BearingConfig::Model;
     for (const M model : {M::kLinear, M::kBilinear, M::kBoucWenCoupled, M::kBoucWenUncoupled}) {
       c.model = model;

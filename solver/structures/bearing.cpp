@@ -90,6 +90,10 @@ BearingConfig bearing_config(const IsolatorConfig& iso) {
   return c;
 }
 
+IsolatorProperties bearing_properties(const BearingConfig& c, double m) {
+  return isolator_properties(isolator_config(c), m);
+}
+
 std::unique_ptr<BiaxialMaterial> make_bearing_material(const BearingConfig& c, double m) {
   if (!(m > 0)) throw std::invalid_argument("bearing: the carried mass must be > 0");
   if (c.model == BearingConfig::Model::kFrictionPendulum) {

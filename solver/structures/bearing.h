@@ -7,6 +7,7 @@
 
 #include "solver/materials/biaxial_material.h"
 #include "solver/structures/config.h"
+#include "solver/structures/isolator.h"
 
 namespace isopound {
 
@@ -37,6 +38,10 @@ struct BearingConfig {
   // true = the coupled Bouc-Wen z with n, A, beta, gamma above (smooth corners).
   bool smooth_friction = false;
 };
+
+// The bearing's constants (K_post, F_y, K_el, alpha, u_y, Q) by the 2D rules, for modes and
+// Rayleigh damping (K_post; the friction pendulum: W/R, Q = mu_slow W). Throws as above.
+IsolatorProperties bearing_properties(const BearingConfig& config, double carried_mass);
 
 // The same bearing law as a 2D isolator: the BearingConfig of an IsolatorConfig (uniaxial
 // models map to their biaxial counterparts; bouc_wen to the coupled law).
