@@ -19,11 +19,44 @@ struct DiaphragmDofs {
 
 // Generalised force on the diaphragm: f = T^T F with T = [[1, 0, -y], [0, 1, x]] (x, y the
 // bearing's position in the diaphragm DOFs' frame); tangent T^T (K + velocity_factor K_v) T.
+//
+// Outputs. Planar (only ux present): "force", "deformation", "z" along x, signed, as the 2D
+// UniaxialLink (so reports and study selectors such as isolator.force read both alike).
+// In plan: "force", "deformation", "z" are the resultants |F|, |d|, |z|, followed by
+// "force_x", "force_y", "deformation_x", "deformation_y", "z_x", "z_y".
 class BearingLink final : public Element {
  public:
   BearingLink(std::string label, DiaphragmDofs dofs, Eigen::Vector2d p_OB,
               std::unique_ptr<BiaxialMaterial> law);
-  // ... Element overrides; outputs: force x, y, resultant; deformation x, y, resultant; z x, y.
+
+  void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
+  void add_force(Eigen::VectorXd& f) const override;
+  void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
+  // The law's symmetry; a planar bearing (one DOF) always gives a symmetric 1x1 block.
+  bool symmetric_tangent() const override { return planar_ || law_->symmetric_tangent(); }
+  double power(const Eigen::VectorXd& v) const override;
+  double stored_energy() const override { return law_->stored_energy(); }
+  void commit() override { law_->commit(); }
+  void revert() override { law_->revert(); }
+
+  int output_count() const override { return planar_ ? 3 : 9; }
+  std::string output_name(int i) const override;
+  std::string output_unit(int i) const override;
+  double output(int i) const override;
+  void outputs(double* out) const override;
+  const std::string& label() const override { return label_; }
+
+  const BiaxialMaterial& law() const { return *law_; }
+  const Eigen::Vector2d& position() const { return p_OB_; }
+  // Bearing deformation (m) and its rate from the DOFs: d = T u over the DOFs present.
+  Eigen::Vector2d deformation_of(const Eigen::VectorXd& u) const;
+
+ private:
+  std::string label_;
+  DiaphragmDofs dofs_;
+  Eigen::Vector2d p_OB_;
+  std::unique_ptr<BiaxialMaterial> law_;
+  bool planar_;
 };
 
 }  // namespace isopound

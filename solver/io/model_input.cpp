@@ -55,15 +55,39 @@ std::vector<FloorConfig> read_floors(const InputNode& node) {
   return floors;
 }
 
+// Friction pendulum keys (THEORY-notes.md): R, mu_slow, mu_fast, rate_parameter (a, s/m; not
+// needed when mu_slow = mu_fast), friction_hysteresis; uy is the pre-sliding travel (0.5 mm).
+void read_friction_pendulum(const InputNode& node, IsolatorConfig& iso) {
+  constexpr Dimension kSlowness{-1, 0, 1};  // s/m
+  iso.radius = node.required("R").quantity(dim::kLength, Bound::kPositive);
+  iso.mu_slow = node.required("mu_slow").number(Bound::kNonNegative);
+  iso.mu_fast = node.required("mu_fast").number(Bound::kNonNegative);
+  if (iso.mu_fast != iso.mu_slow)
+    iso.rate_parameter = node.required("rate_parameter").quantity(kSlowness, Bound::kNonNegative);
+  else
+    node.read_quantity("rate_parameter", kSlowness, Bound::kNonNegative, iso.rate_parameter);
+  iso.yield_displacement = 5e-4;  // replaced below if uy is given
+  if (const auto z = node.find("friction_hysteresis"))
+    iso.smooth_friction = z->choice<bool>({{"plastic", false}, {"bouc_wen", true}});
+}
+
 IsolatorConfig read_isolator(const InputNode& node) {
   using Model = IsolatorConfig::Model;
   node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
-                    "carried_mass"});
+                    "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter",
+                    "friction_hysteresis"});
   IsolatorConfig iso;
   if (const auto model = node.find("model"))
     iso.model = model->choice<Model>({{"linear", Model::kLinear},
                                       {"bilinear", Model::kBilinear},
-                                      {"bouc_wen", Model::kBoucWen}});
+                                      {"bouc_wen", Model::kBoucWen},
+                                      {"friction_pendulum", Model::kFrictionPendulum}});
+  if (iso.model == Model::kFrictionPendulum) {
+    read_friction_pendulum(node, iso);
+  } else {
+    for (const char* key : {"R", "mu_slow", "mu_fast", "rate_parameter", "friction_hysteresis"})
+      if (const auto given = node.find(key)) given->fail("only for model: friction_pendulum");
+  }
   node.read_quantity("Tb", dim::kTime, Bound::kPositive, iso.period);
   if (const auto qw = node.find("QW")) {
     iso.strength_ratio = qw->number(Bound::kNonNegative);

@@ -25,6 +25,8 @@ const char* isolator_name(IsolatorConfig::Model m) {
       return "bilinear";
     case IsolatorConfig::Model::kBoucWen:
       return "bouc_wen";
+    case IsolatorConfig::Model::kFrictionPendulum:
+      return "friction_pendulum";
   }
   return "?";
 }

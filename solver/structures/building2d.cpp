@@ -6,7 +6,9 @@
 #include <stdexcept>
 
 #include "solver/core/modes.h"
+#include "solver/elements/bearing_link.h"
 #include "solver/elements/uniaxial_link.h"
+#include "solver/structures/bearing.h"
 #include "solver/structures/isolator.h"
 
 namespace isopound {
@@ -106,9 +108,18 @@ void add_building(Model& model, const BuildingConfig& b) {
     const double m_total = building_mass(b);
     const double carried = b.isolator.carried_mass > 0 ? b.isolator.carried_mass : m_total;
     info.isolator_element = static_cast<int>(model.elements.size());
-    model.elements.push_back(std::make_unique<UniaxialLink>(
-        b.name + "/isolator", kGround, base, make_isolator_material(b.isolator, carried)));
-    const double omega_b = 2.0 * std::numbers::pi / b.isolator.period;
+    if (b.isolator.model == IsolatorConfig::Model::kFrictionPendulum) {
+      // Rate dependent, so not a uniaxial law: the biaxial bearing acting along x only.
+      DiaphragmDofs dofs;
+      dofs.ux = base;
+      model.elements.push_back(std::make_unique<BearingLink>(
+          b.name + "/isolator", dofs, Eigen::Vector2d::Zero(),
+          make_bearing_material(bearing_config(b.isolator), carried)));
+    } else {
+      model.elements.push_back(std::make_unique<UniaxialLink>(
+          b.name + "/isolator", kGround, base, make_isolator_material(b.isolator, carried)));
+    }
+    const double omega_b = 2.0 * std::numbers::pi / isolation_period(b.isolator);
     model.damping(base, base) += 2.0 * b.isolation_damping_ratio * m_total * omega_b;
   }
   model.structures.push_back(std::move(info));

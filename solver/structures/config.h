@@ -12,7 +12,9 @@ namespace isopound {
 
 // Isolation system of a 2D building (the whole isolation layer as one element).
 struct IsolatorConfig {
-  enum class Model { kLinear, kBilinear, kBoucWen };
+  // kFrictionPendulum: single concave surface, F = W u/R + mu(v) W z (THEORY-notes.md); it
+  // ignores Tb, QW and the Bouc-Wen shape unless friction_hysteresis is smooth.
+  enum class Model { kLinear, kBilinear, kBoucWen, kFrictionPendulum };
   Model model = Model::kBoucWen;
   double period = 2.0;               // T_b, s: K_post = m (2 pi / T_b)^2
   double strength_ratio = 0.05;      // Q/W: Q = (Q/W) m g
@@ -27,6 +29,13 @@ struct IsolatorConfig {
   bool strength_is_yield_force = false;
   // Mass carried by the isolators, kg; 0 means the total mass of the building incl. base slab.
   double carried_mass = 0.0;
+  // Friction pendulum: radius R (m) of the concave surface, mu(v) = mu_fast - (mu_fast -
+  // mu_slow) exp(-rate_parameter |v|); yield_displacement is then the pre-sliding travel u_y.
+  double radius = 0.0;
+  double mu_slow = 0.0;
+  double mu_fast = 0.0;
+  double rate_parameter = 0.0;   // a, s/m
+  bool smooth_friction = false;  // z: false = radial return (sharp), true = Bouc-Wen (n, beta...)
 };
 
 struct FloorConfig {

@@ -14,6 +14,20 @@
 namespace isopound {
 
 IsolatorProperties isolator_properties(const IsolatorConfig& c, double m) {
+  if (c.model == IsolatorConfig::Model::kFrictionPendulum) {
+    // Pendulum stiffness W/R as K_post, friction at rest mu_slow W as Q, pre-sliding travel u_y.
+    if (!(m > 0) || !(c.radius > 0) || !(c.yield_displacement > 0) || !(c.mu_slow >= 0))
+      throw std::invalid_argument(
+          "friction pendulum: need carried mass > 0, R > 0, uy > 0, mu_slow >= 0");
+    IsolatorProperties p;
+    p.post_yield_stiffness = m * kGravity / c.radius;
+    p.yield_displacement = c.yield_displacement;
+    p.characteristic_strength = c.mu_slow * m * kGravity;
+    p.yield_force = p.characteristic_strength + p.post_yield_stiffness * c.yield_displacement;
+    p.elastic_stiffness = p.yield_force / c.yield_displacement;
+    p.alpha = p.post_yield_stiffness / p.elastic_stiffness;
+    return p;
+  }
   if (!(m > 0) || !(c.period > 0) || !(c.yield_displacement > 0) || !(c.strength_ratio >= 0))
     throw std::invalid_argument("isolator: need carried mass > 0, Tb > 0, uy > 0, QW >= 0");
   IsolatorProperties p;
@@ -52,8 +66,18 @@ std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& c
       bw.n = c.n;
       return std::make_unique<BoucWenMaterial>(bw);
     }
+    case IsolatorConfig::Model::kFrictionPendulum:
+      throw std::invalid_argument(
+          "isolator: the friction pendulum is rate dependent, not a uniaxial law; build it with "
+          "make_bearing_material (solver/structures/bearing.h)");
   }
   throw std::invalid_argument("isolator: unknown model");
+}
+
+double isolation_period(const IsolatorConfig& c) {
+  if (c.model == IsolatorConfig::Model::kFrictionPendulum)
+    return 2.0 * std::numbers::pi * std::sqrt(c.radius / kGravity);
+  return c.period;
 }
 
 }  // namespace isopound

@@ -23,7 +23,12 @@ struct IsolatorProperties {
 // Throws std::invalid_argument if the parameters give no valid law (e.g. alpha >= 1).
 IsolatorProperties isolator_properties(const IsolatorConfig& config, double carried_mass);
 
+// The friction pendulum has no uniaxial law (it is rate dependent): this throws for it; the 2D
+// building uses make_bearing_material and a BearingLink instead.
 std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& config,
                                                          double carried_mass);
+
+// Isolation period: T_b, or 2 pi sqrt(R/g) for the friction pendulum (the sliding period).
+double isolation_period(const IsolatorConfig& config);
 
 }  // namespace isopound

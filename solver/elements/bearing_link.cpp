@@ -1,0 +1,105 @@
+// Bearing link: kinematics d = T u, T = [[1, 0, -y], [0, 1, x]] over (ux, uy, theta); forces
+// f = T^T F and tangent T^T (K + c K_v) T scattered to the DOFs present (-1: absent, zero motion).
+#include "solver/elements/bearing_link.h"
+
+#include <stdexcept>
+
+namespace isopound {
+
+namespace {
+constexpr const char* kPlanarNames[] = {"force", "deformation", "z"};
+constexpr const char* kPlanNames[] = {"force",         "deformation",   "z",   "force_x", "force_y",
+                                      "deformation_x", "deformation_y", "z_x", "z_y"};
+constexpr const char* kPlanUnits[] = {"N", "m", "-", "N", "N", "m", "m", "-", "-"};
+}  // namespace
+
+BearingLink::BearingLink(std::string label, DiaphragmDofs dofs, Eigen::Vector2d p_OB,
+                         std::unique_ptr<BiaxialMaterial> law)
+    : label_(std::move(label)),
+      dofs_(dofs),
+      p_OB_(p_OB),
+      law_(std::move(law)),
+      planar_(dofs.uy < 0 && dofs.theta < 0) {
+  if (!law_) throw std::invalid_argument("bearing '" + label_ + "': no law");
+  if (dofs.ux < 0 && dofs.uy < 0 && dofs.theta < 0)
+    throw std::invalid_argument("bearing '" + label_ + "': no diaphragm DOF");
+}
+
+Eigen::Vector2d BearingLink::deformation_of(const Eigen::VectorXd& u) const {
+  Eigen::Vector2d d = Eigen::Vector2d::Zero();
+  if (dofs_.ux >= 0) d[0] += u[dofs_.ux];
+  if (dofs_.uy >= 0) d[1] += u[dofs_.uy];
+  if (dofs_.theta >= 0) {
+    const double theta = u[dofs_.theta];
+    d[0] -= p_OB_.y() * theta;
+    d[1] += p_OB_.x() * theta;
+  }
+  return d;
+}
+
+void BearingLink::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+  law_->set_trial(deformation_of(u), deformation_of(v));
+}
+
+void BearingLink::add_force(Eigen::VectorXd& f) const {
+  const Eigen::Vector2d F = law_->force();
+  if (dofs_.ux >= 0) f[dofs_.ux] += F[0];
+  if (dofs_.uy >= 0) f[dofs_.uy] += F[1];
+  if (dofs_.theta >= 0) f[dofs_.theta] += p_OB_.x() * F[1] - p_OB_.y() * F[0];
+}
+
+void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
+  Eigen::Matrix2d k = law_->tangent();
+  if (velocity_factor != 0.0) k += velocity_factor * law_->rate_tangent();
+  // Columns of T for (ux, uy, theta).
+  const int dof[3] = {dofs_.ux, dofs_.uy, dofs_.theta};
+  Eigen::Matrix<double, 2, 3> T;
+  T << 1.0, 0.0, -p_OB_.y(), 0.0, 1.0, p_OB_.x();
+  const Eigen::Matrix3d kt = T.transpose() * k * T;
+  for (int a = 0; a < 3; ++a) {
+    if (dof[a] < 0) continue;
+    for (int b = 0; b < 3; ++b)
+      if (dof[b] >= 0) K(dof[a], dof[b]) += kt(a, b);
+  }
+}
+
+double BearingLink::power(const Eigen::VectorXd& v) const {
+  return law_->force().dot(deformation_of(v));
+}
+
+std::string BearingLink::output_name(int i) const {
+  return planar_ ? kPlanarNames[i] : kPlanNames[i];
+}
+
+std::string BearingLink::output_unit(int i) const {
+  return kPlanUnits[i];
+}
+
+void BearingLink::outputs(double* out) const {
+  const Eigen::Vector2d F = law_->force();
+  const Eigen::Vector2d d = law_->deformation();
+  const Eigen::Vector2d z = law_->internal();
+  if (planar_) {
+    out[0] = F[0];
+    out[1] = d[0];
+    out[2] = z[0];
+    return;
+  }
+  out[0] = F.norm();
+  out[1] = d.norm();
+  out[2] = z.norm();
+  out[3] = F[0];
+  out[4] = F[1];
+  out[5] = d[0];
+  out[6] = d[1];
+  out[7] = z[0];
+  out[8] = z[1];
+}
+
+double BearingLink::output(int i) const {
+  double values[9];
+  outputs(values);
+  return values[i];
+}
+
+}  // namespace isopound
