@@ -152,8 +152,10 @@ Overlap overlap_of_exact(const ConvexPolygon& a, const ConvexPolygon& b) {
     area = CGAL::to_double(twice_area / 2);
     p_OC = {CGAL::to_double(cx / (3 * twice_area)), CGAL::to_double(cy / (3 * twice_area))};
   }
-  return detail::finish_overlap(a, b, origin, std::span<const Vec2>(vertices_O.data(), count),
-                                std::span<const bool>(edge_on_a, count), area, p_OC);
+  Overlap out;
+  detail::finish_overlap(a, b, origin, std::span<const Vec2>(vertices_O.data(), count),
+                         std::span<const bool>(edge_on_a, count), area, p_OC, out);
+  return out;
 }
 
 }  // namespace isopound

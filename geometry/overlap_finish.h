@@ -3,7 +3,6 @@
 // Conventions as in overlap.h: n_AB from A into B, t_AB = n_AB turned +90°.
 #pragma once
 
-#include <optional>
 #include <span>
 
 #include "geometry/overlap.h"
@@ -22,13 +21,13 @@ SatAxis least_penetration_axis(const ConvexPolygon& a, const ConvexPolygon& b, V
 // shifted by `origin` (p_W = origin + vertex), with edge_on_a[k] telling whether edge k → k+1
 // lies on A's boundary (an edge on both boundaries counts as A's). area and p_OC (centroid
 // relative to origin) are the caller's. count = 0 means separated; count ≤ 2 or area == 0
-// means touching.
-Overlap finish_overlap(const ConvexPolygon& a, const ConvexPolygon& b, Vec2 origin,
-                       std::span<const Vec2> vertices_O, std::span<const bool> edge_on_a,
-                       double area, Vec2 p_OC);
+// means touching. `out` must be a default Overlap (written in place: no copy of its arrays).
+void finish_overlap(const ConvexPolygon& a, const ConvexPolygon& b, Vec2 origin,
+                    std::span<const Vec2> vertices_O, std::span<const bool> edge_on_a, double area,
+                    Vec2 p_OC, Overlap& out);
 
-// The fast path without its exact fallback: nullopt if its topology were ever inconsistent
-// (tests check that this never happens).
-std::optional<Overlap> overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b);
+// The fast path without its exact fallback, writing into a default `out`: false if its topology
+// were ever inconsistent (tests check that this never happens).
+bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out);
 
 }  // namespace isopound::detail

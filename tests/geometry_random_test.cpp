@@ -184,8 +184,9 @@ TEST(GeometryRandom, FastPathMatchesExactPathOnRandomPairs) {
     }
     if (!a || !b) continue;
     ++made;
-    const auto fast = detail::overlap_fast(*a, *b);
-    if (!fast) {
+    Overlap fast_value;
+    const Overlap* fast = &fast_value;
+    if (!detail::overlap_fast(*a, *b, fast_value)) {
       ++fallbacks;
       continue;
     }
