@@ -79,7 +79,7 @@ SatAxis least_penetration_axis(const ConvexPolygon& a, const ConvexPolygon& b, V
       const Vec2 p = face[k] - origin;
       const Vec2 e = face[k + 1 == n ? 0 : k + 1] - face[k];
       const double length = norm(e);
-      const Vec2 m{e.y / length, -e.x / length};  // outward: right of a counter-clockwise edge
+      const Vec2 m{e.y / length + 0.0, -e.x / length + 0.0};  // outward: right of the edge
       double s = std::numeric_limits<double>::infinity();
       for (const Vec2& q : other.vertices()) s = std::min(s, dot(m, (q - origin) - p));
       if (s > best.separation) best = {s, sign * m};
@@ -118,8 +118,8 @@ void finish_overlap(const ConvexPolygon& a, const ConvexPolygon& b, Vec2 origin,
       const Vec2 chord = p2_O - p1_O;
       const double length = norm(chord);
       if (length > 0.0) {
-        out.t_AB = (1.0 / length) * chord;
-        out.n_AB = {out.t_AB.y, -out.t_AB.x};
+        out.t_AB = {chord.x / length, chord.y / length};
+        out.n_AB = {out.t_AB.y + 0.0, -out.t_AB.x + 0.0};  // + 0.0: no negative zeros
         have_chord = true;
       }
     }
@@ -130,7 +130,7 @@ void finish_overlap(const ConvexPolygon& a, const ConvexPolygon& b, Vec2 origin,
   }
   if (!have_chord) {
     out.n_AB = least_penetration_axis(a, b, origin).n_AB;
-    out.t_AB = {-out.n_AB.y, out.n_AB.x};
+    out.t_AB = {-out.n_AB.y + 0.0, out.n_AB.x + 0.0};
     // Extreme vertices along the tangent.
     int lo = 0, hi = 0;
     for (int k = 1; k < count; ++k) {
