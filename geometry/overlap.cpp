@@ -145,7 +145,8 @@ void finish_overlap(const ConvexPolygon& a, const ConvexPolygon& b, Vec2 origin,
   out.p_WP2 = origin + p2_O;
   const double width = dot(out.t_AB, p2_O - p1_O);
   if (out.area > 0.0 && width > 0.0) {
-    out.indentation = (count == 3 ? 2.0 : 1.0) * out.area / width;
+    out.mean_depth = out.area / width;
+    out.indentation = (count == 3 ? 2.0 : 1.0) * out.mean_depth;
   }
 }
 

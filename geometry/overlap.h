@@ -48,6 +48,9 @@ struct Overlap {
   // Equivalent indentation δ_N, m (thesis eq. 5.20): 2A_c/w for a triangular overlap, A_c/w for
   // any other (quadrilateral and up), w = |P1P2| measured along t_AB; 0 when A_c = 0.
   double indentation = 0.0;
+  // The mean depth A_c/w for every shape (continuous where δ_N jumps by 2× as a triangle turns
+  // into a quadrilateral): the alternative to δ_N a contact model may choose. 0 when A_c = 0.
+  double mean_depth = 0.0;
   // Vertices of A ∩ B, counter-clockwise: vertex_count of them (0 separated, 1–2 touching).
   int vertex_count = 0;
   std::array<Vec2, kMaxOverlapVertices> vertices;

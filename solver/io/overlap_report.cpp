@@ -26,6 +26,7 @@ Json overlap_json(int index, const std::string& name, const Overlap& overlap,
   out["normal"] = apart ? Json() : point(overlap.n_AB);
   out["tangent"] = apart ? Json() : point(overlap.t_AB);
   out["indentation_m"] = overlap.indentation;
+  out["mean_depth_m"] = overlap.mean_depth;
   out["vertices"] = overlap.vertex_count;
   Json polygon = Json::array();
   for (int k = 0; k < overlap.vertex_count; ++k) polygon.push_back(point(overlap.vertices[k]));

@@ -11,7 +11,8 @@
 namespace isopound {
 
 // {"pair", "name"?, "case", "area_m2", "centroid_m", "crossings_m", "normal", "tangent",
-//  "indentation_m", "vertices", "polygon_m", "separation_m"}; the points and directions are null
+//  "indentation_m",
+//  "mean_depth_m", "vertices", "polygon_m", "separation_m"}; the points and directions are null
 // when the polygons are separated.
 nlohmann::ordered_json overlap_json(int index, const std::string& name, const Overlap& overlap,
                                     const Separation& separation);
