@@ -22,8 +22,9 @@ inline signed char turn(const Vec2& p, const Vec2& q, const Vec2& r) {
       Kernel::Point_2(p.x, p.y), Kernel::Point_2(q.x, q.y), Kernel::Point_2(r.x, r.y)));
 }
 
+// Plain sqrt, not hypot (slower): the lengths here are far from overflow or underflow.
 inline double norm(Vec2 v) {
-  return std::hypot(v.x, v.y);
+  return std::sqrt(dot(v, v));
 }
 
 bool boxes_disjoint(const ConvexPolygon& a, const ConvexPolygon& b) {
@@ -361,8 +362,9 @@ Separation separation_of(const ConvexPolygon& a, const ConvexPolygon& b) {
   const detail::SatAxis axis = detail::least_penetration_axis(a, b, origin);
   if (axis.separation <= 0.0) return {axis.separation, axis.n_AB};
   // Apart: the Euclidean distance, the least over vertex–edge pairs of both polygons.
-  double best = std::numeric_limits<double>::infinity();
-  Vec2 direction;
+  double best_sq = std::numeric_limits<double>::infinity();
+  Vec2 best_gap;
+  double best_sign = 1.0;
   auto scan = [&](const ConvexPolygon& edges, const ConvexPolygon& points, double sign) {
     const int n = edges.size();
     for (int k = 0; k < n; ++k) {
@@ -373,17 +375,19 @@ Separation separation_of(const ConvexPolygon& a, const ConvexPolygon& b) {
         const Vec2 q = q_W - origin;
         const double s = std::clamp(dot(q - p, e) / ee, 0.0, 1.0);
         const Vec2 gap = q - (p + s * e);  // from the edge to the point
-        const double distance = norm(gap);
-        if (distance < best) {
-          best = distance;
-          direction = {sign * gap.x / distance, sign * gap.y / distance};
+        const double distance_sq = dot(gap, gap);
+        if (distance_sq < best_sq) {
+          best_sq = distance_sq;
+          best_gap = gap;
+          best_sign = sign;
         }
       }
     }
   };
   scan(a, b, 1.0);
   scan(b, a, -1.0);
-  return {best, direction};
+  const double distance = std::sqrt(best_sq);
+  return {distance, {best_sign * best_gap.x / distance, best_sign * best_gap.y / distance}};
 }
 
 }  // namespace isopound
