@@ -329,17 +329,24 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
       v = next[v];
       if (k == count - 1 && v != 0) return false;
     }
-    // Triangle fan about the first vertex: round-off relative to the overlap's own size.
-    double twice_area = 0.0;
-    Vec2 moment;
+    // Triangle fan about the first vertex: round-off relative to the overlap's own size. For a
+    // sliver as thin as the round-off a fan triangle may come out negative: the centroid uses
+    // the weights clamped at 0 (then the vertex mean), so it stays a convex combination of
+    // points of A ∩ B — inside it — however ill-conditioned its position along the sliver.
+    double twice_area = 0.0, weight_sum = 0.0;
+    Vec2 moment, vertex_sum = ordered[0];
     for (int q = 1; q + 1 < count; ++q) {
       const Vec2 d1 = ordered[q] - ordered[0], d2 = ordered[q + 1] - ordered[0];
       const double w = cross(d1, d2);
       twice_area += w;
-      moment = moment + w * (d1 + d2);
+      weight_sum += std::max(w, 0.0);
+      moment = moment + std::max(w, 0.0) * (d1 + d2);
+      vertex_sum = vertex_sum + ordered[q];
     }
+    vertex_sum = vertex_sum + ordered[count - 1];
     area = std::max(0.5 * twice_area, 0.0);
-    p_OC = twice_area > 0.0 ? ordered[0] + (1.0 / (3.0 * twice_area)) * moment : ordered[0];
+    p_OC = weight_sum > 0.0 ? ordered[0] + (1.0 / (3.0 * weight_sum)) * moment
+                            : (1.0 / count) * vertex_sum;
   }
   finish_overlap(a, b, origin, std::span<const Vec2>(ordered.data(), count),
                  std::span<const bool>(edge_on_a, count), area, p_OC, out);
