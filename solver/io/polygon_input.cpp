@@ -1,0 +1,44 @@
+// Convex polygons in plan read from YAML (coordinates with optional length units), and the pairs
+// file of `isopound geometry overlap`. Validation is ConvexPolygon's; messages gain file:line:key.
+#include "solver/io/polygon_input.h"
+
+namespace isopound {
+
+ConvexPolygon read_polygon(const InputNode& node) {
+  const std::vector<InputNode> points = node.elements();
+  std::vector<Vec2> vertices;
+  for (const InputNode& point : points) {
+    if (!point.is_sequence() || point.yaml().size() != 2) {
+      point.fail("expected a point [x, y], got " + point.kind());
+    }
+    const std::vector<InputNode> xy = point.elements();
+    vertices.push_back({xy[0].quantity(dim::kLength), xy[1].quantity(dim::kLength)});
+  }
+  try {
+    return ConvexPolygon(std::span<const Vec2>(vertices));
+  } catch (const InvalidPolygon& e) {
+    if (e.vertex() >= 0 && e.vertex() < int(points.size())) points[e.vertex()].fail(e.what());
+    node.fail(e.what());
+  }
+}
+
+std::vector<PolygonPair> load_polygon_pairs_file(const std::string& path) {
+  const std::string text = read_input_file(path, "a YAML file of polygon pairs");
+  const InputNode root(parse_single_document(text, path, "a polygon-pairs file"), path);
+  if (!root.is_map()) root.fail("expected a map with 'pairs:', got " + root.kind());
+  root.expect_keys({"pairs"});
+  const InputNode list = root.required("pairs");
+  std::vector<PolygonPair> pairs;
+  for (const InputNode& item : list.elements()) {
+    if (!item.is_map())
+      item.fail("expected {a: [[x, y], ...], b: [[x, y], ...]}, got " + item.kind());
+    item.expect_keys({"name", "a", "b"});
+    std::string name;
+    item.read_string("name", name);
+    pairs.push_back({name, read_polygon(item.required("a")), read_polygon(item.required("b"))});
+  }
+  if (pairs.empty()) list.fail("no pairs: give at least one {a: ..., b: ...}");
+  return pairs;
+}
+
+}  // namespace isopound
