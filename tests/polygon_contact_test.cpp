@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "solver/core/analysis.h"
 #include "solver/core/newmark.h"
 #include "solver/elements/contact.h"
 #include "solver/elements/polygon_contact.h"
@@ -552,6 +553,82 @@ TEST(PolygonContactTangent, NewtonConvergesQuadratically) {
     }
     EXPECT_GE(checked, 1) << "push_y " << push_y;
   }
+}
+
+GroundMotion still(double duration, double dt) {
+  GroundMotion g;
+  g.name = "still";
+  g.dt = dt;
+  g.acceleration.assign(static_cast<std::size_t>(std::round(duration / dt)) + 1, 0.0);
+  return g;
+}
+
+// Through run_analysis at its default adaptive stepping (each element with its own step limit
+// and events): the face-on slab and the 2D Kelvin–Voigt contact within 0.5 % on every peak.
+TEST(PolygonContactFaceOn, RunAnalysisAtDefaultsAgreesWithContact1D) {
+  const double gap = 0.05, v0 = 1.0;
+  const double kx = kSlabMass * std::pow(2 * std::numbers::pi / 2.0, 2);
+  PolygonContactConfig cfg;
+  cfg.friction = false;
+  cfg.keep_tension = true;
+  Model m3 = slab_model(true, kx, kx, kx * polar_moment(1.0));
+  m3.elements.push_back(
+      std::make_unique<PolygonContact>("c", slab(0), wall_at(0.5 * kSide + gap), cfg));
+  Model m1;
+  m1.dofs = {{"slab/x", 0, 0}};
+  m1.mass = Eigen::MatrixXd::Constant(1, 1, kSlabMass);
+  m1.stiffness = Eigen::MatrixXd::Constant(1, 1, kx);
+  m1.damping = Eigen::MatrixXd::Zero(1, 1);
+  m1.influence = Eigen::VectorXd::Ones(1);
+  ImpactLawConfig law;
+  law.k = cfg.k_normal * kSide;
+  law.e = cfg.restitution;
+  law.mass_1 = kSlabMass;
+  law.mass_2 = kWallMass;
+  m1.elements.push_back(std::make_unique<Contact1D>("c", ContactBody{0, 1.0}, ContactBody{}, gap,
+                                                    make_impact_law(law),
+                                                    effective_mass(kSlabMass, kWallMass), 100));
+  RunOptions o;
+  o.initial_velocity = Eigen::Vector3d(v0, 0, 0);
+  const AnalysisResult r3 = run_analysis(m3, still(0.3, 1e-3), o);
+  o.initial_velocity = Eigen::VectorXd::Constant(1, v0);
+  const AnalysisResult r1 = run_analysis(m1, still(0.3, 1e-3), o);
+  const auto near = [](double a, double b, const char* what) {
+    EXPECT_NEAR(a, b, 0.005 * std::abs(b)) << what;
+  };
+  near(r3.element_outputs[0][0].value, r1.element_outputs[0][0].value, "peak F_N");
+  near(r3.element_outputs[0][3].value, r1.element_outputs[0][1].value, "peak penetration");
+  near(r3.element_outputs[0][5].value, r1.element_outputs[0][3].value, "impact velocity");
+  near(r3.displacement[0].value, r1.displacement[0].value, "peak displacement");
+  near(r3.velocity[0].value, r1.velocity[0].value, "peak velocity");
+  near(r3.absolute_acceleration[0].value, r1.absolute_acceleration[0].value, "peak acceleration");
+  EXPECT_EQ(r3.element_outputs[0][4].value, 1.0);  // one impact
+  EXPECT_LT(r3.displacement[2].value * 0.5 * kSide, 1e-6 * r3.displacement[0].value);
+}
+
+// An isolated slab (springs and a dashpot on its 3 DOFs) turned 0.2 rad, thrown obliquely at a
+// wall with friction, through run_analysis: the energy balance closes and the contact only
+// dissipates.
+TEST(PolygonContactPassivity, RunAnalysisEnergyBalanceWithFriction) {
+  const double kx = kSlabMass * std::pow(2 * std::numbers::pi / 2.0, 2);
+  Model m = slab_model(true, kx, kx, kx * polar_moment(1.0));
+  m.damping = 2 * 0.1 * (2 * std::numbers::pi / 2.0) * m.mass;
+  const double theta0 = 0.2;
+  const double reach = 0.5 * kSide * (std::cos(theta0) + std::sin(theta0));
+  m.elements.push_back(std::make_unique<PolygonContact>("c", slab(0), wall_at(reach + 0.02),
+                                                        PolygonContactConfig{}));
+  RunOptions o;
+  o.initial_displacement = Eigen::Vector3d(0, 0, theta0);
+  o.initial_velocity = Eigen::Vector3d(1.2, 0.8, 0.0);
+  const AnalysisResult r = run_analysis(m, still(1.0, 1e-3), o);
+  const auto* c = static_cast<const PolygonContact*>(m.elements[0].get());
+  EXPECT_GE(c->impacts(), 1);
+  EXPECT_GT(r.element_outputs[0][1].value, 0.0);  // a tangential force acted
+  EXPECT_GT(c->friction_dissipated(), 0.0);
+  EXPECT_GE(r.element_outputs[0][10].value, 0.0);  // impact-dissipated
+  EXPECT_GT(r.energy.hysteretic, 0.0);
+  // Trapezoidal energy integration at the default tolerance (THEORY-notes: 4e-4 with 2D walls).
+  EXPECT_LT(r.energy.relative_error, 5e-3);
 }
 
 TEST(PolygonContactOutputs, NamesUnitsAndSnapshot) {
