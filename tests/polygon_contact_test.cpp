@@ -378,7 +378,7 @@ TEST(PolygonContactPassivity, RandomObliqueImpactsWithFrictionNeverAddEnergy) {
   std::mt19937 rng(20261123);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   int episodes = 0;
-  for (int trial = 0; trial < 24; ++trial) {
+  for (int trial = 0; trial < 16; ++trial) {
     const bool two_slabs = trial % 3 == 2;
     PolygonContactConfig cfg;
     cfg.mu_static = 0.3 + 0.6 * uni(rng);
@@ -411,7 +411,7 @@ TEST(PolygonContactPassivity, RandomObliqueImpactsWithFrictionNeverAddEnergy) {
     const auto* c = static_cast<const PolygonContact*>(m.elements[0].get());
     bool in_contact = false;
     double ke_start = kinetic_energy(m, v0), ke_onset = 0.0;
-    run_fixed(m, 5e-5, two_slabs ? 0.6 : 0.3, 0.0, u0, v0,
+    run_fixed(m, 1e-4, two_slabs ? 0.6 : 0.3, 0.0, u0, v0,
               [&](const NewmarkStepper& s, double, double) {
                 const bool now = c->output(11) == 1.0;
                 const double ke = kinetic_energy(m, s.v());
@@ -430,7 +430,7 @@ TEST(PolygonContactPassivity, RandomObliqueImpactsWithFrictionNeverAddEnergy) {
     EXPECT_GE(c->friction_dissipated(), 0.0);
     EXPECT_GE(c->output(10), -1e-9 * ke_start) << "impact-dissipated energy, trial " << trial;
   }
-  EXPECT_GE(episodes, 20);
+  EXPECT_GE(episodes, 14);
 }
 
 // The tangent is the derivative of the force actually applied (return map included): compare
@@ -690,10 +690,10 @@ TEST(PolygonContactOptions, DampingJumpOfTheThesisIndentationRule) {
     PolygonContact c("c", slab(0), wall_at(6.0), cfg);
     c.begin_step(1e-3, false);
     Eigen::VectorXd u = Eigen::Vector3d(0, 0, 0.17), v = Eigen::Vector3d(0.5, 0, 0);
-    const double du = 1e-5;
+    const double du = 1e-4;
     double prev_damping = -1.0, jump = 1.0;
     int prev_count = 0;
-    for (int i = 0; i < 250000; ++i) {
+    for (int i = 0; i < 25000; ++i) {
       u[0] = i * du;
       c.set_trial(u, v);
       if (c.output(11) == 0.0) continue;
