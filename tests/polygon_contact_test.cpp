@@ -411,8 +411,24 @@ TEST(PolygonContactPassivity, RandomObliqueImpactsWithFrictionNeverAddEnergy) {
     const auto* c = static_cast<const PolygonContact*>(m.elements[0].get());
     bool in_contact = false;
     double ke_start = kinetic_energy(m, v0), ke_onset = 0.0;
+    // Slab to slab: momentum about the origin, each slab's mass at its DOF origin O' (its centre).
+    const Vec2 o_b = other.p_WO;
+    const auto momenta = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+      Eigen::Vector3d p = Eigen::Vector3d::Zero();  // P_x, P_y, L_z
+      for (int k = 0; k < (two_slabs ? 2 : 1); ++k) {
+        const Vec2 o = (k == 0 ? Vec2{0, 0} : o_b) + Vec2{u[3 * k], u[3 * k + 1]};
+        p[0] += kSlabMass * v[3 * k];
+        p[1] += kSlabMass * v[3 * k + 1];
+        p[2] +=
+            kSlabMass * cross(o, {v[3 * k], v[3 * k + 1]}) + polar_moment(kSlabMass) * v[3 * k + 2];
+      }
+      return p;
+    };
+    const Eigen::Vector3d p_start = momenta(u0, v0);
+    Eigen::Vector3d p_end = p_start;
     run_fixed(m, 1e-4, two_slabs ? 0.6 : 0.3, 0.0, u0, v0,
               [&](const NewmarkStepper& s, double, double) {
+                p_end = momenta(s.u(), s.v());
                 const bool now = c->output(11) == 1.0;
                 const double ke = kinetic_energy(m, s.v());
                 if (!in_contact && now) ke_onset = ke;
@@ -429,6 +445,16 @@ TEST(PolygonContactPassivity, RandomObliqueImpactsWithFrictionNeverAddEnergy) {
               });
     EXPECT_GE(c->friction_dissipated(), 0.0);
     EXPECT_GE(c->output(10), -1e-9 * ke_start) << "impact-dissipated energy, trial " << trial;
+    if (two_slabs) {
+      // Equal and opposite forces: linear momentum is kept exactly by Newmark (to the Newton
+      // tolerance); with the torques (p_WC − p_WO') × F about each moving origin, angular
+      // momentum about a fixed point is kept up to the O(h²) of the trapezoidal rule (a wrong
+      // lever arm or sign would change it by ~F_N·(lever)·T_c ~ 10⁵ kg m²/s).
+      const double p_scale = kSlabMass * v0.head(2).norm();
+      EXPECT_NEAR(p_end[0], p_start[0], 1e-9 * p_scale) << "trial " << trial;
+      EXPECT_NEAR(p_end[1], p_start[1], 1e-9 * p_scale) << "trial " << trial;
+      EXPECT_NEAR(p_end[2], p_start[2], 1e-4 * p_scale * kSide) << "trial " << trial;
+    }
   }
   EXPECT_GE(episodes, 14);
 }
