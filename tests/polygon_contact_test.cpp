@@ -793,5 +793,35 @@ TEST(PolygonContactOutputs, NamesUnitsAndSnapshot) {
   EXPECT_NEAR(s.normal_force, 2.58e10 * 0.02, 1e-3);
 }
 
+// Which body is A does not matter: swapping A and B reverses n_AB and t_AB, and the forces on the
+// DOFs are the same (slab–wall and slab–slab, with friction, at a trial after a committed step).
+TEST(PolygonContactOutputs, SwappingTheBodiesGivesTheSameForces) {
+  PolygonContactConfig cfg;
+  for (const bool wall : {true, false}) {
+    const PolygonBody a = slab(0), b = wall ? wall_at(5.0) : slab(3, {10.01, 3.0});
+    PolygonContact ab("ab", a, b, cfg), ba("ba", b, a, cfg);
+    const int n = wall ? 3 : 6;
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(n), v = Eigen::VectorXd::Zero(n);
+    u.head(3) << 0.012, 0.001, 0.004;
+    v.head(3) << 0.4, 0.2, 0.03;
+    if (!wall) u.tail(3) << -0.003, 0.0, -0.002;
+    for (PolygonContact* c : {&ab, &ba}) {
+      c->begin_step(1e-3, false);
+      c->set_trial(u, v);
+      c->commit();
+      u[1] += 2e-3;  // slide on
+      c->set_trial(u, v);
+      u[1] -= 2e-3;
+    }
+    Eigen::VectorXd f_ab = Eigen::VectorXd::Zero(n), f_ba = Eigen::VectorXd::Zero(n);
+    ab.add_force(f_ab);
+    ba.add_force(f_ba);
+    ASSERT_GT(ab.output(0), 0.0);
+    EXPECT_LT((f_ab - f_ba).cwiseAbs().maxCoeff(), 1e-9 * f_ab.cwiseAbs().maxCoeff());
+    EXPECT_NEAR(ab.snapshot().n_AB.x, -ba.snapshot().n_AB.x, 1e-12);
+    EXPECT_NEAR(ab.output(1), ba.output(1), 1e-9 * std::abs(ab.output(0)));  // F_T
+  }
+}
+
 }  // namespace
 }  // namespace isopound

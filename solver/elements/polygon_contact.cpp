@@ -304,12 +304,9 @@ void PolygonContact::commit() {
   if (trial_.started) {  // an onset no event located (events off, or within the tolerance)
     ++impacts_;
     max_impact_velocity_ = std::max(max_impact_velocity_, std::max(trial_.rate_n, 0.0));
-    steps_in_contact_ = 0;
   }
   if (trial_.closed) {
     (trial_.slipping ? time_slip_ : time_stick_) += h_;
-    max_indentation_ = std::max(max_indentation_, trial_.indentation);
-    ++steps_in_contact_;
   }
   trial_.started = false;
   friction_dissipated_ = trial_.friction_dissipated;
@@ -367,7 +364,6 @@ bool PolygonContact::settle_event() {
       if (cfg_.normal_law) cfg_.normal_law->begin_contact(v_imp, C.phase);
       ++impacts_;
       max_impact_velocity_ = std::max(max_impact_velocity_, v_imp);
-      steps_in_contact_ = 0;
       break;
     }
     case Event::kSeparation:

@@ -164,11 +164,9 @@ class PolygonContact final : public Element {
   State committed_, trial_;
   Event pending_ = Event::kNone;
   int impacts_ = 0;
-  int steps_in_contact_ = 0;
   double max_impact_velocity_ = 0.0;
   double friction_dissipated_ = 0.0;
   double time_stick_ = 0.0, time_slip_ = 0.0;
-  double max_indentation_ = 0.0;
 };
 
 }  // namespace isopound
