@@ -537,6 +537,35 @@ TEST(PolygonContactTangent, FaceOnMatchesTheAnalyticKelvinVoigtStiffness) {
   EXPECT_NEAR(c.output(0), k * 0.003 + damping * 0.4, 1e-9 * c.output(0));
 }
 
+// A closed form with a triangle: a slab turned π/4 pushes its corner d into the wall, so
+// A_c = d², w = 2d, δ_N = 2A_c/w = d and F_N = k_N d² + 2ξ √(k_N d m_eff) ḋ. Slipping along the
+// wall (the slab slid +y since the committed state), F_T = μ_k F_N: the tangent's x column is
+// dF_N/du + vf dF_N/dv on x and μ_k times it on y.
+TEST(PolygonContactTangent, CornerSlipMatchesTheClosedForm) {
+  PolygonContactConfig cfg;
+  const double theta = std::numbers::pi / 4, d = 0.01, rate = 0.3, vf = 2.0 / 1e-4;
+  const double reach = 0.5 * kSide * std::sqrt(2.0);
+  PolygonContact c("c", slab(0), wall_at(reach), cfg);
+  Eigen::VectorXd u = Eigen::Vector3d(d, 0.0, theta), v = Eigen::Vector3d(rate, 0.1, 0.0);
+  c.begin_step(1e-4, false);
+  c.set_trial(u, v);
+  c.commit();
+  u[1] = 0.05;
+  c.set_trial(u, v);
+  ASSERT_EQ(c.output(6), 1.0);  // slipping
+  const double m_eff = effective_mass(kSlabMass, kWallMass);
+  const double xi = kelvin_voigt_xi(cfg.restitution);
+  const double f_n = cfg.k_normal * d * d + 2 * xi * std::sqrt(cfg.k_normal * d * m_eff) * rate;
+  EXPECT_NEAR(c.output(0), f_n, 1e-9 * f_n);
+  EXPECT_NEAR(c.output(1), -cfg.mu_kinetic * f_n, 1e-9 * f_n);  // opposes the +y slide of A
+  const double df_du = 2 * cfg.k_normal * d + xi * std::sqrt(cfg.k_normal * m_eff / d) * rate;
+  const double df_dv = 2 * xi * std::sqrt(cfg.k_normal * d * m_eff);
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3, 3);
+  c.add_tangent(K, vf);
+  EXPECT_NEAR(K(0, 0), df_du + vf * df_dv, 1e-6 * (df_du + vf * df_dv));
+  EXPECT_NEAR(K(1, 0), cfg.mu_kinetic * (df_du + vf * df_dv), 1e-6 * (df_du + vf * df_dv));
+}
+
 // Newton on a static problem K u + f_e(u) = p with the element's tangent and an LU solve (the
 // tangent is non-symmetric): a slab on springs pushed obliquely into a wall, friction slipping.
 // Quadratic convergence: each residual at most C × the previous one squared, few iterations.
