@@ -262,7 +262,7 @@ void PolygonContact::add_force(Eigen::VectorXd& f) const {
 // rotation scaled by the body size): the derivative of the discrete law actually applied,
 // return map and clamps included (accurate to ~1e-8 relative away from their switches).
 void PolygonContact::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
-  if (!trial_.closed || trial_.area <= 0.0) return;
+  if (!trial_.closed) return;  // (closed at A_c = 0: the damping limit still has a tangent)
   const double eps_u = std::clamp(1e-3 * trial_.indentation, 1e-10, 1e-7);
   State plus, minus;
   for (int j = 0; j < kDofs; ++j) {
