@@ -1,0 +1,172 @@
+// 3D pounding between two rigid diaphragms in plan (THEORY §6): force from the overlap of their
+// convex polygons, F_N = k_N A_c + c_N δ̇_N at the overlap centroid C, Coulomb by a return map.
+// Signs: n_AB from A into B; the force on B is F_N n_AB − F_T t_AB, on A its opposite; torques
+// (p_WC − p_WO) × F about each body's DOF origin O (which moves with the body). THEORY-notes.md.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include "geometry/overlap.h"
+#include "solver/core/element.h"
+#include "solver/materials/impact_law.h"
+
+namespace isopound {
+
+// One body of a polygon contact: a rigid diaphragm with DOFs (u, v, θ) taken at the point O, or
+// a fixed body (all three DOF indices −1), or any subset (a missing DOF stays at 0).
+struct PolygonBody {
+  int dof_u = -1;       // DOF index of the translation along x, or −1
+  int dof_v = -1;       // along y, or −1
+  int dof_theta = -1;   // of the rotation (rad, counter-clockwise), or −1
+  Vec2 p_WO;            // the DOF origin O at rest, plan frame W, m
+  ConvexPolygon shape;  // plan outline at rest, plan frame W, m (placed by (u, v, θ) about O)
+  double mass = 0.0;    // kg, for m_eff (a fixed wall: its given mass; +inf allowed)
+};
+
+// Normal and tangential stiffness from the materials (thesis eq. 5.23–5.26), E_st in Pa:
+// E_dyn = 5.82 E_st^0.63 (E in GPa), G_dyn = E_dyn / (2(1 + ν)),
+// k_N = ((1 − ν₁²)/E_dyn,1 + (1 − ν₂²)/E_dyn,2)⁻¹ (N/m²), k_T = ((2 − ν₁)/G₁ + (2 − ν₂)/G₂)⁻¹
+// (N/m).
+struct ContactStiffness {
+  double k_normal = 0.0;      // N/m² (force per overlap area)
+  double k_tangential = 0.0;  // N/m
+};
+ContactStiffness contact_stiffness_from_materials(double e_static_1, double nu_1, double e_static_2,
+                                                  double nu_2);
+
+// How δ_N enters c_N = 2ξ √((k_N A_c / δ_N) m_eff).
+enum class IndentationRule {
+  kThesis,     // eq. 5.20: 2A_c/w for a triangle, A_c/w otherwise (jumps ×2 at tri → quad)
+  kMeanDepth,  // A_c/w always (continuous)
+};
+
+struct PolygonContactConfig {
+  double k_normal = 2.58e10;     // N/m²
+  double k_tangential = 5.74e9;  // N/m
+  double mu_static = 0.8;        // μ_s: stick while |s| ≤ μ_s F_N
+  double mu_kinetic = 0.6;       // μ_k: |F_T| = μ_k F_N while slipping
+  double restitution = 0.65;     // e → ξ by Kelvin–Voigt (eq. 3.7)
+  bool friction = true;          // false: no tangential force at all
+  bool keep_tension = false;     // true: a tensile F_N is applied (KV as published)
+  IndentationRule indentation = IndentationRule::kThesis;
+  OverlapMethod overlap = OverlapMethod::kFast;
+  double steps_per_contact = 100;  // step limit in contact: T_c / steps_per_contact
+  // Option: one of the ten 2D impact laws along the normal with δ_N as the penetration
+  // (its k in N/m); null = the area law k_N A_c + c_N δ̇_N.
+  std::shared_ptr<const ImpactLaw> normal_law;
+};
+
+// What a writer of the contact-event log needs at a step (SI, plan frame W).
+struct ContactSnapshot {
+  bool in_contact = false;
+  bool slipping = false;
+  double area = 0.0;              // A_c, m²
+  double indentation = 0.0;       // δ_N, m
+  double normal_force = 0.0;      // F_N, N (≥ 0 unless keep_tension)
+  double tangential_force = 0.0;  // F_T, N: the force on B is F_N n_AB − F_T t_AB
+  Vec2 p_WC;                      // action point C, m
+  Vec2 n_AB;                      // unit normal from A into B
+  Vec2 t_AB;                      // unit tangent, n_AB turned +90°
+};
+
+class PolygonContact final : public Element {
+ public:
+  PolygonContact(std::string label, PolygonBody a, PolygonBody b, const PolygonContactConfig& cfg);
+
+  void begin_step(double h, bool freeze_status) override {
+    h_ = h;
+    freeze_ = freeze_status;
+  }
+  void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
+  void add_force(Eigen::VectorXd& f) const override;
+  void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
+  // The thesis force acts at C along the chord normal: not the gradient of a potential once
+  // the bodies rotate, so the tangent is non-symmetric even without friction.
+  bool symmetric_tangent() const override { return false; }
+  double power(const Eigen::VectorXd& v) const override;
+  double stored_energy() const override;
+  void commit() override;
+  void revert() override;
+  double event_fraction() override;
+  bool settle_event() override;
+  double step_limit() const override;
+
+  int output_count() const override { return kOutputCount; }
+  std::string output_name(int i) const override;
+  std::string output_unit(int i) const override;
+  double output(int i) const override;
+  void outputs(double* out) const override;
+  const std::string& label() const override { return label_; }
+
+  // The trial state for an event log.
+  ContactSnapshot snapshot() const;
+  // By name, for tests (committed counters, trial forces).
+  int impacts() const { return impacts_; }
+  double max_impact_velocity() const { return max_impact_velocity_; }
+  double friction_dissipated() const { return friction_dissipated_; }
+  double trial_friction_dissipated() const { return trial_.friction_dissipated; }
+  double dissipated_energy() const { return trial_.work - trial_stored(); }
+  double effective_mass() const { return m_eff_; }
+  double normal_damping_ratio() const { return xi_; }
+  // Witness (penetration −separation, m) and its rate (m/s) at the trial state.
+  double trial_witness() const;
+
+  enum { kOutputCount = 12 };
+
+ private:
+  static constexpr int kDofs = 6;  // (u, v, θ) of A then B
+  using Vec6 = std::array<double, kDofs>;
+  enum class Event { kNone, kOnset, kSeparation, kSlip, kTension, kPhase };
+
+  // Everything the force depends on at one state (trial or committed).
+  struct State {
+    Vec6 q{}, qdot{};  // (u, v, θ) of A and B, and their rates
+    bool closed = false;
+    bool slipping = false;
+    bool started = false;  // this trial began a contact (no event located)
+    double area = 0.0, indentation = 0.0, width = 0.0;
+    Vec2 p_WC, n_AB, t_AB;
+    double rate_n = 0.0;          // δ̇_N: approach rate at C along n_AB, m/s (> 0 closing)
+    double rate_t = 0.0;          // u̇_T: sliding rate of B on A at C along t_AB, m/s
+    double raw_normal = 0.0;      // F_N before the no-tension clamp
+    double elastic_normal = 0.0;  // k_N A_c (or the law's F(δ_N, 0))
+    double normal = 0.0, tangential = 0.0;  // F_N, F_T as applied
+    double spring = 0.0;                    // s, the tangential spring force after the return map
+    double spring_trial = 0.0;              // s_tr, before it
+    Vec6 force{};                // f_e on (u, v, θ) of A, B (restoring sign: −force on body)
+    double work = 0.0;           // ∫ v·f_e dt, J (trapezoid), from the start
+    double normal_energy = 0.0;  // E_N = ∫ F_el δ̇_N dt in this contact, J
+    double friction_dissipated = 0.0;          // Σ (s_tr² − s²)/(2 k_T), J
+    double witness = 0.0, witness_rate = 0.0;  // −separation and its rate
+    bool witness_valid = false;
+    ImpactPhase phase;  // the normal law's memory of this contact (option normal_law)
+  };
+
+  // The force law at (q, qdot) from the committed state; `out` gets everything but work.
+  void evaluate(const Vec6& q, const Vec6& qdot, bool freeze, State& out) const;
+  void gather(const Eigen::VectorXd& x, Vec6& q) const;
+  void compute_witness(State& s) const;
+  double trial_stored() const;
+
+  std::string label_;
+  PolygonBody a_, b_;
+  PolygonContactConfig cfg_;
+  std::array<int, kDofs> dof_{};
+  double m_eff_ = 0.0;
+  double xi_ = 0.0;
+  double c_tangential_ = 0.0;  // 2ξ √(k_T m_eff)
+  double length_scale_ = 1.0;  // m, converts a rotation to a displacement (FD steps, witness)
+  double width_floor_ = 0.0;   // m, lower bound of w in the step limit
+  double h_ = 0.0;
+  bool freeze_ = false;
+  State committed_, trial_;
+  Event pending_ = Event::kNone;
+  int impacts_ = 0;
+  double max_impact_velocity_ = 0.0;
+  double friction_dissipated_ = 0.0;
+  double time_stick_ = 0.0, time_slip_ = 0.0;
+};
+
+}  // namespace isopound
