@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/excitation/ground_motion.h"
@@ -117,6 +118,9 @@ struct ModelConfig {
   GroundMotionConfig ground_motion;
   AnalysisConfig analysis;
   OutputConfig output;
+  // Keys the file did not give and the values used for them ("building.walls[0].mass",
+  // "500000 kg"): printed in the settings block and summary.json, so no default is silent.
+  std::vector<std::pair<std::string, std::string>> defaults;
 };
 
 }  // namespace isopound
