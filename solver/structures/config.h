@@ -77,6 +77,7 @@ struct NeighbourConfig {
   bool right = true;       // side of the main building it stands on (+x = right)
   double gap = 0.1;        // m, clear distance at rest
   ImpactLawConfig impact;  // masses are taken from the two colliding levels
+  bool pounding = true;    // false: no contact elements (the unobstructed comparison)
 };
 
 struct GroundMotionConfig {

@@ -440,6 +440,15 @@ int run_sweep(const std::string& study_path, const SweepOptions& options,
         already > 0 ? (", " + std::to_string(already) + " were done before").c_str() : "");
     std::printf("Results in %s; tables: isopound export %s\n", db_path.c_str(), db_path.c_str());
   }
+  // Failed runs make the sweep fail (exit 1), also under -q: say how many and where to look.
+  if (writer.failed() > 0) {
+    std::fprintf(stderr,
+                 "isopound sweep: error: %lld of %lld runs failed; their messages are in the "
+                 "'error' column of the runs table of %s (isopound export %s --table runs)\n",
+                 static_cast<long long>(writer.failed()),
+                 static_cast<long long>(writer.finished()), db_path.c_str(), db_path.c_str());
+    return 1;
+  }
   return 0;
 }
 
