@@ -83,9 +83,14 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
     writer = std::make_unique<CsvHistoryWriter>(histories);  // rows stream while it runs
   }
   JobResult job;
-  {
+  try {
     ProgressLine progress(!quiet);
     job = run_job(config, writer.get(), std::ref(progress));
+  } catch (...) {
+    // No partial histories.csv from a run that failed (it would look like a result).
+    writer.reset();
+    if (!histories.empty()) fs::remove(histories);
+    throw;
   }
   if (writer) writer->close();
   std::optional<UnobstructedResult> free_run;

@@ -462,7 +462,7 @@ int column_of(const YAML::Mark& mark) {
 }  // namespace
 
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
-                       const std::string& base_dir) {
+                       const std::string& base_dir, std::vector<std::string>* used_keys) {
   try {
     const InputNode top = InputNode::tracked(root, source_name);
     top.expect_keys({"building", "neighbours", "ground_motion", "analysis", "output"});
@@ -494,6 +494,7 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
                                  "': give each building its own name (default 'building')");
       names.push_back(name);
     }
+    if (used_keys) *used_keys = top.used_keys();
     top.refuse_unused();
     for (const DefaultUsed& d : top.defaults_used()) model.defaults.emplace_back(d.key, d.value);
     return model;

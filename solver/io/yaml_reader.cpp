@@ -188,6 +188,15 @@ std::vector<DefaultUsed> InputNode::defaults_used() const {
   return ledger_ ? ledger_->defaults : std::vector<DefaultUsed>{};
 }
 
+std::vector<std::string> InputNode::used_keys() const {
+  std::set<std::string> keys;
+  if (ledger_)
+    for (const KeyLedger::Map& m : ledger_->maps)
+      for (const std::string& key : m.used)
+        keys.insert(generic_path(m.path.empty() ? key : m.path + "." + key));
+  return {keys.begin(), keys.end()};
+}
+
 void InputNode::refuse_unused() const {
   if (!ledger_) return;
   struct Unused {

@@ -148,6 +148,8 @@ class InputNode {
   // Records that `key` of this map was absent and `value` is used instead.
   void note_default(std::string_view key, std::string value) const;
   std::vector<DefaultUsed> defaults_used() const;
+  // Every key path looked up so far, list indices dropped ("building.walls.k"), sorted.
+  std::vector<std::string> used_keys() const;
 
   // --- errors ---
   std::string kind() const;  // for messages: "a map", "a list", "an empty value", "'text'"
