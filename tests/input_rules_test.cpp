@@ -104,8 +104,8 @@ TEST(InputRules, NullMeansAbsentAndWallsNeedAGap) {
 
 TEST(InputRules, ImpactStiffnessOfTheOtherFamilyIsRefused) {
   // law: hertz with k used a default k_h (k = 1 and 5000 kN/mm gave identical results).
-  InputError e = error_of(std::string(kBuilding) +
-                          "  walls: {gap: 20 cm, law: hertz, k: 2500 kN/mm}\n");
+  InputError e =
+      error_of(std::string(kBuilding) + "  walls: {gap: 20 cm, law: hertz, k: 2500 kN/mm}\n");
   EXPECT_EQ(e.key(), "building.walls.k_h") << e.what();
   EXPECT_NE(e.detail().find("not 'k'"), std::string::npos) << e.what();
   // The mirror case: kelvin_voigt with k_h.
@@ -116,8 +116,8 @@ TEST(InputRules, ImpactStiffnessOfTheOtherFamilyIsRefused) {
   EXPECT_NE(e.detail().find("not used with"), std::string::npos) << e.what();
   EXPECT_NE(e.detail().find("law: kelvin_voigt"), std::string::npos) << e.what();
   // Hertz with k_h reads k_h in its own unit.
-  const ModelConfig m = load(std::string(kBuilding) +
-                             "  walls: {gap: 20 cm, law: hertz, k_h: 2.5e9 N/m^1.5}\n");
+  const ModelConfig m =
+      load(std::string(kBuilding) + "  walls: {gap: 20 cm, law: hertz, k_h: 2.5e9 N/m^1.5}\n");
   EXPECT_DOUBLE_EQ(m.building.walls.at(0).impact.k_h, 2.5e9);
 }
 
@@ -126,16 +126,15 @@ TEST(InputRules, StrengthRatioAboveOneHasAHint) {
   EXPECT_EQ(e.key(), "building.isolator.QW");
   EXPECT_NE(e.detail().find("did you mean '5 %'?"), std::string::npos) << e.what();
   EXPECT_NE(e.detail().find("500 %"), std::string::npos) << e.what();
-  EXPECT_DOUBLE_EQ(
-      load(std::string(kBuilding) + "  isolator: {model: bilinear, QW: 5 %}\n")
-          .building.isolator.strength_ratio,
-      0.05);
+  EXPECT_DOUBLE_EQ(load(std::string(kBuilding) + "  isolator: {model: bilinear, QW: 5 %}\n")
+                       .building.isolator.strength_ratio,
+                   0.05);
 }
 
 TEST(InputRules, PeerRecordRefusesDtAndUnit) {
   for (const char* key : {"dt: 0.02 s", "unit: cm/s2", "column: 1", "time_column: 0"}) {
-    const InputError e = error_of(std::string(kBuilding) + "ground_motion: {record: quake.AT2, " +
-                                  key + "}\n");
+    const InputError e =
+        error_of(std::string(kBuilding) + "ground_motion: {record: quake.AT2, " + key + "}\n");
     const std::string name = std::string(key).substr(0, std::string(key).find(':'));
     EXPECT_EQ(e.key(), "ground_motion." + name) << e.what();
     EXPECT_NE(e.detail().find("PEER"), std::string::npos) << e.what();
@@ -144,9 +143,9 @@ TEST(InputRules, PeerRecordRefusesDtAndUnit) {
 
 TEST(InputRules, FixedStepMustDivideTheRecordInterval) {
   // `stepping: fixed, dt: 10 s` ran with 0.005 s while summary.json said 10 s.
-  const ModelConfig m =
-      load(std::string(kBuilding) + "analysis: {stepping: fixed, dt: 10 s}\n"
-                                    "ground_motion: {pulse: {dt: 0.005 s, duration: 2 s}}\n");
+  const ModelConfig m = load(std::string(kBuilding) +
+                             "analysis: {stepping: fixed, dt: 10 s}\n"
+                             "ground_motion: {pulse: {dt: 0.005 s, duration: 2 s}}\n");
   const GroundMotion motion = load_ground_motion(m.ground_motion);
   try {
     check_step_against_record(m.analysis, motion);
@@ -215,10 +214,10 @@ std::vector<Choice> choices() {
     out.push_back({"building.walls", std::string(kBuilding) + "  walls: " + wall + "@}\n"});
   }
   for (const char* model : {"linear", "bilinear", "bouc_wen"})
-    out.push_back({"building.isolator", std::string(kBuilding) + "  isolator: {model: " + model +
-                                            "@}\n"});
-  out.push_back({"ground_motion",
-                 std::string(kBuilding) + "ground_motion: {record: quake.AT2@}\n"});
+    out.push_back(
+        {"building.isolator", std::string(kBuilding) + "  isolator: {model: " + model + "@}\n"});
+  out.push_back(
+      {"ground_motion", std::string(kBuilding) + "ground_motion: {record: quake.AT2@}\n"});
   out.push_back({"ground_motion", std::string(kBuilding) +
                                       "ground_motion: {record: quake.txt, format: columns, "
                                       "column: 1, dt: 0.01 s, unit: cm/s2@}\n"});
@@ -247,7 +246,8 @@ std::map<std::string, std::set<std::string>> keys_by_section() {
     if (dup != std::string::npos) text.erase(dup, std::string(", dt: 0.005 s").size());
     load(text, &used);
     for (const std::string& key : used)
-      if (key.starts_with(c.section + ".") && key.find('.', c.section.size() + 1) == std::string::npos)
+      if (key.starts_with(c.section + ".") &&
+          key.find('.', c.section.size() + 1) == std::string::npos)
         out[c.section].insert(key.substr(c.section.size() + 1));
   }
   return out;

@@ -158,7 +158,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
                                info.level_dofs.end());
     if (info.has_base) above_base[s] = info.level_dofs;
   }
-  Eigen::VectorXd inertia(n);       // M a_abs
+  Eigen::VectorXd inertia(n);         // M a_abs
   Eigen::VectorXd isolator_force(n);  // the isolator elements' internal forces
   Eigen::VectorXd damping_force(n);   // C v
   std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size());
@@ -268,8 +268,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
     for (std::size_t k = 0; k < options.tracked.size(); ++k) {
       const TrackedCoordinate& c = options.tracked[k];
-      const double x = (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) +
-                       (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0);
+      const double x =
+          (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) + (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0);
       update(res.tracked[k], x, t);
     }
     for (int e = 0; e < n_elements; ++e) {

@@ -27,8 +27,8 @@ class AnalysisError : public std::runtime_error {
 };
 
 struct Peak {
-  double value = 0.0;  // max |x| over time
-  double time = 0.0;   // s, when it occurred
+  double value = 0.0;                          // max |x| over time
+  double time = 0.0;                           // s, when it occurred
   double positive = 0.0, time_positive = 0.0;  // max(x, 0) over time and when
   double negative = 0.0, time_negative = 0.0;  // min(x, 0) over time (<= 0) and when
 };
@@ -90,11 +90,11 @@ struct TrackedCoordinate {
 
 struct AnalysisResult {
   std::vector<Story> stories;
-  std::vector<Peak> displacement;                  // per DOF, relative to the ground, m
-  std::vector<Peak> velocity;                      // per DOF, relative, m/s
-  std::vector<Peak> absolute_acceleration;         // per DOF, m/s^2
-  std::vector<Peak> drift;                         // per story, m
-  std::vector<Peak> drift_ratio;                   // per story
+  std::vector<Peak> displacement;           // per DOF, relative to the ground, m
+  std::vector<Peak> velocity;               // per DOF, relative, m/s
+  std::vector<Peak> absolute_acceleration;  // per DOF, m/s^2
+  std::vector<Peak> drift;                  // per story, m
+  std::vector<Peak> drift_ratio;            // per story
   // Storey shear, N: the force the storey transmits, V = -sum over the levels above it of
   // (M a_abs); positive when it pushes the part above in +x.
   std::vector<Peak> story_shear;  // per story
@@ -103,7 +103,7 @@ struct AnalysisResult {
   // displacement (pulls in -x); without contacts it equals -sum over the levels of M a_abs.
   // Per structure (0 if fixed base).
   std::vector<Peak> base_shear;
-  std::vector<double> final_displacement;  // per DOF at the end of the analysis, m
+  std::vector<double> final_displacement;          // per DOF at the end of the analysis, m
   std::vector<std::vector<Peak>> element_outputs;  // per element, per output
   std::vector<Peak> tracked;                       // per RunOptions::tracked
   EnergyBalance energy;

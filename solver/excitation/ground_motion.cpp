@@ -34,9 +34,9 @@ std::string fmt(double x) {
   return os.str();
 }
 
-constexpr std::size_t kMaxLineBytes = 1 << 20;          // no record line is a megabyte long
-constexpr std::uintmax_t kMaxFileBytes = 4ull << 30;     // 4 GiB: 1e8 samples of ~40 characters
-constexpr std::size_t kMaxPeerHeaderLines = 10000;       // format: peer looks this far for NPTS
+constexpr std::size_t kMaxLineBytes = 1 << 20;        // no record line is a megabyte long
+constexpr std::uintmax_t kMaxFileBytes = 4ull << 30;  // 4 GiB: 1e8 samples of ~40 characters
+constexpr std::size_t kMaxPeerHeaderLines = 10000;    // format: peer looks this far for NPTS
 
 // A record file read line by line (without '\n' or "\r\n"), so memory holds the samples and
 // not the text. A file that never ends (/dev/zero), a line longer than 1 MiB or more than 4 GiB
@@ -455,9 +455,9 @@ GroundMotion read_columns(const std::string& path, const std::vector<std::string
       } else if (accel.size() == 2) {
         first_step = t - previous_time;
         if (!(first_step > 0.0))
-          throw RecordError(path, line_no,
-                            "time does not increase (step " + fmt(first_step) +
-                                " s); dt must be > 0");
+          throw RecordError(
+              path, line_no,
+              "time does not increase (step " + fmt(first_step) + " s); dt must be > 0");
       } else {
         const double step = t - previous_time;
         if (!(std::abs(step - first_step) <= 1e-6 * first_step))

@@ -71,11 +71,10 @@ IsolatorConfig read_isolator(const InputNode& node) {
   node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
                     "carried_mass"});
   IsolatorConfig iso;
-  node.read_choice<Model>("model",
-                          {{"linear", Model::kLinear},
-                           {"bilinear", Model::kBilinear},
-                           {"bouc_wen", Model::kBoucWen}},
-                          iso.model);
+  node.read_choice<Model>(
+      "model",
+      {{"linear", Model::kLinear}, {"bilinear", Model::kBilinear}, {"bouc_wen", Model::kBoucWen}},
+      iso.model);
   node.read_quantity("Tb", dim::kTime, Bound::kPositive, iso.period);
   node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
   if (iso.model == Model::kLinear) return iso;  // K_post only: no strength, no yield
@@ -144,8 +143,8 @@ void read_damping(const InputNode& building, BuildingConfig& b) {
     superstructure = damping->find("superstructure");
   }
   if (b.isolated && !(damping && damping->has("isolation")))
-    (damping ? *damping : building).note_default(damping ? "isolation" : "damping.isolation",
-                                                  "0.05");
+    (damping ? *damping : building)
+        .note_default(damping ? "isolation" : "damping.isolation", "0.05");
   if (!superstructure)
     (damping ? *damping : building)
         .note_default(damping ? "superstructure" : "damping.superstructure",
@@ -227,7 +226,8 @@ ImpactLawUses read_impact(const InputNode& node, ImpactLawConfig& c) {
     }
   }
   if (uses.n) node.read_number("n", Bound::kPositive, c.n);
-  if (uses.k) c.k = stiffness("k", "k_h", "linear-type").quantity(dim::kStiffness, Bound::kPositive);
+  if (uses.k)
+    c.k = stiffness("k", "k_h", "linear-type").quantity(dim::kStiffness, Bound::kPositive);
   if (uses.k_h) {
     // k_h is in N/m^n: its dimension follows the exponent (n = 1.5 for Jankowski's law).
     const double n_h = c.law == "jankowski" ? 1.5 : c.n;
@@ -271,7 +271,8 @@ WallConfig read_wall(const InputNode& node) {
   if (w.stiffness > 0) node.read_number("damping", Bound::kFraction, w.damping_ratio);
   const ImpactLawUses uses = read_impact(node, w.impact);
   // A rigid wall's mass enters only the impact damping of the laws that use m_eff.
-  if (w.stiffness > 0 || uses.mass) node.read_quantity("mass", dim::kMass, Bound::kPositive, w.mass);
+  if (w.stiffness > 0 || uses.mass)
+    node.read_quantity("mass", dim::kMass, Bound::kPositive, w.mass);
   return w;
 }
 
@@ -411,11 +412,12 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
   // A column file says nothing about its unit: a wrong guess scales everything by 100 or 9.81.
   if (known || written(node.yaml(), "unit")) {
     const InputNode unit = node.required("unit");
-    read.unit = unit.choice<AccelerationUnit>({{"g", AccelerationUnit::kG},
-                                               {"m/s2", AccelerationUnit::kMetrePerSecond2},
-                                               {"m/s^2", AccelerationUnit::kMetrePerSecond2},
-                                               {"cm/s2", AccelerationUnit::kCentimetrePerSecond2},
-                                               {"cm/s^2", AccelerationUnit::kCentimetrePerSecond2}});
+    read.unit =
+        unit.choice<AccelerationUnit>({{"g", AccelerationUnit::kG},
+                                       {"m/s2", AccelerationUnit::kMetrePerSecond2},
+                                       {"m/s^2", AccelerationUnit::kMetrePerSecond2},
+                                       {"cm/s2", AccelerationUnit::kCentimetrePerSecond2},
+                                       {"cm/s^2", AccelerationUnit::kCentimetrePerSecond2}});
   }
   return g;
 }
@@ -425,9 +427,8 @@ AnalysisConfig read_analysis(const InputNode& node) {
   node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings",
                     "newton_tolerance", "max_iterations", "steps_per_contact", "locate_events"});
   AnalysisConfig a;
-  node.read_choice<Stepping>("stepping",
-                             {{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}},
-                             a.stepping);
+  node.read_choice<Stepping>(
+      "stepping", {{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}}, a.stepping);
   if (a.stepping == Stepping::kFixed) {
     a.dt = node.required("dt").quantity(dim::kTime, Bound::kPositive);
   } else {
@@ -476,7 +477,8 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
     if (const auto n = top.find("ground_motion"))
       model.ground_motion = read_ground_motion(*n, base_dir);
     else
-      top.note_default("ground_motion", "the built-in near-fault pulse (amplitude 1 m/s, period 2 s)");
+      top.note_default("ground_motion",
+                       "the built-in near-fault pulse (amplitude 1 m/s, period 2 s)");
     // An absent section reads as an empty one: its defaults are noted like any other.
     const auto section = [&](const char* key) {
       if (const auto n = top.find(key)) return *n;
@@ -489,9 +491,11 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
     for (std::size_t i = 0; i < model.neighbours.size(); ++i) {
       const std::string& name = model.neighbours[i].building.name;
       if (std::find(names.begin(), names.end(), name) != names.end())
-        top.find("neighbours")->elements()[i].fail_at_key(
-            "building.name", "duplicate structure name '" + name +
-                                 "': give each building its own name (default 'building')");
+        top.find("neighbours")
+            ->elements()[i]
+            .fail_at_key("building.name",
+                         "duplicate structure name '" + name +
+                             "': give each building its own name (default 'building')");
       names.push_back(name);
     }
     if (used_keys) *used_keys = top.used_keys();

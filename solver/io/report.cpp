@@ -34,9 +34,12 @@ const char* isolator_name(IsolatorConfig::Model m) {
 // Every peak in summary.json has this one shape: |x| max with its time, and the largest positive
 // and negative values with theirs, all in `unit` (SI).
 nlohmann::json peak(const Peak& p, const char* unit) {
-  return {{"value", p.value},       {"unit", unit},
-          {"time_s", p.time},       {"positive", p.positive},
-          {"positive_time_s", p.time_positive}, {"negative", p.negative},
+  return {{"value", p.value},
+          {"unit", unit},
+          {"time_s", p.time},
+          {"positive", p.positive},
+          {"positive_time_s", p.time_positive},
+          {"negative", p.negative},
           {"negative_time_s", p.time_negative}};
 }
 
@@ -111,12 +114,13 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     json levels = json::array();
     for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
       const int d = s.level_dofs[k];
-      levels.push_back({{"label", model.dofs[d].label},
-                        {"displacement", peak(r.displacement[d], "m")},
-                        {"velocity", peak(r.velocity[d], "m/s")},
-                        {"absolute_acceleration", peak(r.absolute_acceleration[d], "m/s2")},
-                        {"absolute_acceleration_peak_g", r.absolute_acceleration[d].value / kGravity},
-                        {"residual_displacement_m", r.final_displacement[d]}});
+      levels.push_back(
+          {{"label", model.dofs[d].label},
+           {"displacement", peak(r.displacement[d], "m")},
+           {"velocity", peak(r.velocity[d], "m/s")},
+           {"absolute_acceleration", peak(r.absolute_acceleration[d], "m/s2")},
+           {"absolute_acceleration_peak_g", r.absolute_acceleration[d].value / kGravity},
+           {"residual_displacement_m", r.final_displacement[d]}});
     }
     js["levels"] = levels;
     const double weight = structure_weight(model, s);
@@ -132,13 +136,13 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     const std::size_t count = s.story_heights.size();
     for (std::size_t k = 0; k < count; ++k, ++story_index) {
       const Story& st = r.stories[story_index];
-      stories.push_back({{"label", st.label},
-                         {"height_m", st.height},
-                         {"drift", peak(r.drift[story_index], "m")},
-                         {"drift_ratio", peak(r.drift_ratio[story_index], "-")},
-                         {"shear", peak(r.story_shear[story_index], "N")},
-                         {"shear_coefficient",
-                          weight > 0 ? r.story_shear[story_index].value / weight : 0.0}});
+      stories.push_back(
+          {{"label", st.label},
+           {"height_m", st.height},
+           {"drift", peak(r.drift[story_index], "m")},
+           {"drift_ratio", peak(r.drift_ratio[story_index], "-")},
+           {"shear", peak(r.story_shear[story_index], "N")},
+           {"shear_coefficient", weight > 0 ? r.story_shear[story_index].value / weight : 0.0}});
     }
     js["stories"] = stories;
     structures.push_back(js);
@@ -295,12 +299,12 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
     out << "Defaults used (keys not in the file):\n";
     for (const auto& [key, value] : config.defaults) out << "  " << key << " = " << value << '\n';
   }
-  std::snprintf(line, sizeof line,
-                "Analysis: %s stepping, interval %.4g s (record %.4g s / %d), output every %.4g s\n",
-                stepping_name(config.analysis.stepping), r.stats.interval, job.motion.dt,
-                r.stats.interval > 0 ? static_cast<int>(std::lround(job.motion.dt / r.stats.interval))
-                                     : 0,
-                config.output.interval > 0 ? config.output.interval : job.motion.dt);
+  std::snprintf(
+      line, sizeof line,
+      "Analysis: %s stepping, interval %.4g s (record %.4g s / %d), output every %.4g s\n",
+      stepping_name(config.analysis.stepping), r.stats.interval, job.motion.dt,
+      r.stats.interval > 0 ? static_cast<int>(std::lround(job.motion.dt / r.stats.interval)) : 0,
+      config.output.interval > 0 ? config.output.interval : job.motion.dt);
   out << line;
   std::size_t story_index = 0;
   for (std::size_t si = 0; si < model.structures.size(); ++si) {
@@ -373,20 +377,20 @@ void print_unobstructed(std::ostream& out, const ModelConfig& config, const JobR
   char line[256];
   out << "Without walls and neighbour contacts (amplification = with / without):\n";
   for (const int d : s.level_dofs) {
-    std::snprintf(line, sizeof line,
-                  "  %-22s displacement %8.2f cm (x%.2f)   abs. acceleration %6.3f g (x%.2f)\n",
-                  model.dofs[d].label.c_str(), 100 * u.displacement[d].value,
-                  u.displacement[d].value > 0 ? r.displacement[d].value / u.displacement[d].value
-                                              : 0.0,
-                  u.absolute_acceleration[d].value / kGravity,
-                  u.absolute_acceleration[d].value > 0
-                      ? r.absolute_acceleration[d].value / u.absolute_acceleration[d].value
-                      : 0.0);
+    std::snprintf(
+        line, sizeof line,
+        "  %-22s displacement %8.2f cm (x%.2f)   abs. acceleration %6.3f g (x%.2f)\n",
+        model.dofs[d].label.c_str(), 100 * u.displacement[d].value,
+        u.displacement[d].value > 0 ? r.displacement[d].value / u.displacement[d].value : 0.0,
+        u.absolute_acceleration[d].value / kGravity,
+        u.absolute_acceleration[d].value > 0
+            ? r.absolute_acceleration[d].value / u.absolute_acceleration[d].value
+            : 0.0);
     out << line;
   }
   for (std::size_t k = 0; k < s.story_heights.size(); ++k) {
-    std::snprintf(line, sizeof line, "  %-22s drift %8.3f cm (x%.2f)\n",
-                  r.stories[k].label.c_str(), 100 * u.drift[k].value,
+    std::snprintf(line, sizeof line, "  %-22s drift %8.3f cm (x%.2f)\n", r.stories[k].label.c_str(),
+                  100 * u.drift[k].value,
                   u.drift[k].value > 0 ? r.drift[k].value / u.drift[k].value : 0.0);
     out << line;
   }

@@ -11,8 +11,8 @@
 #include <iterator>
 #include <limits>
 #include <mutex>
-#include <sstream>
 #include <set>
+#include <sstream>
 
 namespace isopound {
 namespace {
@@ -97,8 +97,8 @@ std::string format_si(double value, const Dimension& d) {
   os.precision(6);
   os << value;
   static const std::pair<Dimension, const char*> kUnits[] = {
-      {dim::kLength, "m"},     {dim::kMass, "kg"},           {dim::kTime, "s"},
-      {dim::kVelocity, "m/s"}, {dim::kAcceleration, "m/s2"}, {dim::kForce, "N"},
+      {dim::kLength, "m"},      {dim::kMass, "kg"},           {dim::kTime, "s"},
+      {dim::kVelocity, "m/s"},  {dim::kAcceleration, "m/s2"}, {dim::kForce, "N"},
       {dim::kStiffness, "N/m"}, {dim::kDamping, "N s/m"}};
   if (d == dim::kNone) return os.str();
   for (const auto& [dimension, unit] : kUnits)

@@ -125,8 +125,8 @@ class InputNode {
   // --- optional keys of this map: each sets `out` only when `key` is present; when it is
   // absent, a tracked read records `out` as the default used (note_default) ---
   template <typename T>
-  void read_choice(std::string_view key, std::initializer_list<std::pair<std::string_view, T>> options,
-                   T& out) const {
+  void read_choice(std::string_view key,
+                   std::initializer_list<std::pair<std::string_view, T>> options, T& out) const {
     if (const auto child = find(key)) {
       out = child->choice<T>(options);
       return;
@@ -174,7 +174,7 @@ class InputNode {
   std::string path_;
   YAML::Mark
       key_mark_;  // where the key naming this node is written; null for the root and list items
-  YAML::Mark parent_mark_;  // the parent's best known position, the fallback
+  YAML::Mark parent_mark_;             // the parent's best known position, the fallback
   std::shared_ptr<KeyLedger> ledger_;  // null: an untracked read (study files)
 };
 

@@ -63,8 +63,8 @@ UnobstructedResult run_unobstructed(const ModelConfig& config, const JobResult& 
     const auto* contact = dynamic_cast<const Contact1D*>(element.get());
     if (!contact) continue;
     const ContactBody a = contact->body_a(), b = contact->body_b();
-    options.tracked.push_back({dof_in_free(a.dof), a.coefficient, dof_in_free(b.dof),
-                               b.coefficient});
+    options.tracked.push_back(
+        {dof_in_free(a.dof), a.coefficient, dof_in_free(b.dof), b.coefficient});
     out.gaps.push_back({contact->label(), contact->gap(), 0.0});
   }
   out.job.analysis = run_analysis(out.job.model, out.job.motion, options);

@@ -445,8 +445,8 @@ int run_sweep(const std::string& study_path, const SweepOptions& options,
     std::fprintf(stderr,
                  "isopound sweep: error: %lld of %lld runs failed; their messages are in the "
                  "'error' column of the runs table of %s (isopound export %s --table runs)\n",
-                 static_cast<long long>(writer.failed()),
-                 static_cast<long long>(writer.finished()), db_path.c_str(), db_path.c_str());
+                 static_cast<long long>(writer.failed()), static_cast<long long>(writer.finished()),
+                 db_path.c_str(), db_path.c_str());
     return 1;
   }
   return 0;
