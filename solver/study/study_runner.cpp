@@ -143,8 +143,8 @@ class Writer {
 // refused. The kernel drops the lock when the process dies, however it dies.
 class DatabaseLock {
  public:
-  explicit DatabaseLock(const std::string& db_path) {
-    const std::string path = db_path + ".lock";
+  explicit DatabaseLock(const std::string& db_path) : path_(db_path + ".lock") {
+    const std::string& path = path_;
     fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
     if (fd_ < 0)
       throw InputError(path, 0, 0, "", "cannot create the lock file beside the database");
@@ -153,11 +153,17 @@ class DatabaseLock {
       throw InputError(db_path, 0, 0, "", "another isopound sweep is writing this database");
     }
   }
-  ~DatabaseLock() { ::close(fd_); }
+  // A clean finish leaves no lock file (removed while still held); a killed sweep leaves it,
+  // unlocked, and the next sweep takes it over.
+  ~DatabaseLock() {
+    ::unlink(path_.c_str());
+    ::close(fd_);
+  }
   DatabaseLock(const DatabaseLock&) = delete;
   DatabaseLock& operator=(const DatabaseLock&) = delete;
 
  private:
+  std::string path_;
   int fd_ = -1;
 };
 
