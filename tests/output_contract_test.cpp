@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "solver/core/constants.h"
 #include "solver/io/model_input.h"
 #include "solver/structures/job.h"
+#include "solver/study/study_outputs.h"
 #include "tests/test_support.h"
 
 namespace isopound {
@@ -128,6 +130,21 @@ TEST(OutputShear, BaseShearIsIsolatorPlusDampingAndStoreyShearIsInertiaAbove) {
   EXPECT_GT(base.positive, 0.0);
   EXPECT_LT(base.negative, 0.0);
   EXPECT_DOUBLE_EQ(base.value, std::max(base.positive, -base.negative));
+}
+
+// Studies see the same numbers: storey shear and residual isolator displacement selectors.
+TEST(OutputShear, StudySelectorsForShearAndResidual) {
+  const JobResult job = run_job(load(kThreeStorey));
+  const auto value = [&](const char* text) {
+    return evaluate_output(resolve_output(parse_output_selector(text), job.model), job.analysis,
+                           job.motion_peaks);
+  };
+  EXPECT_DOUBLE_EQ(value("story1.shear"), job.analysis.story_shear[0].value);
+  EXPECT_DOUBLE_EQ(value("stories.shear"),
+                   std::max({job.analysis.story_shear[0].value, job.analysis.story_shear[1].value,
+                             job.analysis.story_shear[2].value}));
+  EXPECT_DOUBLE_EQ(value("base.residual_displacement"),
+                   std::abs(job.analysis.final_displacement[0]));
 }
 
 // Walls at floor 3: each wall's critical gap is the floor's own peak towards it in the run without

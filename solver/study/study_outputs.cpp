@@ -6,14 +6,15 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <stdexcept>
 
 namespace isopound {
 namespace {
 
 constexpr std::string_view kLevelQuantities[] = {"displacement", "velocity",
-                                                 "absolute_acceleration"};
-constexpr std::string_view kStoryQuantities[] = {"drift", "drift_ratio"};
+                                                 "absolute_acceleration", "residual_displacement"};
+constexpr std::string_view kStoryQuantities[] = {"drift", "drift_ratio", "shear"};
 constexpr std::string_view kEnergyTerms[] = {"input",          "kinetic",           "elastic",
                                              "viscous",        "hysteretic",        "error",
                                              "relative_error", "max_relative_error"};
@@ -203,12 +204,18 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
     }
     case OutputSelector::Kind::kLevel:
     case OutputSelector::Kind::kStory: {
+      double value = 0.0;
+      if (r.kind == OutputSelector::Kind::kLevel && r.quantity == 3) {  // |u| at the end
+        for (const int i : r.indices)
+          value = std::max(value, std::abs(result.final_displacement[i]));
+        return value;
+      }
       const std::vector<Peak>* families[] = {&result.displacement, &result.velocity,
                                              &result.absolute_acceleration};
-      const std::vector<Peak>* stories[] = {&result.drift, &result.drift_ratio};
+      const std::vector<Peak>* stories[] = {&result.drift, &result.drift_ratio,
+                                            &result.story_shear};
       const std::vector<Peak>& peaks =
           r.kind == OutputSelector::Kind::kLevel ? *families[r.quantity] : *stories[r.quantity];
-      double value = 0.0;
       for (const int i : r.indices) value = std::max(value, peaks[i].value);
       return value;
     }

@@ -1,9 +1,11 @@
 // Peaks a study keeps per run, addressed by selectors "<where>.<quantity>" over the main building
 // (structure 0) and all elements. Values are SI peaks of |x| over time; a group gives its maximum.
 //
-//   base | roof | floor<N> | floors | levels  .  displacement | velocity | absolute_acceleration
+//   base | roof | floor<N> | floors | levels  .  displacement | velocity | absolute_acceleration |
+//       residual_displacement (|u| at the end; base.residual_displacement: the isolators')
 //       (floors: max over floors 1..N; levels: also the base slab)
-//   story<N> | stories  .  drift | drift_ratio
+//   story<N> | stories  .  drift | drift_ratio | shear (N; story1.shear = base of the
+//       superstructure)
 //   energy  .  input | kinetic | elastic | viscous | hysteretic | error | relative_error |
 //   max_relative_error ground  .  pga | pgv | pgd <element>  .  <output>   element label after its
 //   last '/' or the full label, '*' and '?'
