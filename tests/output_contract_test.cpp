@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -263,6 +264,28 @@ TEST(ExitCodes, SweepWithFailedRunsIsNotASuccess) {
   EXPECT_NE(c.exit_code, 0) << c.output;
   EXPECT_NE(c.output.find("2 of 2 runs failed"), std::string::npos) << c.output;
   EXPECT_NE(c.output.find("error"), std::string::npos) << c.output;
+  fs::remove_all(dir);
+}
+
+// Study tables say their units: units.csv from the export and a units table in the database.
+TEST(StudyUnits, EveryColumnOfTheTablesHasAUnit) {
+  const fs::path dir = scratch("units");
+  std::ofstream(dir / "s.yaml")
+      << "name: units\nmodel: " + (test::source_dir() / "configs" / "tutorial.yaml").string() +
+             "\nset:\n  ground_motion.pulse: {duration: 2 s, dt: 0.01 s}\n"
+             "axes:\n  - {path: building.isolator.uy, values: [1 cm, "
+             "2 cm]}\noutputs: {u: base.displacement, V1: story1.shear, "
+             "zeta: isolator.z, ratio: story1.drift_ratio}\n";
+  const test::CommandResult c =
+      test::run_isopound("sweep -q -j 1 '" + (dir / "s.yaml").string() + "' --db '" +
+                         (dir / "s.db").string() + "' --export '" + (dir / "csv").string() + "'");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  std::ifstream in(dir / "csv" / "units.csv");
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const char* row : {"runs,uy,SI", "runs,u,m", "runs,V1,N", "runs,zeta,-", "runs,ratio,-"})
+    EXPECT_NE(text.str().find(row), std::string::npos) << row << " in\n" << text.str();
+  EXPECT_FALSE(fs::exists(dir / "s.db.lock"));  // a clean finish leaves no lock file
   fs::remove_all(dir);
 }
 

@@ -103,6 +103,33 @@ OutputSelector parse_output_selector(std::string_view text) {
   return s;
 }
 
+std::string output_unit(const OutputSelector& s) {
+  static const std::pair<std::string_view, const char*> kUnits[] = {
+      {"displacement", "m"},
+      {"velocity", "m/s"},
+      {"absolute_acceleration", "m/s2"},
+      {"residual_displacement", "m"},
+      {"drift", "m"},
+      {"drift_ratio", "-"},
+      {"shear", "N"},
+      {"pga", "m/s2"},
+      {"pgv", "m/s"},
+      {"pgd", "m"},
+      {"force", "N"},
+      {"deformation", "m"},
+      {"z", "-"},
+      {"penetration", "m"},
+      {"impacts", "-"},
+      {"impact_velocity", "m/s"},
+      {"indentation", "m"},
+      {"dissipated_energy", "J"}};
+  if (s.kind == OutputSelector::Kind::kEnergy)
+    return s.quantity == "relative_error" || s.quantity == "max_relative_error" ? "-" : "J";
+  for (const auto& [name, unit] : kUnits)
+    if (name == s.quantity) return unit;
+  return "SI";
+}
+
 ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
   ResolvedOutput r;
   r.kind = s.kind;

@@ -36,6 +36,9 @@ struct OutputSelector {
 // Checks the grammar above. Throws std::invalid_argument naming the problem.
 OutputSelector parse_output_selector(std::string_view text);
 
+// The SI unit of a selector's value ("m", "m/s2", "N", "J", "-" for ratios and counts).
+std::string output_unit(const OutputSelector& selector);
+
 // A selector bound to the DOFs, stories or element outputs of one model.
 struct ResolvedOutput {
   OutputSelector::Kind kind = OutputSelector::Kind::kLevel;
