@@ -2,9 +2,13 @@
 // compute the overlap of convex polygons (geometry overlap).
 // Errors are printed as "file:line:col: key: what" and give a non-zero exit code.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 #include "geometry/overlap.h"
 #include "solver/core/modes.h"
@@ -36,27 +40,69 @@ ModelConfig demo_config() {
   return c;
 }
 
+// A progress line on stderr for runs longer than a few seconds (rewritten in place).
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool enabled) : enabled_(enabled), start_(Clock::now()) {}
+  ~ProgressLine() {
+    if (shown_) std::fputc('\n', stderr);
+  }
+  void operator()(double t, double total) {
+    if (!enabled_) return;
+    const auto now = Clock::now();
+    if (now - start_ < std::chrono::seconds(3) || now - last_ < std::chrono::milliseconds(500))
+      return;
+    last_ = now;
+    shown_ = true;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double left = t > 0 ? elapsed * (total - t) / t : 0.0;
+    std::fprintf(stderr, "\r  analysed %.1f of %.1f s (%.0f %%), about %.0f s left   ", t, total,
+                 100 * t / total, left);
+    std::fflush(stderr);
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool enabled_;
+  bool shown_ = false;
+  Clock::time_point start_, last_{};
+};
+
+void create_output_directory(const std::string& out_dir) {
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || !fs::is_directory(out_dir))
+    throw std::runtime_error("cannot create the output directory '" + out_dir +
+                             "': " + (ec ? ec.message() : "a file of that name exists"));
+}
+
 int run_and_write(const ModelConfig& config, const std::string& out_dir, bool quiet,
                   bool compare_unobstructed = false) {
-  const JobResult job = run_job(config);
-  JobResult free_job;
-  if (compare_unobstructed) {
-    ModelConfig free_config = config;
-    free_config.building.walls.clear();
-    free_config.neighbours.clear();
-    free_config.output.histories = false;
-    free_job = run_job(free_config);
-  }
-  fs::create_directories(out_dir);
+  create_output_directory(out_dir);
   const std::string summary = (fs::path(out_dir) / "summary.json").string();
-  write_summary(summary, config, job, compare_unobstructed ? &free_job : nullptr);
   std::string histories;
+  std::unique_ptr<CsvHistoryWriter> writer;
   if (config.output.histories) {
     histories = (fs::path(out_dir) / "histories.csv").string();
-    write_histories(histories, job.analysis.history);
+    writer = std::make_unique<CsvHistoryWriter>(histories);  // rows stream while it runs
   }
+  JobResult job;
+  try {
+    ProgressLine progress(!quiet);
+    job = run_job(config, writer.get(), std::ref(progress));
+  } catch (...) {
+    // No partial histories.csv from a run that failed (it would look like a result).
+    writer.reset();
+    if (!histories.empty()) fs::remove(histories);
+    throw;
+  }
+  if (writer) writer->close();
+  std::optional<UnobstructedResult> free_run;
+  if (compare_unobstructed) free_run = run_unobstructed(config, job);
+  write_summary(summary, config, job, free_run ? &*free_run : nullptr);
   if (!quiet) {
     print_summary(std::cout, config, job);
+    if (free_run) print_unobstructed(std::cout, config, job, *free_run);
     std::cout << "Wrote " << summary;
     if (!histories.empty()) std::cout << " and " << histories;
     std::cout << '\n';
@@ -64,8 +110,8 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
   return kOk;
 }
 
-void print_modes(const ModelConfig& config) {
-  const BuildingConfig& b = config.building;
+void print_building_modes(const BuildingConfig& b) {
+  std::printf("Structure '%s'\n", b.name.c_str());
   const auto show = [](const char* title, const Modes& m, const std::vector<std::string>& labels) {
     std::printf("%s\n  mode  period [s]  eff. mass [%%]  shape (%s ... %s, max = 1)\n", title,
                 labels.front().c_str(), labels.back().c_str());
@@ -116,11 +162,27 @@ int print_overlaps(const std::string& path, bool exact) {
   return kOk;
 }
 
+void print_modes(const ModelConfig& config) {
+  print_building_modes(config.building);
+  for (const NeighbourConfig& n : config.neighbours) {
+    std::printf("\n");
+    print_building_modes(n.building);
+  }
+}
+
+void print_defaults(const ModelConfig& config) {
+  if (config.defaults.empty()) return;
+  std::printf("Defaults used (keys not in the file):\n");
+  for (const auto& [key, value] : config.defaults)
+    std::printf("  %s = %s\n", key.c_str(), value.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"isopound: nonlinear time-history analysis of base-isolated buildings"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("isopound ") + kIsopoundVersion);
   std::string model_path, record_path, out_dir = "isopound-out";
   bool quiet = false, no_histories = false, compare_unobstructed = false;
 
@@ -136,12 +198,16 @@ int main(int argc, char** argv) {
   CLI::App* demo = app.add_subcommand(
       "demo", "3-storey Bouc-Wen isolated building under the built-in near-fault pulse");
   demo->add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
+  demo->add_flag("-q,--quiet", quiet, "Print nothing on success");
 
-  CLI::App* modes = app.add_subcommand("modes", "Periods and mode shapes of a model");
+  CLI::App* modes =
+      app.add_subcommand("modes", "Periods and mode shapes of every structure of a model");
   modes->add_option("model", model_path, "Model file (YAML)")->required();
+  modes->add_flag("-q,--quiet", quiet, "Check the model, print nothing");
 
   CLI::App* check = app.add_subcommand("check", "Read and validate a model, run nothing");
   check->add_option("model", model_path, "Model file (YAML)")->required();
+  check->add_flag("-q,--quiet", quiet, "Print nothing when the model is valid");
 
   CLI::App* geometry = app.add_subcommand("geometry", "Geometry of convex polygons in plan");
   geometry->require_subcommand(1);
@@ -156,12 +222,18 @@ int main(int argc, char** argv) {
 
   const StudyCommands study_commands = add_study_commands(app);  // study commands (sweep, export)
 
-  CLI11_PARSE(app, argc, argv);
+  // Usage errors are bad input (exit 2) like any other; --help and --version exit 0.
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kBadInput;
+  }
   if (const auto code = run_study_command(study_commands))
     return *code;  // study commands (sweep, export)
 
   try {
-    if (*demo) return run_and_write(demo_config(), out_dir, false);
+    if (*demo) return run_and_write(demo_config(), out_dir, quiet);
     if (*overlap) return print_overlaps(pairs_path, exact);
     ModelConfig config = load_model_file(model_path);
     if (!record_path.empty()) {
@@ -171,21 +243,29 @@ int main(int argc, char** argv) {
     if (no_histories) config.output.histories = false;
     if (*run) return run_and_write(config, out_dir, quiet, compare_unobstructed);
     if (*modes) {
-      print_modes(config);
+      if (!quiet) print_modes(config);
       return kOk;
     }
     if (*check) {
+      if (!quiet) std::printf("%s: reading the ground motion...\n", model_path.c_str());
       const GroundMotion motion = load_ground_motion(config.ground_motion);
+      check_step_against_record(config.analysis, motion);
       Model model = build_model(config);
-      std::printf("%s: ok (%d DOFs, %zu ground-motion samples at %g s)\n", model_path.c_str(),
-                  model.size(), motion.acceleration.size(), motion.dt);
+      if (!quiet) {
+        std::printf("%s: ok (%d DOFs, %zu ground-motion samples at %g s)\n", model_path.c_str(),
+                    model.size(), motion.acceleration.size(), motion.dt);
+        print_defaults(config);
+      }
       return kOk;
     }
   } catch (const InputError& e) {
     std::cerr << "isopound: error: " << e.what() << '\n';
     return kBadInput;
   } catch (const RecordError& e) {
-    std::cerr << "isopound: error: " << e.what() << '\n';
+    // Name what pointed at the file: the model key or the command-line option.
+    std::cerr << "isopound: error: " << e.what() << " (the record given by "
+              << (record_path.empty() ? model_path + ": ground_motion.record" : "--record")
+              << ")\n";
     return kBadInput;
   } catch (const AnalysisError& e) {
     std::cerr << "isopound: error: " << e.what() << '\n';

@@ -61,8 +61,9 @@ TEST(FrictionPendulumInput, BadInputNamesTheKey) {
                "building.isolator.R", "");
   expect_error("{model: friction_pendulum, R: 2 s, mu_slow: 0.04, mu_fast: 0.04}",
                "building.isolator.R", "");
-  expect_error("{model: bouc_wen, R: 2 m}", "building.isolator.R",
-               "only for model: friction_pendulum");
+  expect_error("{model: bouc_wen, R: 2 m}", "building.isolator.R", "not used with model: bouc_wen");
+  expect_error("{model: friction_pendulum, R: 2 m, mu_slow: 0.04, mu_fast: 0.04, Tb: 2 s}",
+               "building.isolator.Tb", "not used with model: friction_pendulum");
   expect_error(
       "{model: friction_pendulum, R: 2 m, mu_slow: 0.04, mu_fast: 0.04, friction_hysteresis: x}",
       "building.isolator.friction_hysteresis", "");

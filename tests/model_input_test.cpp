@@ -45,7 +45,7 @@ building:
     - {mass: 340 t, stiffness: 550 MN/m, height: 3.0 m}
     - {mass: 250 t, stiffness: 500000 kN/m, height: 320 cm}
   isolator:
-    model: bilinear
+    model: bouc_wen
     Tb: 2.5 s
     QW: 10 %
     uy: 2.5 cm
@@ -67,8 +67,8 @@ ground_motion:
   scale: 1.5
   extra_time: 5 s
 analysis:
-  stepping: fixed
-  dt: 1 ms
+  stepping: adaptive
+  dt: 0 s
   steps_per_period: 40
   tolerance: 1e-4
   max_halvings: 10
@@ -76,7 +76,7 @@ analysis:
   max_iterations: 40
 output:
   interval: 20 ms
-  histories: false
+  histories: true
 )";
 
 TEST(ModelInputValid, FullModelParsesToSI) {
@@ -96,7 +96,7 @@ TEST(ModelInputValid, FullModelParsesToSI) {
   EXPECT_DOUBLE_EQ(b.floors[2].height, 3.2);
 
   const IsolatorConfig& iso = b.isolator;
-  EXPECT_EQ(iso.model, IsolatorConfig::Model::kBilinear);
+  EXPECT_EQ(iso.model, IsolatorConfig::Model::kBoucWen);
   EXPECT_DOUBLE_EQ(iso.period, 2.5);
   EXPECT_DOUBLE_EQ(iso.strength_ratio, 0.10);
   EXPECT_DOUBLE_EQ(iso.yield_displacement, 0.025);
@@ -123,15 +123,15 @@ TEST(ModelInputValid, FullModelParsesToSI) {
   EXPECT_DOUBLE_EQ(g.read.scale, 1.5);
   EXPECT_DOUBLE_EQ(g.extra_time, 5.0);
 
-  EXPECT_EQ(m.analysis.stepping, AnalysisConfig::Stepping::kFixed);
-  EXPECT_DOUBLE_EQ(m.analysis.dt, 1e-3);
+  EXPECT_EQ(m.analysis.stepping, AnalysisConfig::Stepping::kAdaptive);
+  EXPECT_DOUBLE_EQ(m.analysis.dt, 0.0);
   EXPECT_DOUBLE_EQ(m.analysis.steps_per_period, 40.0);
   EXPECT_DOUBLE_EQ(m.analysis.tolerance, 1e-4);
   EXPECT_EQ(m.analysis.max_halvings, 10);
   EXPECT_DOUBLE_EQ(m.analysis.newton_tolerance, 1e-8);
   EXPECT_EQ(m.analysis.max_iterations, 40);
   EXPECT_DOUBLE_EQ(m.output.interval, 0.02);
-  EXPECT_FALSE(m.output.histories);
+  EXPECT_TRUE(m.output.histories);
 }
 
 TEST(ModelInputValid, ShortFloorsFormAndDefaults) {
@@ -207,9 +207,8 @@ building:
   EXPECT_DOUBLE_EQ(load_text(base + "isolator: {QW: 5 %}}").building.isolator.strength_ratio, 0.05);
   EXPECT_DOUBLE_EQ(load_text(base + "isolator: {QW: 0.05}}").building.isolator.strength_ratio,
                    0.05);
-  // A linear isolator needs no strength.
-  EXPECT_DOUBLE_EQ(
-      load_text(base + "isolator: {model: linear, QW: 0}}").building.isolator.strength_ratio, 0.0);
+  // A linear isolator has no strength: QW is not one of its keys.
+  EXPECT_THROW(load_text(base + "isolator: {model: linear, QW: 0}}"), InputError);
 }
 
 TEST(ModelInputValid, RecordPathRelativeToTheModelFile) {
@@ -380,7 +379,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"bad_bool.yaml", 2, "building.isolated", "expected true or false, got 'maybe'"},
         BadModel{"unknown_stepping.yaml", 5, "analysis.stepping",
                  "unknown stepping 'implicit'; allowed: adaptive, fixed"},
-        BadModel{"negative_dt.yaml", 6, "analysis.dt", "must be >= 0 (got '-0.01 s')"},
+        BadModel{"negative_dt.yaml", 6, "analysis.dt", "must be > 0 (got '-0.01 s')"},
         BadModel{"tolerance_zero.yaml", 5, "analysis.tolerance", "must be > 0"},
         BadModel{"max_iterations_zero.yaml", 6, "analysis.max_iterations", "must be >= 1 (got 0)"},
         BadModel{"record_and_pulse.yaml", 6, "ground_motion.pulse", "either 'record' or 'pulse'"},
@@ -388,7 +387,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "unknown unit 'ft/s2'; allowed: g, m/s2"},
         BadModel{"unknown_format.yaml", 6, "ground_motion.format",
                  "unknown format 'csv'; allowed: auto, peer, columns"},
-        BadModel{"columns_without_dt.yaml", 4, "ground_motion.dt", "needs 'dt'"},
+        BadModel{"columns_without_dt.yaml", 4, "ground_motion.dt", "missing required key 'dt'"},
         BadModel{"pulse_gamma.yaml", 7, "ground_motion.pulse.gamma", "must be > 1"},
         BadModel{"record_option_without_record.yaml", 5, "ground_motion.scale",
                  "no 'record' is given"},
@@ -400,7 +399,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "coefficient of restitution must be in (0, 1]"},
         BadModel{"wall_restitution_zero.yaml", 8, "building.walls[0].e", "must be > 0 (got '0')"},
         BadModel{"wall_k_zero.yaml", 8, "building.walls.k", "must be > 0 (got '0 kN/mm')"},
-        BadModel{"wall_k_negative.yaml", 8, "building.walls.k", "must be > 0 (got '-2500 kN/mm')"},
+        BadModel{"wall_k_negative.yaml", 9, "building.walls.k", "must be > 0 (got '-2500 kN/mm')"},
         BadModel{"wall_unknown_law.yaml", 7, "building.walls.law",
                  "unknown law 'kelvin_voight'; allowed: linear, kelvin_voigt"},
         BadModel{"wall_unknown_material.yaml", 8, "building.walls.material",

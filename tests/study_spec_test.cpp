@@ -104,7 +104,7 @@ axes:
     - {path: building.isolator.QW, values: [5 %, 10 %, 7.5 %]}
     - {path: building.isolator.uy, values: [1 cm, 2.5 cm, 2 cm]}
 variants:
-  BL: {building.isolator.model: bilinear}
+  BL: {building.isolator.model: bilinear, building.isolator.n: ~, building.isolator.A: ~, building.isolator.beta: ~, building.isolator.gamma: ~}
   BW: {building.isolator.model: bouc_wen}
 )");
   ASSERT_EQ(s.axes.size(), 4u);
@@ -166,7 +166,7 @@ axes:
   - {path: building.isolator.uy, values: [1 cm, 2.5 cm]}
   - {name: storeys, path: building.floors.count, values: [3, 5]}
 variants:
-  BL: {building.isolator.model: bilinear}
+  BL: {building.isolator.model: bilinear, building.isolator.n: ~, building.isolator.A: ~, building.isolator.beta: ~, building.isolator.gamma: ~}
 )");
   const CaseBuilder builder(s);
   const CaseInput c = builder.input_of(3);  // uy 2.5 cm, 5 storeys
@@ -235,7 +235,7 @@ TEST(StudyErrors, MalformedStudiesNameFileLineAndKeyBeforeAnyRun) {
        "axes:\n  - {path: building.isolator.uy, values: [1 cm]}\nstatistics: {over: [record]}\n",
        "4:21: statistics.over[0]", "no axis named 'record'"},
       {"unknown_ratio_level",
-       "variants: {BL: {building.isolator.model: bilinear}}\nderived: {r: {ratio: [BL, BW]}}\n",
+       "variants: {BL: {building.isolator.model: bilinear, building.isolator.n: ~, building.isolator.A: ~, building.isolator.beta: ~, building.isolator.gamma: ~}}\nderived: {r: {ratio: [BL, BW]}}\n",
        "3:27: derived.r.ratio[1]", "no level 'BW'"},
       {"duplicate_axis",
        "axes:\n  - {path: building.isolator.uy, values: [1 cm]}\n  - {path: building.walls.uy, "

@@ -38,7 +38,7 @@ axes:
   - {path: building.isolator.uy, range: {from: 1 cm, to: 2.5 cm, step: 0.5 cm}}
   - {name: storeys, path: building.floors.count, values: [3, 5]}
 variants:
-  BL: {building.isolator.model: bilinear}
+  BL: {building.isolator.model: bilinear, building.isolator.n: ~, building.isolator.A: ~, building.isolator.beta: ~, building.isolator.gamma: ~}
   BW: {building.isolator.model: bouc_wen}
   BW_n1: {building.isolator.model: bouc_wen, building.isolator.n: 1}
 outputs: [base.displacement, stories.drift_ratio, floors.absolute_acceleration, isolator.force, energy.hysteretic]
@@ -55,7 +55,7 @@ std::string resumable_study() {
   return "name: resumable\nmodel: " + test::thesis_model() + R"(
 set:
   ground_motion.pulse: {amplitude: 0.8 m/s, period: 2 s, duration: 6 s, dt: 0.01 s}
-  building.isolator.model: bilinear
+  building.isolator: {model: bilinear, Tb: 2 s, QW: 5 %, uy: 1 cm}
 axes:
   - {path: building.isolator.Tb, values: [2 s, 2.25 s, 2.5 s, 2.75 s, 3 s]}
   - {path: building.isolator.QW, range: {from: 5 %, to: 10 %, step: 1.25 %}}

@@ -2,6 +2,7 @@
 // step is halved where the local error estimate says so (steps stay aligned with the samples).
 #include "solver/core/analysis.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -39,7 +40,28 @@ void update(Peak& peak, double value, double t) {
     peak.value = a;
     peak.time = t;
   }
+  if (value > peak.positive) {
+    peak.positive = value;
+    peak.time_positive = t;
+  }
+  if (value < peak.negative) {
+    peak.negative = value;
+    peak.time_negative = t;
+  }
 }
+
+// Keeps the rows in AnalysisResult::history when no sink is given.
+class MemoryHistory : public HistorySink {
+ public:
+  explicit MemoryHistory(History& history) : history_(history) {}
+  void begin(const std::vector<std::string>& columns) override { history_.columns = columns; }
+  void row(const double* values, std::size_t count) override {
+    history_.values.insert(history_.values.end(), values, values + count);
+  }
+
+ private:
+  History& history_;
+};
 
 // Ground acceleration at a fraction `frac` in [0, 1] of analysis interval `interval`.
 struct GroundSampler {
@@ -122,6 +144,24 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   res.drift.resize(res.stories.size());
   res.drift_ratio.resize(res.stories.size());
   res.element_outputs.resize(n_elements);
+  res.tracked.resize(options.tracked.size());
+  res.story_shear.resize(res.stories.size());
+  res.base_shear.resize(model.structures.size());
+  // Levels above each story (same order as stories_of) and the levels of each isolated
+  // structure: the shears are sums of M a_abs over them.
+  std::vector<std::vector<int>> above_story, above_base(model.structures.size());
+  for (std::size_t s = 0; s < model.structures.size(); ++s) {
+    const StructureInfo& info = model.structures[s];
+    const std::size_t first_floor = info.has_base ? 1 : 0;
+    for (std::size_t k = 0; k < info.story_heights.size(); ++k)
+      above_story.emplace_back(info.level_dofs.begin() + static_cast<long>(k + first_floor),
+                               info.level_dofs.end());
+    if (info.has_base) above_base[s] = info.level_dofs;
+  }
+  Eigen::VectorXd inertia(n);         // M a_abs
+  Eigen::VectorXd isolator_force(n);  // the isolator elements' internal forces
+  Eigen::VectorXd damping_force(n);   // C v
+  std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size());
   for (int e = 0; e < n_elements; ++e)
     res.element_outputs[e].resize(model.elements[e]->output_count());
 
@@ -146,22 +186,31 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   for (int i = 0; i < n; ++i)
     force_scale[i] = cfg.tolerance * kGravity * std::max(model.mass(i, i), 1e-12);
 
-  // History layout.
+  // History layout. Row k is at exactly k * out_interval (never an accumulated sum): the first
+  // accepted step ending within a millionth of a step of that time writes it.
   const double out_interval = options.output.interval > 0 ? options.output.interval : motion.dt;
-  if (options.output.histories) {
-    auto& c = res.history.columns;
-    c = {"time [s]", "ground_acceleration [m/s2]"};
+  MemoryHistory memory_history(res.history);
+  HistorySink* const sink = options.output.histories
+                                ? (options.history_sink ? options.history_sink : &memory_history)
+                                : nullptr;
+  std::vector<double> row;
+  if (sink) {
+    std::vector<std::string> c = {"time [s]", "ground_acceleration [m/s2]"};
     for (const Dof& d : model.dofs) c.push_back(d.label + " u [m]");
     for (const Dof& d : model.dofs) c.push_back(d.label + " v [m/s]");
     for (const Dof& d : model.dofs) c.push_back(d.label + " a_abs [m/s2]");
     for (const auto& e : model.elements)
       for (int k = 0; k < e->output_count(); ++k)
         c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");
-    // Rows at most every output interval (and at most one per step); reserve a bounded guess.
-    const double rows = std::min(total / out_interval + 2.0, 2e6);
-    res.history.values.reserve(c.size() * static_cast<std::size_t>(rows));
+    for (std::size_t s = 0; s < model.structures.size(); ++s)
+      if (model.structures[s].has_base) c.push_back(model.structures[s].name + " base_shear [N]");
+    for (const Story& st : res.stories) c.push_back(st.label + " shear [N]");
+    row.resize(c.size());
+    sink->begin(c);
   }
-  double next_output = 0.0;
+  long next_row = 0;  // index of the next output time, next_row * out_interval
+  const double grid_tolerance = 1e-6 * H;
+  long progress_tick = 0;
 
   // Element outputs of the current step, element e at output_offset[e].
   std::vector<int> output_offset(n_elements), output_count(n_elements);
@@ -195,6 +244,33 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
       update(res.drift[s], drift, t);
       update(res.drift_ratio[s], drift / st.height, t);
+    }
+    for (int i = 0; i < n; ++i) work[i] = a[i] + model.influence[i] * ag;
+    inertia.noalias() = model.mass * work;
+    for (std::size_t s = 0; s < above_story.size(); ++s) {
+      double shear = 0.0;
+      for (const int d : above_story[s]) shear -= inertia[d];
+      story_shear_now[s] = shear;
+      update(res.story_shear[s], shear, t);
+    }
+    // Base shear: the force of the isolation layer, isolator + isolation damping. The
+    // superstructure's damping is internal to the levels and cancels in the sum.
+    damping_force.noalias() = model.damping * v;
+    for (std::size_t s = 0; s < above_base.size(); ++s) {
+      if (above_base[s].empty()) continue;
+      isolator_force.setZero();
+      const int iso = model.structures[s].isolator_element;
+      if (iso >= 0) model.elements[iso]->add_force(isolator_force);
+      double shear = 0.0;
+      for (const int d : above_base[s]) shear += isolator_force[d] + damping_force[d];
+      base_shear_now[s] = shear;
+      update(res.base_shear[s], shear, t);
+    }
+    for (std::size_t k = 0; k < options.tracked.size(); ++k) {
+      const TrackedCoordinate& c = options.tracked[k];
+      const double x =
+          (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) + (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0);
+      update(res.tracked[k], x, t);
     }
     for (int e = 0; e < n_elements; ++e) {
       double* values = output_scratch.data() + output_offset[e];
@@ -235,17 +311,24 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     max_in = std::max(max_in, std::abs(e_in) + initial_energy);
     max_err = std::max(max_err, std::abs(en.error));
 
-    if (options.output.histories && t >= next_output - 1e-9 * out_interval) {
-      auto& vals = res.history.values;
-      vals.push_back(t);
-      vals.push_back(ag);
-      for (int i = 0; i < n; ++i) vals.push_back(u[i]);
-      for (int i = 0; i < n; ++i) vals.push_back(v[i]);
-      for (int i = 0; i < n; ++i) vals.push_back(a[i] + model.influence[i] * ag);
-      vals.insert(vals.end(), output_scratch.begin(), output_scratch.end());
-      next_output += out_interval;
-      while (next_output <= t + 1e-9 * out_interval) next_output += out_interval;
+    if (sink && t >= static_cast<double>(next_row) * out_interval - grid_tolerance) {
+      // On the grid (steps end on record samples): print the exact grid time k * interval.
+      const double k = std::round(t / out_interval);
+      const bool on_grid = std::abs(t - k * out_interval) <= grid_tolerance;
+      double* r = row.data();
+      *r++ = on_grid ? k * out_interval : t;
+      *r++ = ag;
+      for (int i = 0; i < n; ++i) *r++ = u[i];
+      for (int i = 0; i < n; ++i) *r++ = v[i];
+      for (int i = 0; i < n; ++i) *r++ = a[i] + model.influence[i] * ag;
+      r = std::copy(output_scratch.begin(), output_scratch.end(), r);
+      for (std::size_t s = 0; s < above_base.size(); ++s)
+        if (!above_base[s].empty()) *r++ = base_shear_now[s];
+      std::copy(story_shear_now.begin(), story_shear_now.end(), r);
+      sink->row(row.data(), row.size());
+      next_row = static_cast<long>(on_grid ? k : std::floor(t / out_interval)) + 1;
     }
+    if (options.progress && (++progress_tick & 4095) == 0) options.progress(t, total);
   };
 
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
@@ -395,6 +478,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   en.relative_error = supplied > 0 ? std::abs(en.error) / supplied : 0.0;
   en.max_relative_error = max_in > 0 ? max_err / max_in : 0.0;
   st.duration = static_cast<double>(intervals) * H;
+  st.interval = H;
+  res.final_displacement.assign(stepper.u().data(), stepper.u().data() + n);
   st.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return res;

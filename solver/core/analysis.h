@@ -2,6 +2,7 @@
 // stepping aligned with the record samples, peaks, energy balance and histories.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,8 +27,10 @@ class AnalysisError : public std::runtime_error {
 };
 
 struct Peak {
-  double value = 0.0;  // max |x| over time
-  double time = 0.0;   // s, when it occurred
+  double value = 0.0;                          // max |x| over time
+  double time = 0.0;                           // s, when it occurred
+  double positive = 0.0, time_positive = 0.0;  // max(x, 0) over time and when
+  double negative = 0.0, time_negative = 0.0;  // min(x, 0) over time (<= 0) and when
 };
 
 // A story: deformation u[upper] - u[lower] (lower = -1: the ground).
@@ -58,6 +61,7 @@ struct RunStatistics {
   double min_step = 0.0, max_step = 0.0;  // s
   double wall_seconds = 0.0;
   double duration = 0.0;  // s of analysed time
+  double interval = 0.0;  // s, the analysis interval H (the record interval / an integer)
 };
 
 struct History {
@@ -66,14 +70,42 @@ struct History {
   std::size_t rows() const { return columns.empty() ? 0 : values.size() / columns.size(); }
 };
 
+// Where history rows go as the analysis produces them: a file (report.h) streams them, so memory
+// does not grow with the record; without a sink they are kept in AnalysisResult::history.
+class HistorySink {
+ public:
+  virtual ~HistorySink() = default;
+  virtual void begin(const std::vector<std::string>& columns) = 0;
+  virtual void row(const double* values, std::size_t count) = 0;  // count = columns.size()
+};
+
+// A coordinate c_a u_a + c_b u_b tracked over time (dof -1: the ground, contributes nothing),
+// e.g. how far the two sides of a contact would close without the contact.
+struct TrackedCoordinate {
+  int dof_a = -1;
+  double c_a = 0.0;
+  int dof_b = -1;
+  double c_b = 0.0;
+};
+
 struct AnalysisResult {
   std::vector<Story> stories;
-  std::vector<Peak> displacement;                  // per DOF, relative to the ground, m
-  std::vector<Peak> velocity;                      // per DOF, relative, m/s
-  std::vector<Peak> absolute_acceleration;         // per DOF, m/s^2
-  std::vector<Peak> drift;                         // per story, m
-  std::vector<Peak> drift_ratio;                   // per story
+  std::vector<Peak> displacement;           // per DOF, relative to the ground, m
+  std::vector<Peak> velocity;               // per DOF, relative, m/s
+  std::vector<Peak> absolute_acceleration;  // per DOF, m/s^2
+  std::vector<Peak> drift;                  // per story, m
+  std::vector<Peak> drift_ratio;            // per story
+  // Storey shear, N: the force the storey transmits, V = -sum over the levels above it of
+  // (M a_abs); positive when it pushes the part above in +x.
+  std::vector<Peak> story_shear;  // per story
+  // Base shear of each structure with an isolated base, N: the isolation layer's force on the
+  // structure's levels, isolator + isolation damping force, positive when it resists a +x
+  // displacement (pulls in -x); without contacts it equals -sum over the levels of M a_abs.
+  // Per structure (0 if fixed base).
+  std::vector<Peak> base_shear;
+  std::vector<double> final_displacement;          // per DOF at the end of the analysis, m
   std::vector<std::vector<Peak>> element_outputs;  // per element, per output
+  std::vector<Peak> tracked;                       // per RunOptions::tracked
   EnergyBalance energy;
   RunStatistics stats;
   History history;
@@ -86,6 +118,11 @@ struct RunOptions {
   // Initial displacements and velocities (relative to the ground); empty = at rest.
   Eigen::VectorXd initial_displacement;
   Eigen::VectorXd initial_velocity;
+  std::vector<TrackedCoordinate> tracked;  // peaks in AnalysisResult::tracked
+  // Histories go here when set (and output.histories); else into AnalysisResult::history.
+  HistorySink* history_sink = nullptr;
+  // Called now and then (every 4096 accepted steps) with the analysed and the total time, s.
+  std::function<void(double t, double total)> progress;
 };
 
 // Stories of every structure in the model, in order.

@@ -49,6 +49,10 @@ class Contact1D final : public Element {
   void outputs(double* out) const override;
   const std::string& label() const override { return label_; }
 
+  const ContactBody& body_a() const { return a_; }
+  const ContactBody& body_b() const { return b_; }
+  double gap() const { return gap_; }
+
   // Outputs by name, for tests.
   int impacts() const { return impacts_; }
   int trial_impacts() const { return impacts_ + (trial_.started ? 1 : 0); }

@@ -34,28 +34,84 @@ std::string fmt(double x) {
   return os.str();
 }
 
-// Whole file as lines without their '\n' or "\r\n"; no phantom empty line after a final '\n'.
-std::vector<std::string> read_lines(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw RecordError(path, 0, "is a directory, not a record file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw RecordError(path, 0, "cannot open file (missing or unreadable)");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw RecordError(path, 0, "read error");
-  const std::string text = buffer.str();
+constexpr std::size_t kMaxLineBytes = 1 << 20;        // no record line is a megabyte long
+constexpr std::uintmax_t kMaxFileBytes = 4ull << 30;  // 4 GiB: 1e8 samples of ~40 characters
+constexpr std::size_t kMaxPeerHeaderLines = 10000;    // format: peer looks this far for NPTS
 
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    std::string line = text.substr(start, end - start);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
-    start = end + 1;
+// A record file read line by line (without '\n' or "\r\n"), so memory holds the samples and
+// not the text. A file that never ends (/dev/zero), a line longer than 1 MiB or more than 4 GiB
+// of text is refused with a RecordError rather than read until memory runs out.
+class LineReader {
+ public:
+  explicit LineReader(const std::string& path) : path_(path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+      throw RecordError(path, 0, "is a directory, not a record file");
+    if (!std::filesystem::exists(path, ec))
+      throw RecordError(path, 0, "cannot open file (missing or unreadable)");
+    if (std::filesystem::is_regular_file(path, ec)) {
+      const std::uintmax_t size = std::filesystem::file_size(path, ec);
+      if (!ec && size > kMaxFileBytes)
+        throw RecordError(path, 0,
+                          "the file has " + std::to_string(size >> 20) +
+                              " MiB: more than the 4 GiB a record of 1e8 samples needs; is it "
+                              "a record?");
+      if (!ec) size_ = size;
+    }
+    in_.open(path, std::ios::binary);
+    if (!in_) throw RecordError(path, 0, "cannot open file (missing or unreadable)");
   }
+  // The next line, or false at the end; line_number() is then its 1-based number.
+  bool next(std::string& line) {
+    line.clear();
+    int c;
+    bool any = false;
+    while ((c = in_.get()) != EOF) {
+      any = true;
+      if (++bytes_ > kMaxFileBytes)
+        throw RecordError(path_, line_ + 1,
+                          "more than 4 GiB read and the file goes on: not a record file");
+      if (c == '\n') break;
+      line.push_back(static_cast<char>(c));
+      if (line.size() > kMaxLineBytes)
+        throw RecordError(path_, line_ + 1,
+                          "a line longer than 1 MiB: not a text record (binary data or a "
+                          "device such as /dev/zero?)");
+    }
+    if (in_.bad()) throw RecordError(path_, line_ + 1, "read error");
+    if (!any) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    ++line_;
+    return true;
+  }
+  int line_number() const { return line_; }
+  std::uintmax_t size() const { return size_; }  // bytes of a regular file, else 0
+
+ private:
+  std::string path_;
+  std::ifstream in_;
+  int line_ = 0;
+  std::uintmax_t bytes_ = 0;
+  std::uintmax_t size_ = 0;
+};
+
+// Calls fn(line_number, line) for the buffered head lines from index `from`, then for the rest of
+// the file; fn returns false to stop.
+template <typename Fn>
+void for_each_line(const std::vector<std::string>& head, std::size_t from, LineReader& reader,
+                   Fn fn) {
+  for (std::size_t i = from; i < head.size(); ++i)
+    if (!fn(static_cast<int>(i + 1), std::string_view(head[i]))) return;
+  std::string line;
+  while (reader.next(line))
+    if (!fn(reader.line_number(), std::string_view(line))) return;
+}
+
+// The first `count` lines (fewer at the end of the file).
+std::vector<std::string> read_head(LineReader& reader, std::size_t count) {
+  std::vector<std::string> lines;
+  std::string line;
+  while (lines.size() < count && reader.next(line)) lines.push_back(line);
   return lines;
 }
 
@@ -270,7 +326,7 @@ bool names_velocity_or_displacement(std::string_view line) {
 }
 
 GroundMotion read_peer(const std::string& path, const std::vector<std::string>& lines,
-                       const PeerHeader& header, double factor) {
+                       LineReader& reader, const PeerHeader& header, double factor) {
   const int header_line = static_cast<int>(header.index + 1);
 
   // A PEER velocity/displacement file (.VT2/.DT2) has the same layout: refuse it.
@@ -298,17 +354,17 @@ GroundMotion read_peer(const std::string& path, const std::vector<std::string>& 
   GroundMotion motion;
   motion.name = std::filesystem::path(path).stem().string();
   motion.dt = dt;
-  // A bogus NPTS must not reserve gigabytes before the data prove it.
-  motion.acceleration.reserve(static_cast<std::size_t>(std::min(npts, 1LL << 20)));
+  // A bogus NPTS must not reserve gigabytes before the data prove it: a value takes at least
+  // two bytes of the file (a digit and a separator).
+  const long long fits = reader.size() > 0 ? static_cast<long long>(reader.size() / 2) : 1LL << 20;
+  motion.acceleration.reserve(static_cast<std::size_t>(std::min(npts, fits)));
   int last_value_line = header_line;
-  for (std::size_t i = header.index + 1; i < lines.size(); ++i) {
-    const int line_no = static_cast<int>(i + 1);
-    const std::string_view line = trim(lines[i]);
-    if (line.empty()) continue;
+  for_each_line(lines, header.index + 1, reader, [&](int line_no, std::string_view text) {
+    const std::string_view line = trim(text);
+    if (line.empty()) return true;
     if (line.starts_with("***")) {
       // "*** Begin data ***" before the values is skipped; "*** End Data ***" ends them.
-      if (motion.acceleration.empty()) continue;
-      break;
+      return motion.acceleration.empty();
     }
     for (std::string_view tok : tokens_of(line)) {
       const double g = number_or_throw(path, line_no, tok);
@@ -320,7 +376,8 @@ GroundMotion read_peer(const std::string& path, const std::vector<std::string>& 
       motion.acceleration.push_back(g * factor);
     }
     last_value_line = line_no;
-  }
+    return true;
+  });
   if (static_cast<long long>(motion.acceleration.size()) < npts)
     throw RecordError(path, last_value_line,
                       "truncated record: found " + std::to_string(motion.acceleration.size()) +
@@ -342,7 +399,8 @@ double unit_factor(AccelerationUnit unit) {
 }
 
 GroundMotion read_columns(const std::string& path, const std::vector<std::string>& lines,
-                          const RecordReadOptions& options, std::string_view hint) {
+                          LineReader& reader, const RecordReadOptions& options,
+                          std::string_view hint) {
   if (options.column < 0)
     throw RecordError(path, 0, "column index " + std::to_string(options.column) + " must be >= 0");
   if (options.time_column < -1)
@@ -356,18 +414,18 @@ GroundMotion read_columns(const std::string& path, const std::vector<std::string
   const bool has_time = options.time_column >= 0;
   const double factor = unit_factor(options.unit) * options.scale;
 
-  std::vector<double> accel, time;
-  std::vector<int> row_line;  // 1-based line of each data row, for messages
-  std::size_t columns = 0;
+  std::vector<double> accel;
+  // Time column: checked row by row against the first step, so nothing but the samples is kept.
+  double first_time = 0.0, previous_time = 0.0, first_step = 0.0, last_time = 0.0;
   int first_row_line = 0;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const int line_no = static_cast<int>(i + 1);
-    std::string_view line = lines[i];
+  std::size_t columns = 0;
+  std::vector<double> row;
+  for_each_line(lines, 0, reader, [&](int line_no, std::string_view line) {
     // '%' (MATLAB) and '#' start comments, also after data on a line.
     if (const auto c = line.find_first_of("%#"); c != std::string_view::npos)
       line = line.substr(0, c);
     const auto toks = tokens_of(line, ",;");
-    if (toks.empty()) continue;
+    if (toks.empty()) return true;
     if (columns == 0) {
       columns = toks.size();
       first_row_line = line_no;
@@ -376,8 +434,7 @@ GroundMotion read_columns(const std::string& path, const std::vector<std::string
                         "row has " + std::to_string(toks.size()) + " columns but line " +
                             std::to_string(first_row_line) + " has " + std::to_string(columns));
     }
-    std::vector<double> row;
-    row.reserve(toks.size());
+    row.clear();
     for (std::string_view tok : toks) row.push_back(number_or_throw(path, line_no, tok, hint));
     const auto need = [&](int index, const char* what) {
       if (static_cast<std::size_t>(index) >= columns)
@@ -388,31 +445,40 @@ GroundMotion read_columns(const std::string& path, const std::vector<std::string
     };
     need(options.column, "column");
     if (has_time) need(options.time_column, "time column");
+    if (accel.size() >= static_cast<std::size_t>(kMaxSamples))
+      throw RecordError(path, line_no, "more than 1e8 samples: not a usable record");
     accel.push_back(row[static_cast<std::size_t>(options.column)] * factor);
-    if (has_time) time.push_back(row[static_cast<std::size_t>(options.time_column)]);
-    row_line.push_back(line_no);
-  }
+    if (has_time) {
+      const double t = row[static_cast<std::size_t>(options.time_column)];
+      if (accel.size() == 1) {
+        first_time = t;
+      } else if (accel.size() == 2) {
+        first_step = t - previous_time;
+        if (!(first_step > 0.0))
+          throw RecordError(
+              path, line_no,
+              "time does not increase (step " + fmt(first_step) + " s); dt must be > 0");
+      } else {
+        const double step = t - previous_time;
+        if (!(std::abs(step - first_step) <= 1e-6 * first_step))
+          throw RecordError(path, line_no,
+                            "time step " + fmt(step) + " s differs from the first step " +
+                                fmt(first_step) +
+                                " s (samples must be uniform within 1e-6 relative)");
+      }
+      previous_time = last_time = t;
+    }
+    return true;
+  });
   if (accel.empty()) throw RecordError(path, 0, "no data rows (only comments or blank lines)");
 
   double dt = 0.0;
   if (has_time) {
-    if (time.size() < 2)
-      throw RecordError(path, row_line.front(),
+    if (accel.size() < 2)
+      throw RecordError(path, first_row_line,
                         "need at least 2 rows to take dt from the time column");
-    // Steps are compared with the first one so that the error names the first odd row;
-    // dt itself is the mean step, which averages out rounding of the printed times.
-    const double first = time[1] - time[0];
-    if (!(first > 0.0))
-      throw RecordError(path, row_line[1],
-                        "time does not increase (step " + fmt(first) + " s); dt must be > 0");
-    for (std::size_t k = 1; k + 1 < time.size(); ++k) {
-      const double step = time[k + 1] - time[k];
-      if (!(std::abs(step - first) <= 1e-6 * first))
-        throw RecordError(path, row_line[k + 1],
-                          "time step " + fmt(step) + " s differs from the first step " +
-                              fmt(first) + " s (samples must be uniform within 1e-6 relative)");
-    }
-    dt = (time.back() - time.front()) / static_cast<double>(time.size() - 1);
+    // dt is the mean step, which averages out rounding of the printed times.
+    dt = (last_time - first_time) / static_cast<double>(accel.size() - 1);
     if (options.dt != 0.0 && !(std::abs(options.dt - dt) <= 1e-6 * dt))
       throw RecordError(path, 0,
                         "dt = " + fmt(options.dt) + " s was given but the time column has step " +
@@ -430,6 +496,7 @@ GroundMotion read_columns(const std::string& path, const std::vector<std::string
   GroundMotion motion;
   motion.name = std::filesystem::path(path).stem().string();
   motion.dt = dt;
+  accel.shrink_to_fit();
   motion.acceleration = std::move(accel);
   return motion;
 }
@@ -512,14 +579,32 @@ GroundMotionPeaks peaks_of(const GroundMotion& motion) {
   return pk;
 }
 
+std::optional<RecordReadOptions::Format> sniff_record_format(const std::string& path) {
+  try {
+    LineReader reader(path);
+    const std::vector<std::string> head = read_head(reader, kAutoHeaderLines);
+    if (find_peer_header(head, kAutoHeaderLines) || has_at2_extension(path))
+      return RecordReadOptions::Format::kPeer;
+    return RecordReadOptions::Format::kColumns;
+  } catch (const RecordError&) {
+    // Reported when the record is read; the extension still says what it is meant to be.
+    if (has_at2_extension(path)) return RecordReadOptions::Format::kPeer;
+    return std::nullopt;
+  }
+}
+
 GroundMotion read_record(const std::string& path, const RecordReadOptions& options) {
-  const std::vector<std::string> lines = read_lines(path);
-  if (std::all_of(lines.begin(), lines.end(), [](const std::string& l) { return is_blank(l); }))
-    throw RecordError(path, 0, "empty file (no header and no data)");
   if (!std::isfinite(options.scale))
     throw RecordError(path, 0, "scale factor " + fmt(options.scale) + " is not finite");
-
+  LineReader reader(path);
   using Format = RecordReadOptions::Format;
+  const std::size_t head_lines =
+      options.format == Format::kPeer ? kMaxPeerHeaderLines : kAutoHeaderLines;
+  const std::vector<std::string> lines = read_head(reader, head_lines);
+  if (std::all_of(lines.begin(), lines.end(), [](const std::string& l) { return is_blank(l); }) &&
+      lines.size() < head_lines)
+    throw RecordError(path, 0, "empty file (no header and no data)");
+
   // PEER files are in g by definition (header line 3) and carry their own DT, so
   // options.unit and options.dt do not apply to them.
   const double peer_factor = kGravity * options.scale;
@@ -527,19 +612,19 @@ GroundMotion read_record(const std::string& path, const RecordReadOptions& optio
     case Format::kPeer: {
       const auto header = find_peer_header(lines, lines.size());
       if (!header) throw_missing_header(path, lines, lines.size());
-      return read_peer(path, lines, *header, peer_factor);
+      return read_peer(path, lines, reader, *header, peer_factor);
     }
     case Format::kColumns:
-      return read_columns(path, lines, options, {});
+      return read_columns(path, lines, reader, options, {});
     case Format::kAuto:
       break;
   }
   if (const auto header = find_peer_header(lines, kAutoHeaderLines))
-    return read_peer(path, lines, *header, peer_factor);
+    return read_peer(path, lines, reader, *header, peer_factor);
   // An .AT2 file without an NPTS/DT line is a broken PEER file, not a column file.
   if (has_at2_extension(path)) throw_missing_header(path, lines, kAutoHeaderLines);
   return read_columns(
-      path, lines, options,
+      path, lines, reader, options,
       "; read as a plain column file because no NPTS/DT line was found in the first " +
           std::to_string(kAutoHeaderLines) + " lines");
 }

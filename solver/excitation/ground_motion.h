@@ -2,6 +2,7 @@
 // near-fault pulse, as uniformly sampled ground acceleration in m/s^2 (linear between samples).
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,6 +57,10 @@ struct RecordReadOptions {
   AccelerationUnit unit = AccelerationUnit::kG;  // PEER files are always in g
   double scale = 1.0;                            // multiplies the acceleration
 };
+
+// The format kAuto would pick for this file (PEER if an NPTS/DT line is in its first lines or it
+// ends in .AT2, else columns); nullopt if the file cannot be read. Reads only the first lines.
+std::optional<RecordReadOptions::Format> sniff_record_format(const std::string& path);
 
 // Reads a record. Throws RecordError (file, line, what) on a truncated file, a non-numeric
 // or NaN/inf value, an NPTS mismatch, an empty file, a missing dt.

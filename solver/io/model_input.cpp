@@ -2,6 +2,8 @@
 // Unknown keys, wrong types, units of the wrong dimension and out-of-range values are InputErrors.
 #include "solver/io/model_input.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +22,15 @@ constexpr int kMaxFloors = 1000;  // a shear building model; the limit guards th
 constexpr int kMaxHalvings = 60;  // dt / 2^60 is already far below any physical time scale
 constexpr double kMaxPulseSamples = 1e8;
 constexpr const char* kFixedBaseOnly = "not allowed for a fixed-base building (isolated: false)";
+
+// Whether a map holds `key` with a non-null value, without counting it as used.
+bool written(const YAML::Node& map, std::string_view key) {
+  if (!map.IsDefined() || !map.IsMap()) return false;
+  for (const auto& entry : map)
+    if (entry.first.IsScalar() && entry.first.Scalar() == key)
+      return entry.second.IsDefined() && !entry.second.IsNull();
+  return false;
+}
 
 std::vector<FloorConfig> read_floors(const InputNode& node) {
   std::vector<FloorConfig> floors;
@@ -66,7 +77,7 @@ void read_friction_pendulum(const InputNode& node, IsolatorConfig& iso) {
     iso.rate_parameter = node.required("rate_parameter").quantity(kSlowness, Bound::kNonNegative);
   else
     node.read_quantity("rate_parameter", kSlowness, Bound::kNonNegative, iso.rate_parameter);
-  iso.yield_displacement = 5e-4;  // replaced below if uy is given
+  iso.yield_displacement = 5e-4;  // pre-sliding travel, replaced if uy is given
   if (const auto z = node.find("friction_hysteresis"))
     iso.smooth_friction = z->choice<bool>({{"plastic", false}, {"bouc_wen", true}});
 }
@@ -77,31 +88,44 @@ IsolatorConfig read_isolator(const InputNode& node) {
                     "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter",
                     "friction_hysteresis"});
   IsolatorConfig iso;
-  if (const auto model = node.find("model"))
-    iso.model = model->choice<Model>({{"linear", Model::kLinear},
-                                      {"bilinear", Model::kBilinear},
-                                      {"bouc_wen", Model::kBoucWen},
-                                      {"friction_pendulum", Model::kFrictionPendulum}});
+  node.read_choice<Model>("model",
+                          {{"linear", Model::kLinear},
+                           {"bilinear", Model::kBilinear},
+                           {"bouc_wen", Model::kBoucWen},
+                           {"friction_pendulum", Model::kFrictionPendulum}},
+                          iso.model);
   if (iso.model == Model::kFrictionPendulum) {
+    // No Tb, QW or Bouc-Wen shape: they are refused as unused (the pendulum's period is R's).
     read_friction_pendulum(node, iso);
-  } else {
-    for (const char* key : {"R", "mu_slow", "mu_fast", "rate_parameter", "friction_hysteresis"})
-      if (const auto given = node.find(key)) given->fail("only for model: friction_pendulum");
+    node.read_quantity("uy", dim::kLength, Bound::kPositive, iso.yield_displacement);
+    node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
+    return iso;
   }
   node.read_quantity("Tb", dim::kTime, Bound::kPositive, iso.period);
+  node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
+  if (iso.model == Model::kLinear) return iso;  // K_post only: no strength, no yield
   if (const auto qw = node.find("QW")) {
     iso.strength_ratio = qw->number(Bound::kNonNegative);
-    if (iso.strength_ratio == 0.0 && iso.model != Model::kLinear)
+    if (iso.strength_ratio == 0.0)
       qw->fail(
           "must be > 0 for the bilinear and bouc_wen models (an isolator without strength is "
           "model: linear)");
+    // Q/W is a fraction of the weight: a bare 5 is 500 %, never meant.
+    if (iso.strength_ratio > 1.0)
+      qw->fail("Q/W is a fraction of the weight: '" + qw->string() + "' is " +
+               std::to_string(static_cast<long>(std::lround(iso.strength_ratio * 100))) +
+               " %; did you mean '" + qw->string() + " %'?");
+  } else {
+    node.note_default("QW", "0.05");
   }
   node.read_quantity("uy", dim::kLength, Bound::kPositive, iso.yield_displacement);
+  node.read_boolean("strength_is_yield_force", iso.strength_is_yield_force);
+  if (iso.model != Model::kBoucWen) return iso;
   node.read_number("n", Bound::kPositive, iso.n);
   node.read_number("A", Bound::kPositive, iso.A);
   node.read_number("beta", Bound::kAny, iso.beta);
   node.read_number("gamma", Bound::kAny, iso.gamma);
-  if (iso.model == Model::kBoucWen && !(iso.beta + iso.gamma > 0.0)) {
+  if (!(iso.beta + iso.gamma > 0.0)) {
     char sum[32];
     std::snprintf(sum, sizeof sum, "%g", iso.beta + iso.gamma);
     const std::string what = std::string("beta + gamma must be > 0 for bouc_wen (got ") + sum + ")";
@@ -109,8 +133,6 @@ IsolatorConfig read_isolator(const InputNode& node) {
     if (const auto beta = node.find("beta")) beta->fail(what);
     node.fail(what);
   }
-  node.read_boolean("strength_is_yield_force", iso.strength_is_yield_force);
-  node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
   return iso;
 }
 
@@ -146,6 +168,13 @@ void read_damping(const InputNode& building, BuildingConfig& b) {
     }
     superstructure = damping->find("superstructure");
   }
+  if (b.isolated && !(damping && damping->has("isolation")))
+    (damping ? *damping : building)
+        .note_default(damping ? "isolation" : "damping.isolation", "0.05");
+  if (!superstructure)
+    (damping ? *damping : building)
+        .note_default(damping ? "superstructure" : "damping.superstructure",
+                      "rayleigh, ratio 0.02 at modes 1 and 2");
   SuperstructureDamping& s = b.damping;
   std::optional<InputNode> type, modes;
   if (superstructure) {
@@ -154,12 +183,13 @@ void read_damping(const InputNode& building, BuildingConfig& b) {
     if (type)
       s.type = type->choice<Type>(
           {{"rayleigh", Type::kRayleigh}, {"modal", Type::kModal}, {"none", Type::kNone}});
-    if (const auto ratio = superstructure->find("ratio")) {
-      if (s.type == Type::kNone) ratio->fail("has no effect with type: none");
-      s.ratio = ratio->number(Bound::kFraction);
+    else
+      superstructure->note_default("type", "rayleigh");
+    if (s.type != Type::kNone) superstructure->read_number("ratio", Bound::kFraction, s.ratio);
+    if (s.type == Type::kRayleigh) {
+      modes = superstructure->find("modes");
+      if (!modes) superstructure->note_default("modes", "[1, 2]");
     }
-    modes = superstructure->find("modes");
-    if (modes && s.type != Type::kRayleigh) modes->fail("only used with type: rayleigh");
   }
   if (s.type != Type::kRayleigh) return;
   const int floor_count = static_cast<int>(b.floors.size());
@@ -180,41 +210,63 @@ void read_damping(const InputNode& building, BuildingConfig& b) {
 const std::vector<std::string_view> kImpactKeys = {
     "law", "k", "k_h", "n", "e", "material", "xi_formula", "min_impact_velocity"};
 
-void read_impact(const InputNode& node, ImpactLawConfig& c) {
-  if (const auto law = node.find("law")) {
-    c.law = law->choice<std::string>({{"linear", "linear"},
-                                      {"kelvin_voigt", "kelvin_voigt"},
-                                      {"modified_kelvin_voigt", "modified_kelvin_voigt"},
-                                      {"ye", "ye"},
-                                      {"mahmoud_jankowski", "mahmoud_jankowski"},
-                                      {"pant_wijeyewickrema", "pant_wijeyewickrema"},
-                                      {"hertz", "hertz"},
-                                      {"jankowski", "jankowski"},
-                                      {"hertz_damp_muthukumar", "hertz_damp_muthukumar"},
-                                      {"hertz_damp_ye", "hertz_damp_ye"}});
+// Reads the law and only the parameters it uses (impact_law_uses): the law and its stiffness are
+// required, and so is e for a dissipative law without a material; the rest is noted as default.
+// Returns what the law uses (e.g. whether the other body's mass enters).
+ImpactLawUses read_impact(const InputNode& node, ImpactLawConfig& c) {
+  const auto law = node.required("law");
+  c.law = law.choice<std::string>({{"linear", "linear"},
+                                   {"kelvin_voigt", "kelvin_voigt"},
+                                   {"modified_kelvin_voigt", "modified_kelvin_voigt"},
+                                   {"ye", "ye"},
+                                   {"mahmoud_jankowski", "mahmoud_jankowski"},
+                                   {"pant_wijeyewickrema", "pant_wijeyewickrema"},
+                                   {"hertz", "hertz"},
+                                   {"jankowski", "jankowski"},
+                                   {"hertz_damp_muthukumar", "hertz_damp_muthukumar"},
+                                   {"hertz_damp_ye", "hertz_damp_ye"}});
+  const ImpactLawUses uses = impact_law_uses(c.law);
+  const auto stiffness = [&](const char* key, const char* other, const char* family) {
+    const auto given = node.find(key);
+    if (given) return *given;
+    // The other family's stiffness given instead: the classic slip (k for a Hertz law).
+    if (written(node.yaml(), other))
+      node.fail_at_key(key, "law " + c.law + " is a " + family + " law: it uses '" + key +
+                                "', not '" + other + "'");
+    return node.required(key);
+  };
+  if (uses.e) {
+    node.read_choice<ImpactMaterial>("material",
+                                     {{"none", ImpactMaterial::kNone},
+                                      {"concrete", ImpactMaterial::kConcrete},
+                                      {"steel", ImpactMaterial::kSteel},
+                                      {"timber", ImpactMaterial::kTimber},
+                                      {"ceramic", ImpactMaterial::kCeramic}},
+                                     c.material);
+    if (c.material == ImpactMaterial::kNone) {
+      const InputNode e = node.required("e");
+      c.e = e.number(Bound::kPositive);
+      if (c.e > 1.0) e.fail("the coefficient of restitution must be in (0, 1]");
+    } else if (const auto e = node.find("e")) {
+      e->fail("give either e (constant) or material (velocity-dependent e), not both");
+    }
   }
-  node.read_number("n", Bound::kPositive, c.n);
-  node.read_quantity("k", dim::kStiffness, Bound::kPositive, c.k);
-  // k_h is in N/m^n: its dimension follows the exponent (n = 1.5 for Jankowski's law).
-  const double n_h = c.law == "jankowski" ? 1.5 : c.n;
-  node.read_quantity("k_h", Dimension{1.0 - n_h, 1.0, -2.0}, Bound::kPositive, c.k_h);
-  if (const auto e = node.find("e")) {
-    c.e = e->number(Bound::kPositive);
-    if (c.e > 1.0) e->fail("the coefficient of restitution must be in (0, 1]");
+  if (uses.n) node.read_number("n", Bound::kPositive, c.n);
+  if (uses.k)
+    c.k = stiffness("k", "k_h", "linear-type").quantity(dim::kStiffness, Bound::kPositive);
+  if (uses.k_h) {
+    // k_h is in N/m^n: its dimension follows the exponent (n = 1.5 for Jankowski's law).
+    const double n_h = c.law == "jankowski" ? 1.5 : c.n;
+    c.k_h = stiffness("k_h", "k", "Hertz-type")
+                .quantity(Dimension{1.0 - n_h, 1.0, -2.0}, Bound::kPositive);
   }
-  if (const auto m = node.find("material")) {
-    c.material = m->choice<ImpactMaterial>({{"none", ImpactMaterial::kNone},
-                                            {"concrete", ImpactMaterial::kConcrete},
-                                            {"steel", ImpactMaterial::kSteel},
-                                            {"timber", ImpactMaterial::kTimber},
-                                            {"ceramic", ImpactMaterial::kCeramic}});
-    if (c.material != ImpactMaterial::kNone && node.has("e"))
-      m->fail("give either e (constant) or material (velocity-dependent e), not both");
-  }
-  if (const auto xi = node.find("xi_formula"))
-    c.xi_formula = xi->choice<std::string>({{"eq_3_12", "eq_3_12"}, {"eq_3_11", "eq_3_11"}});
-  node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive,
-                     c.min_impact_velocity);
+  if (uses.xi_formula)
+    node.read_choice<std::string>("xi_formula", {{"eq_3_12", "eq_3_12"}, {"eq_3_11", "eq_3_11"}},
+                                  c.xi_formula);
+  if (uses.min_impact_velocity || c.material != ImpactMaterial::kNone)
+    node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive,
+                       c.min_impact_velocity);
+  return uses;
 }
 
 WallConfig read_wall(const InputNode& node) {
@@ -223,24 +275,30 @@ WallConfig read_wall(const InputNode& node) {
   keys.insert(keys.end(), kImpactKeys.begin(), kImpactKeys.end());
   node.expect_keys(keys);
   WallConfig w;
-  if (const auto sides = node.find("sides")) {
-    const int which = sides->choice<int>({{"both", 0}, {"left", 1}, {"right", 2}});
-    w.left = which != 2;
-    w.right = which != 1;
-  }
+  int which = 0;
+  node.read_choice<int>("sides", {{"both", 0}, {"left", 1}, {"right", 2}}, which);
+  w.left = which != 2;
+  w.right = which != 1;
+  // The gap decides whether pounding happens at all: never a default.
   if (const auto gap = node.find("gap")) {
     w.gap_left = w.gap_right = gap->quantity(dim::kLength, Bound::kNonNegative);
     for (const char* key : {"gap_left", "gap_right"})
-      if (const auto g = node.find(key))
-        g->fail("give either gap (both sides) or gap_left/gap_right");
+      if (written(node.yaml(), key))
+        node.find(key)->fail("give either gap (both sides) or gap_left/gap_right");
+  } else {
+    if (!written(node.yaml(), "gap_left") && !written(node.yaml(), "gap_right"))
+      node.fail_at_key("gap", "missing required key 'gap' (or gap_left/gap_right)");
+    if (w.left) w.gap_left = node.required("gap_left").quantity(dim::kLength, Bound::kNonNegative);
+    if (w.right)
+      w.gap_right = node.required("gap_right").quantity(dim::kLength, Bound::kNonNegative);
   }
-  node.read_quantity("gap_left", dim::kLength, Bound::kNonNegative, w.gap_left);
-  node.read_quantity("gap_right", dim::kLength, Bound::kNonNegative, w.gap_right);
   node.read_integer("level", 0, 1000, w.level);
-  node.read_quantity("mass", dim::kMass, Bound::kPositive, w.mass);
   node.read_quantity("stiffness", dim::kStiffness, Bound::kNonNegative, w.stiffness);
-  node.read_number("damping", Bound::kFraction, w.damping_ratio);
-  read_impact(node, w.impact);
+  if (w.stiffness > 0) node.read_number("damping", Bound::kFraction, w.damping_ratio);
+  const ImpactLawUses uses = read_impact(node, w.impact);
+  // A rigid wall's mass enters only the impact damping of the laws that use m_eff.
+  if (w.stiffness > 0 || uses.mass)
+    node.read_quantity("mass", dim::kMass, Bound::kPositive, w.mass);
   return w;
 }
 
@@ -250,13 +308,11 @@ NeighbourConfig read_neighbour(const InputNode& node) {
   node.expect_keys({"building", "side", "gap", "impact"});
   NeighbourConfig n;
   n.building = read_building(node.required("building"));
-  if (const auto side = node.find("side"))
-    n.right = side->choice<bool>({{"left", false}, {"right", true}});
+  node.read_choice<bool>("side", {{"left", false}, {"right", true}}, n.right);
   n.gap = node.required("gap").quantity(dim::kLength, Bound::kNonNegative);
-  if (const auto impact = node.find("impact")) {
-    impact->expect_keys(kImpactKeys);
-    read_impact(*impact, n.impact);
-  }
+  const InputNode impact = node.required("impact");
+  impact.expect_keys(kImpactKeys);
+  read_impact(impact, n.impact);
   return n;
 }
 
@@ -267,7 +323,7 @@ BuildingConfig read_building(const InputNode& node) {
     b.name = name->string();
     if (b.name.empty()) name->fail("must not be empty");
   }
-  node.read_boolean("isolated", b.isolated);
+  if (const auto isolated = node.find("isolated")) b.isolated = isolated->boolean();
   if (b.isolated) {
     const InputNode base = node.required("base");
     base.expect_keys({"mass"});
@@ -277,7 +333,11 @@ BuildingConfig read_building(const InputNode& node) {
       if (const auto n = node.find(key)) n->fail(kFixedBaseOnly);
   }
   b.floors = read_floors(node.required("floors"));
-  if (const auto isolator = node.find("isolator")) b.isolator = read_isolator(*isolator);
+  // Without an isolator section the thesis isolator is used, each value noted as a default.
+  if (b.isolated) {
+    const auto isolator = node.find("isolator");
+    b.isolator = read_isolator(isolator ? *isolator : node.empty_child("isolator"));
+  }
   read_damping(node, b);
   if (const auto walls = node.find("walls")) {
     const int levels = static_cast<int>(b.floors.size()) + (b.isolated ? 1 : 0);
@@ -325,9 +385,13 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
   const auto record = node.find("record");
   if (!record) {
     for (const char* key : {"format", "column", "time_column", "dt", "unit", "scale"})
-      if (const auto n = node.find(key))
-        n->fail("applies to a record file, but no 'record' is given (the built-in pulse is used)");
-    if (const auto pulse = node.find("pulse")) g.pulse = read_pulse(*pulse);
+      if (written(node.yaml(), key))
+        node.find(key)->fail(
+            "applies to a record file, but no 'record' is given (the built-in pulse is used)");
+    if (const auto pulse = node.find("pulse"))
+      g.pulse = read_pulse(*pulse);
+    else
+      node.note_default("pulse", "the built-in near-fault pulse (amplitude 1 m/s, period 2 s)");
     return g;
   }
   if (const auto pulse = node.find("pulse"))
@@ -344,29 +408,43 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
   if (format)
     read.format = format->choice<Format>(
         {{"auto", Format::kAuto}, {"peer", Format::kPeer}, {"columns", Format::kColumns}});
+  // What `auto` will find decides which keys apply (a missing file is reported when it is read).
+  Format effective = read.format;
+  if (effective == Format::kAuto)
+    effective = sniff_record_format(g.record_path).value_or(Format::kAuto);
+  node.read_number("scale", Bound::kNonZero, read.scale);
+  if (effective == Format::kPeer) {
+    for (const char* key : {"column", "time_column", "dt", "unit"})
+      if (written(node.yaml(), key))
+        node.find(key)->fail(
+            "not used: a PEER .AT2 record carries its own NPTS/DT and is in g (use 'scale' to "
+            "change the amplitude); a PEER record uses: record, format, scale, extra_time");
+    return g;
+  }
+  // Unknown (the file cannot be read now; reading it later reports why): the column keys are
+  // read as given, without requiring any.
+  const bool known = effective == Format::kColumns;
   node.read_integer("column", 0, kIntMax, read.column);
   const auto time_column = node.find("time_column");
   if (time_column) {
     read.time_column = time_column->integer(0, kIntMax);
     if (read.time_column == read.column)
       time_column->fail("is the same as 'column' (" + std::to_string(read.column) + ")");
-    if (node.has("dt"))
+    if (written(node.yaml(), "dt"))
       node.find("dt")->fail("give either 'dt' or 'time_column' (dt is then read from the times)");
+  } else if (known || written(node.yaml(), "dt")) {
+    read.dt = node.required("dt").quantity(dim::kTime, Bound::kPositive);
   }
-  node.read_quantity("dt", dim::kTime, Bound::kNonNegative, read.dt);
-  if (read.format == Format::kColumns && !time_column && read.dt == 0.0)
-    node.fail_at_key("dt", "a columns record without 'time_column' needs 'dt' > 0");
-  if (const auto unit = node.find("unit")) {
+  // A column file says nothing about its unit: a wrong guess scales everything by 100 or 9.81.
+  if (known || written(node.yaml(), "unit")) {
+    const InputNode unit = node.required("unit");
     read.unit =
-        unit->choice<AccelerationUnit>({{"g", AccelerationUnit::kG},
-                                        {"m/s2", AccelerationUnit::kMetrePerSecond2},
-                                        {"m/s^2", AccelerationUnit::kMetrePerSecond2},
-                                        {"cm/s2", AccelerationUnit::kCentimetrePerSecond2},
-                                        {"cm/s^2", AccelerationUnit::kCentimetrePerSecond2}});
-    if (read.format == Format::kPeer && read.unit != AccelerationUnit::kG)
-      unit->fail("PEER files are always in g (use 'scale' to change the amplitude)");
+        unit.choice<AccelerationUnit>({{"g", AccelerationUnit::kG},
+                                       {"m/s2", AccelerationUnit::kMetrePerSecond2},
+                                       {"m/s^2", AccelerationUnit::kMetrePerSecond2},
+                                       {"cm/s2", AccelerationUnit::kCentimetrePerSecond2},
+                                       {"cm/s^2", AccelerationUnit::kCentimetrePerSecond2}});
   }
-  node.read_number("scale", Bound::kNonZero, read.scale);
   return g;
 }
 
@@ -375,17 +453,20 @@ AnalysisConfig read_analysis(const InputNode& node) {
   node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings",
                     "newton_tolerance", "max_iterations", "steps_per_contact", "locate_events"});
   AnalysisConfig a;
-  if (const auto stepping = node.find("stepping"))
-    a.stepping = stepping->choice<Stepping>(
-        {{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}});
-  node.read_quantity("dt", dim::kTime, Bound::kNonNegative, a.dt);
-  node.read_number("steps_per_period", Bound::kNonNegative,
-                   a.steps_per_period);  // 0: no period limit
-  node.read_number("tolerance", Bound::kPositive, a.tolerance);
+  node.read_choice<Stepping>(
+      "stepping", {{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}}, a.stepping);
+  if (a.stepping == Stepping::kFixed) {
+    a.dt = node.required("dt").quantity(dim::kTime, Bound::kPositive);
+  } else {
+    node.read_quantity("dt", dim::kTime, Bound::kNonNegative, a.dt);
+    if (a.dt == 0.0)  // 0: the step follows the shortest period
+      node.read_number("steps_per_period", Bound::kPositive, a.steps_per_period);
+    node.read_number("tolerance", Bound::kPositive, a.tolerance);
+    node.read_number("steps_per_contact", Bound::kPositive, a.steps_per_contact);
+  }
   node.read_integer("max_halvings", 0, kMaxHalvings, a.max_halvings);
   node.read_number("newton_tolerance", Bound::kPositive, a.newton_tolerance);
   node.read_integer("max_iterations", 1, kIntMax, a.max_iterations);
-  node.read_number("steps_per_contact", Bound::kPositive, a.steps_per_contact);
   node.read_boolean("locate_events", a.locate_events);
   return a;
 }
@@ -393,8 +474,8 @@ AnalysisConfig read_analysis(const InputNode& node) {
 OutputConfig read_output(const InputNode& node) {
   node.expect_keys({"interval", "histories"});
   OutputConfig o;
-  node.read_quantity("interval", dim::kTime, Bound::kNonNegative, o.interval);
   node.read_boolean("histories", o.histories);
+  if (o.histories) node.read_quantity("interval", dim::kTime, Bound::kNonNegative, o.interval);
   return o;
 }
 
@@ -408,9 +489,9 @@ int column_of(const YAML::Mark& mark) {
 }  // namespace
 
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
-                       const std::string& base_dir) {
+                       const std::string& base_dir, std::vector<std::string>* used_keys) {
   try {
-    const InputNode top(root, source_name);
+    const InputNode top = InputNode::tracked(root, source_name);
     top.expect_keys({"building", "neighbours", "ground_motion", "analysis", "output"});
     ModelConfig model;
     model.source = source_name;
@@ -421,8 +502,31 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
     }
     if (const auto n = top.find("ground_motion"))
       model.ground_motion = read_ground_motion(*n, base_dir);
-    if (const auto n = top.find("analysis")) model.analysis = read_analysis(*n);
-    if (const auto n = top.find("output")) model.output = read_output(*n);
+    else
+      top.note_default("ground_motion",
+                       "the built-in near-fault pulse (amplitude 1 m/s, period 2 s)");
+    // An absent section reads as an empty one: its defaults are noted like any other.
+    const auto section = [&](const char* key) {
+      if (const auto n = top.find(key)) return *n;
+      return top.empty_child(key);
+    };
+    model.analysis = read_analysis(section("analysis"));
+    model.output = read_output(section("output"));
+    // Structure names label every output: two equal ones would mix their peaks.
+    std::vector<std::string> names{model.building.name};
+    for (std::size_t i = 0; i < model.neighbours.size(); ++i) {
+      const std::string& name = model.neighbours[i].building.name;
+      if (std::find(names.begin(), names.end(), name) != names.end())
+        top.find("neighbours")
+            ->elements()[i]
+            .fail_at_key("building.name",
+                         "duplicate structure name '" + name +
+                             "': give each building its own name (default 'building')");
+      names.push_back(name);
+    }
+    if (used_keys) *used_keys = top.used_keys();
+    top.refuse_unused();
+    for (const DefaultUsed& d : top.defaults_used()) model.defaults.emplace_back(d.key, d.value);
     return model;
   } catch (const YAML::Exception& e) {
     // Not expected (keys are found by iteration, never indexed), but keep the promise of

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "solver/io/yaml_reader.h"
 #include "solver/structures/config.h"
@@ -16,7 +17,9 @@ ModelConfig load_model_file(const std::string& path);
 
 // Parses an already-loaded YAML tree. source_name is used in messages, base_dir resolves
 // relative record paths (absolute ones are kept).
+// `used_keys` (optional) receives every key path the reader looked up for this model (the keys its
+// choices of model, law and format use), list indices dropped.
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
-                       const std::string& base_dir);
+                       const std::string& base_dir, std::vector<std::string>* used_keys = nullptr);
 
 }  // namespace isopound

@@ -2,7 +2,9 @@
 // JSON key ends in its unit (_m, _s, _N, _J, _m_s2) or is dimensionless.
 #include "solver/io/report.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <stdexcept>
@@ -31,19 +33,45 @@ const char* isolator_name(IsolatorConfig::Model m) {
   return "?";
 }
 
-nlohmann::json peak(const Peak& p, const char* key) {
-  return {{key, p.value}, {"time_s", p.time}};
+// Every peak in summary.json has this one shape: |x| max with its time, and the largest positive
+// and negative values with theirs, all in `unit` (SI).
+nlohmann::json peak(const Peak& p, const char* unit) {
+  return {{"value", p.value},
+          {"unit", unit},
+          {"time_s", p.time},
+          {"positive", p.positive},
+          {"positive_time_s", p.time_positive},
+          {"negative", p.negative},
+          {"negative_time_s", p.time_negative}};
+}
+
+bool is_contact(const Element& el) {
+  return el.output_count() == 6 && el.output_name(5) == "dissipated_energy";
+}
+
+// Impact-dissipated energy: the contacts' own dissipation at the end of the run.
+double impact_energy(const Model& model) {
+  double sum = 0.0;
+  for (const auto& el : model.elements)
+    if (is_contact(*el)) sum += el->output(5);
+  return sum;
+}
+
+double structure_weight(const Model& model, const StructureInfo& s) {
+  double mass = 0.0;
+  for (const int d : s.level_dofs) mass += model.mass(d, d);
+  return mass * kGravity;
 }
 
 }  // namespace
 
 nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
-                            const JobResult* unobstructed) {
+                            const UnobstructedResult* unobstructed) {
   using nlohmann::json;
   const AnalysisResult& r = job.analysis;
   const Model& model = job.model;
   json j;
-  j["isopound_version"] = "0.1.0";
+  j["isopound_version"] = kIsopoundVersion;
   j["model_file"] = config.source;
 
   const GroundMotionConfig& g = config.ground_motion;
@@ -62,21 +90,27 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                          "piecewise-linear acceleration, zero initial conditions"}};
 
   const AnalysisConfig& a = config.analysis;
+  json defaults = json::object();
+  for (const auto& [key, value] : config.defaults) defaults[key] = value;
   j["settings"] = {
       {"integrator", "Newmark average acceleration (gamma 1/2, beta 1/4), Newton-Raphson"},
       {"stepping", stepping_name(a.stepping)},
       {"dt_s", a.dt},
+      {"analysis_interval_s", r.stats.interval},
       {"steps_per_period", a.steps_per_period},
       {"tolerance", a.tolerance},
       {"max_halvings", a.max_halvings},
       {"newton_tolerance", a.newton_tolerance},
       {"max_iterations", a.max_iterations},
       {"extra_time_s", g.extra_time},
-      {"isolator_model", isolator_name(config.building.isolator.model)}};
+      {"output_interval_s", config.output.interval > 0 ? config.output.interval : job.motion.dt},
+      {"isolator_model", isolator_name(config.building.isolator.model)},
+      {"defaults_used", defaults}};
 
   json structures = json::array();
   std::size_t story_index = 0;
-  for (const StructureInfo& s : model.structures) {
+  for (std::size_t si = 0; si < model.structures.size(); ++si) {
+    const StructureInfo& s = model.structures[si];
     json js;
     js["name"] = s.name;
     json levels = json::array();
@@ -84,21 +118,33 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       const int d = s.level_dofs[k];
       levels.push_back(
           {{"label", model.dofs[d].label},
-           {"displacement", peak(r.displacement[d], "peak_m")},
-           {"velocity", peak(r.velocity[d], "peak_m_s")},
-           {"absolute_acceleration", peak(r.absolute_acceleration[d], "peak_m_s2")},
-           {"absolute_acceleration_peak_g", r.absolute_acceleration[d].value / kGravity}});
+           {"displacement", peak(r.displacement[d], "m")},
+           {"velocity", peak(r.velocity[d], "m/s")},
+           {"absolute_acceleration", peak(r.absolute_acceleration[d], "m/s2")},
+           {"absolute_acceleration_peak_g", r.absolute_acceleration[d].value / kGravity},
+           {"residual_displacement_m", r.final_displacement[d]}});
     }
     js["levels"] = levels;
-    if (s.has_base) js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
+    const double weight = structure_weight(model, s);
+    js["weight_N"] = weight;
+    if (s.has_base) {
+      js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
+      // What is left on the isolators when the shaking (and extra_time) is over.
+      js["residual_isolator_displacement_m"] = r.final_displacement[s.level_dofs[0]];
+      js["base_shear"] = peak(r.base_shear[si], "N");
+      js["base_shear_coefficient"] = weight > 0 ? r.base_shear[si].value / weight : 0.0;
+    }
     json stories = json::array();
     const std::size_t count = s.story_heights.size();
     for (std::size_t k = 0; k < count; ++k, ++story_index) {
       const Story& st = r.stories[story_index];
-      stories.push_back({{"label", st.label},
-                         {"height_m", st.height},
-                         {"drift", peak(r.drift[story_index], "peak_m")},
-                         {"drift_ratio", peak(r.drift_ratio[story_index], "peak")}});
+      stories.push_back(
+          {{"label", st.label},
+           {"height_m", st.height},
+           {"drift", peak(r.drift[story_index], "m")},
+           {"drift_ratio", peak(r.drift_ratio[story_index], "-")},
+           {"shear", peak(r.story_shear[story_index], "N")},
+           {"shear_coefficient", weight > 0 ? r.story_shear[story_index].value / weight : 0.0}});
     }
     js["stories"] = stories;
     structures.push_back(js);
@@ -110,38 +156,45 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     const Element& el = *model.elements[e];
     json je;
     je["label"] = el.label();
-    for (int k = 0; k < el.output_count(); ++k)
-      je["peak_" + el.output_name(k)] = {{"value", r.element_outputs[e][k].value},
-                                         {"unit", el.output_unit(k)},
-                                         {"time_s", r.element_outputs[e][k].time}};
+    for (int k = 0; k < el.output_count(); ++k) {
+      if (el.output_name(k) == "impacts") {  // a count: an integer, no peak shape
+        je["impacts"] = static_cast<long>(std::lround(r.element_outputs[e][k].value));
+        continue;
+      }
+      je["peak_" + el.output_name(k)] = peak(r.element_outputs[e][k], el.output_unit(k).c_str());
+    }
     elements.push_back(je);
   }
   j["elements"] = elements;
 
   const EnergyBalance& en = r.energy;
+  const double impacts = impact_energy(model);
   j["energy"] = {{"input_J", en.input},
                  {"kinetic_J", en.kinetic},
                  {"elastic_J", en.elastic},
                  {"viscous_J", en.viscous},
                  {"hysteretic_J", en.hysteretic},
+                 {"isolator_hysteretic_J", en.hysteretic - impacts},
+                 {"impact_dissipated_J", impacts},
                  {"balance_error_J", en.error},
                  {"relative_error", en.relative_error},
                  {"max_relative_error", en.max_relative_error},
                  {"note",
                   "each term integrated from its power with the trapezoidal rule in "
-                  "time; relative_error = |input - sum| / input at the end"}};
+                  "time; relative_error = |input - sum| / input at the end; hysteretic = "
+                  "isolator_hysteretic + impact_dissipated"}};
   if (unobstructed) {
     // The main building is structure 0 in both runs, with the same DOF and story numbering.
-    const AnalysisResult& u = unobstructed->analysis;
+    const AnalysisResult& u = unobstructed->job.analysis;
     const StructureInfo& s = model.structures[0];
-    const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+    const auto ratio = [](double x, double y) { return y > 0 ? x / y : 0.0; };
     json levels = json::array();
     for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
       const int d = s.level_dofs[k];
       levels.push_back(
           {{"label", model.dofs[d].label},
-           {"unobstructed_displacement_m", u.displacement[d].value},
-           {"unobstructed_absolute_acceleration_m_s2", u.absolute_acceleration[d].value},
+           {"unobstructed_displacement", peak(u.displacement[d], "m")},
+           {"unobstructed_absolute_acceleration", peak(u.absolute_acceleration[d], "m/s2")},
            {"displacement_amplification", ratio(r.displacement[d].value, u.displacement[d].value)},
            {"acceleration_amplification",
             ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[d].value)}});
@@ -150,15 +203,22 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     const std::size_t count = s.story_heights.size();
     for (std::size_t k = 0; k < count; ++k)
       stories.push_back({{"label", r.stories[k].label},
-                         {"unobstructed_drift_m", u.drift[k].value},
+                         {"unobstructed_drift", peak(u.drift[k], "m")},
                          {"drift_amplification", ratio(r.drift[k].value, u.drift[k].value)}});
+    json gaps = json::array();
+    for (const ContactGap& c : unobstructed->gaps)
+      gaps.push_back({{"label", c.label},
+                      {"gap_m", c.gap},
+                      {"critical_gap_m", c.critical_gap},
+                      {"pounds_without_obstruction", c.critical_gap > c.gap}});
     j["unobstructed"] = {
         {"note",
-         "the same analysis without walls and neighbours; "
-         "amplification = peak with pounding / peak without"},
+         "the same analysis without walls and without contacts between neighbours; "
+         "amplification = peak with pounding / peak without; critical_gap_m per contact = the "
+         "largest closing of its gap without contact (a smaller gap pounds under this record)"},
         {"levels", levels},
         {"stories", stories},
-        {"critical_gap_m", s.has_base ? u.displacement[s.level_dofs[0]].value : 0.0}};
+        {"contacts", gaps}};
   }
 
   const RunStatistics& st = r.stats;
@@ -174,7 +234,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
 }
 
 void write_summary(const std::string& path, const ModelConfig& config, const JobResult& job,
-                   const JobResult* unobstructed) {
+                   const UnobstructedResult* unobstructed) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
   out << std::setw(2) << summary_json(config, job, unobstructed) << '\n';
@@ -196,6 +256,35 @@ void write_histories(const std::string& path, const History& history) {
   if (std::fclose(f) != 0) throw std::runtime_error("error writing " + path);
 }
 
+CsvHistoryWriter::CsvHistoryWriter(std::string path) : path_(std::move(path)) {
+  file_ = std::fopen(path_.c_str(), "w");
+  if (!file_) throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno));
+}
+
+CsvHistoryWriter::~CsvHistoryWriter() {
+  if (file_) std::fclose(file_);
+}
+
+void CsvHistoryWriter::begin(const std::vector<std::string>& columns) {
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    std::fprintf(file_, "%s%s", c ? "," : "", columns[c].c_str());
+  std::fputc('\n', file_);
+}
+
+void CsvHistoryWriter::row(const double* values, std::size_t count) {
+  for (std::size_t c = 0; c < count; ++c) std::fprintf(file_, "%s%.9g", c ? "," : "", values[c]);
+  std::fputc('\n', file_);
+  ++rows_;
+}
+
+void CsvHistoryWriter::close() {
+  if (!file_) return;
+  const bool failed = std::ferror(file_) != 0;
+  const bool close_failed = std::fclose(file_) != 0;
+  file_ = nullptr;
+  if (failed || close_failed) throw std::runtime_error("error writing " + path_);
+}
+
 void print_summary(std::ostream& out, const ModelConfig& config, const JobResult& job) {
   const AnalysisResult& r = job.analysis;
   const Model& model = job.model;
@@ -208,8 +297,30 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
   out << line;
   out << "Building " << config.building.name << " ("
       << isolator_name(config.building.isolator.model) << " isolators)\n";
+  if (!config.defaults.empty()) {
+    out << "Defaults used (keys not in the file):\n";
+    for (const auto& [key, value] : config.defaults) out << "  " << key << " = " << value << '\n';
+  }
+  std::snprintf(
+      line, sizeof line,
+      "Analysis: %s stepping, interval %.4g s (record %.4g s / %d), output every %.4g s\n",
+      stepping_name(config.analysis.stepping), r.stats.interval, job.motion.dt,
+      r.stats.interval > 0 ? static_cast<int>(std::lround(job.motion.dt / r.stats.interval)) : 0,
+      config.output.interval > 0 ? config.output.interval : job.motion.dt);
+  out << line;
   std::size_t story_index = 0;
-  for (const StructureInfo& s : model.structures) {
+  for (std::size_t si = 0; si < model.structures.size(); ++si) {
+    const StructureInfo& s = model.structures[si];
+    if (s.has_base) {
+      const double weight = structure_weight(model, s);
+      std::snprintf(line, sizeof line,
+                    "  %-22s base shear %8.1f kN (V/W %.3f)   residual isolator displacement "
+                    "%.2f cm\n",
+                    s.name.c_str(), r.base_shear[si].value / 1e3,
+                    weight > 0 ? r.base_shear[si].value / weight : 0.0,
+                    100 * r.final_displacement[s.level_dofs[0]]);
+      out << line;
+    }
     for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
       const int d = s.level_dofs[k];
       std::snprintf(line, sizeof line,
@@ -220,9 +331,10 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
     }
     const std::size_t count = s.story_heights.size();
     for (std::size_t k = 0; k < count; ++k, ++story_index) {
-      std::snprintf(line, sizeof line, "  %-22s drift %8.3f cm   drift ratio %.3f %%\n",
+      std::snprintf(line, sizeof line,
+                    "  %-22s drift %8.3f cm   drift ratio %.3f %%   shear %8.1f kN\n",
                     r.stories[story_index].label.c_str(), 100 * r.drift[story_index].value,
-                    100 * r.drift_ratio[story_index].value);
+                    100 * r.drift_ratio[story_index].value, r.story_shear[story_index].value / 1e3);
       out << line;
     }
   }
@@ -240,9 +352,10 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
     out << '\n';
   }
   std::snprintf(line, sizeof line,
-                "Energy: input %.4g kJ, hysteretic %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
-                r.energy.input / 1e3, r.energy.hysteretic / 1e3, r.energy.viscous / 1e3,
-                r.energy.relative_error);
+                "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
+                "viscous %.4g kJ, balance error %.2e\n",
+                r.energy.input / 1e3, (r.energy.hysteretic - impact_energy(model)) / 1e3,
+                impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
   out << line;
   std::snprintf(line, sizeof line,
                 "Steps: %ld accepted, %ld rejected, %ld Newton iterations, step %.3g..%.3g s, "
@@ -250,6 +363,46 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                 r.stats.steps, r.stats.rejected_steps, r.stats.newton_iterations, r.stats.min_step,
                 r.stats.max_step, 1e3 * r.stats.wall_seconds);
   out << line;
+}
+
+}  // namespace isopound
+
+namespace isopound {
+
+void print_unobstructed(std::ostream& out, const ModelConfig& config, const JobResult& job,
+                        const UnobstructedResult& unobstructed) {
+  (void)config;
+  const AnalysisResult& r = job.analysis;
+  const AnalysisResult& u = unobstructed.job.analysis;
+  const Model& model = job.model;
+  const StructureInfo& s = model.structures[0];
+  char line[256];
+  out << "Without walls and neighbour contacts (amplification = with / without):\n";
+  for (const int d : s.level_dofs) {
+    std::snprintf(
+        line, sizeof line,
+        "  %-22s displacement %8.2f cm (x%.2f)   abs. acceleration %6.3f g (x%.2f)\n",
+        model.dofs[d].label.c_str(), 100 * u.displacement[d].value,
+        u.displacement[d].value > 0 ? r.displacement[d].value / u.displacement[d].value : 0.0,
+        u.absolute_acceleration[d].value / kGravity,
+        u.absolute_acceleration[d].value > 0
+            ? r.absolute_acceleration[d].value / u.absolute_acceleration[d].value
+            : 0.0);
+    out << line;
+  }
+  for (std::size_t k = 0; k < s.story_heights.size(); ++k) {
+    std::snprintf(line, sizeof line, "  %-22s drift %8.3f cm (x%.2f)\n", r.stories[k].label.c_str(),
+                  100 * u.drift[k].value,
+                  u.drift[k].value > 0 ? r.drift[k].value / u.drift[k].value : 0.0);
+    out << line;
+  }
+  out << "Critical gaps (a gap below this pounds under this record):\n";
+  for (const ContactGap& c : unobstructed.gaps) {
+    std::snprintf(line, sizeof line, "  %-34s gap %7.2f cm   critical gap %7.2f cm%s\n",
+                  c.label.c_str(), 100 * c.gap, 100 * c.critical_gap,
+                  c.critical_gap > c.gap ? "   (pounds)" : "");
+    out << line;
+  }
 }
 
 }  // namespace isopound

@@ -10,6 +10,9 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <mutex>
+#include <set>
+#include <sstream>
 
 namespace isopound {
 namespace {
@@ -67,7 +70,68 @@ std::size_t edit_distance(std::string_view a_text, std::string_view b_text) {
   return row[b.size()];
 }
 
+// "building.walls[1].k" -> "building.walls.k": the schema does not care which list item.
+std::string generic_path(std::string_view path) {
+  std::string out;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i] == '[') {
+      while (i < path.size() && path[i] != ']') ++i;
+      continue;
+    }
+    out += path[i];
+  }
+  return out;
+}
+
+std::mutex& registry_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::set<std::string>& registry() {
+  static std::set<std::string> keys;
+  return keys;
+}
+
+std::string format_si(double value, const Dimension& d) {
+  std::ostringstream os;
+  os.precision(6);
+  os << value;
+  static const std::pair<Dimension, const char*> kUnits[] = {
+      {dim::kLength, "m"},      {dim::kMass, "kg"},           {dim::kTime, "s"},
+      {dim::kVelocity, "m/s"},  {dim::kAcceleration, "m/s2"}, {dim::kForce, "N"},
+      {dim::kStiffness, "N/m"}, {dim::kDamping, "N s/m"}};
+  if (d == dim::kNone) return os.str();
+  for (const auto& [dimension, unit] : kUnits)
+    if (d == dimension) return os.str() + " " + unit;
+  return os.str() + " (SI, " + d.to_string() + ")";
+}
+
 }  // namespace
+
+// The ledger of one tracked read: every map reached, the keys looked up in it, the choices made
+// in it ("law: hertz") and the defaults used.
+struct KeyLedger {
+  struct Map {
+    YAML::Node node;
+    std::string path;
+    std::vector<std::string> used;
+    std::vector<std::string> choices;
+  };
+  std::vector<Map> maps;
+  std::vector<DefaultUsed> defaults;
+
+  Map& at(const std::string& path, const YAML::Node& node) {
+    for (Map& m : maps)
+      if (m.path == path) return m;
+    maps.push_back(Map{node, path, {}, {}});
+    return maps.back();
+  }
+};
+
+std::vector<std::string> known_model_keys() {
+  const std::lock_guard<std::mutex> lock(registry_mutex());
+  return {registry().begin(), registry().end()};
+}
 
 InputError::InputError(std::string file, int line, int column, std::string key, std::string what)
     : std::runtime_error(format_message(file, line, column, key, what)),
@@ -79,15 +143,110 @@ InputError::InputError(std::string file, int line, int column, std::string key, 
 
 InputNode::InputNode(YAML::Node root, std::string file)
     : InputNode(std::move(root), std::move(file), "", YAML::Mark::null_mark(),
-                YAML::Mark::null_mark()) {}
+                YAML::Mark::null_mark(), nullptr) {}
 
 InputNode::InputNode(YAML::Node node, std::string file, std::string path, YAML::Mark key_mark,
-                     YAML::Mark parent_mark)
+                     YAML::Mark parent_mark, std::shared_ptr<KeyLedger> ledger)
     : node_(std::move(node)),
       file_(std::move(file)),
       path_(std::move(path)),
       key_mark_(key_mark),
-      parent_mark_(parent_mark) {}
+      parent_mark_(parent_mark),
+      ledger_(std::move(ledger)) {
+  if (ledger_ && node_.IsDefined() && node_.IsMap()) ledger_->at(path_, node_);
+}
+
+InputNode InputNode::tracked(YAML::Node root, std::string file) {
+  return InputNode(std::move(root), std::move(file), "", YAML::Mark::null_mark(),
+                   YAML::Mark::null_mark(), std::make_shared<KeyLedger>());
+}
+
+void InputNode::note_used(std::string_view key) const {
+  if (!ledger_) return;
+  KeyLedger::Map& m = ledger_->at(path_, node_);
+  if (std::find(m.used.begin(), m.used.end(), key) == m.used.end()) m.used.emplace_back(key);
+  const std::lock_guard<std::mutex> lock(registry_mutex());
+  registry().insert(generic_path(child_path(key)));
+}
+
+void InputNode::note_choice(const std::string& text) const {
+  if (!ledger_) return;
+  const std::size_t dot = path_.find_last_of('.');
+  const std::string parent = dot == std::string::npos ? "" : path_.substr(0, dot);
+  const std::string key = dot == std::string::npos ? path_ : path_.substr(dot + 1);
+  if (key.find('[') != std::string::npos) return;  // a list item is not a key of a map
+  for (KeyLedger::Map& m : ledger_->maps)
+    if (m.path == parent) m.choices.push_back(key + ": " + text);
+}
+
+void InputNode::note_default(std::string_view key, std::string value) const {
+  if (!ledger_) return;
+  ledger_->defaults.push_back({child_path(key), std::move(value)});
+}
+
+std::vector<DefaultUsed> InputNode::defaults_used() const {
+  return ledger_ ? ledger_->defaults : std::vector<DefaultUsed>{};
+}
+
+std::vector<std::string> InputNode::used_keys() const {
+  std::set<std::string> keys;
+  if (ledger_)
+    for (const KeyLedger::Map& m : ledger_->maps)
+      for (const std::string& key : m.used)
+        keys.insert(generic_path(m.path.empty() ? key : m.path + "." + key));
+  return {keys.begin(), keys.end()};
+}
+
+void InputNode::refuse_unused() const {
+  if (!ledger_) return;
+  struct Unused {
+    const KeyLedger::Map* map;
+    std::string key;
+    YAML::Mark mark;
+  };
+  std::optional<Unused> first;
+  for (const KeyLedger::Map& m : ledger_->maps) {
+    if (!m.node.IsDefined() || !m.node.IsMap()) continue;
+    for (const auto& entry : m.node) {
+      if (!entry.first.IsScalar()) continue;
+      if (!entry.second.IsDefined() || entry.second.IsNull()) continue;  // null = absent
+      const std::string& key = entry.first.Scalar();
+      if (std::find(m.used.begin(), m.used.end(), key) != m.used.end()) continue;
+      const YAML::Mark mark = mark_of(entry.first);
+      const auto before = [](const YAML::Mark& a, const YAML::Mark& b) {
+        if (!has_position(b)) return has_position(a);
+        return has_position(a) && (a.line < b.line || (a.line == b.line && a.column < b.column));
+      };
+      if (!first || before(mark, first->mark)) first = Unused{&m, key, mark};
+    }
+  }
+  if (!first) return;
+  const KeyLedger::Map& m = *first->map;
+  std::string why = "'" + first->key + "' is not used";
+  if (!m.choices.empty()) {
+    std::string choices;
+    for (const auto& c : m.choices) choices += (choices.empty() ? "" : ", ") + c;
+    why += " with " + choices;
+  } else if (!m.path.empty()) {
+    why += " here";
+  }
+  std::vector<std::string_view> used(m.used.begin(), m.used.end());
+  std::string_view suggestion;
+  std::size_t best = 3;
+  for (const auto& candidate : used) {
+    const std::size_t d = edit_distance(first->key, candidate);
+    if (d < best && d < std::max(first->key.size(), candidate.size())) {
+      best = d;
+      suggestion = candidate;
+    }
+  }
+  if (!suggestion.empty()) why += " (did you mean '" + std::string(suggestion) + "'?)";
+  why += "; " + (m.path.empty() ? std::string("the file") : m.path) +
+         " uses: " + (used.empty() ? std::string("nothing else") : join(used)) +
+         ". Remove it (a study override can set it to ~)";
+  const std::string key = m.path.empty() ? first->key : m.path + "." + first->key;
+  fail_at(file_, has_position(first->mark) ? first->mark : mark_of(m.node), key, why);
+}
 
 // A scalar's own mark is where its text is. A null value's mark is wherever the next token
 // starts (often the next line), and a block map's is its first key: prefer the key for those.
@@ -171,10 +330,12 @@ void InputNode::expect_keys(const std::vector<std::string_view>& names) const {
 }
 
 std::optional<InputNode> InputNode::find(std::string_view key) const {
+  note_used(key);
   if (!node_.IsDefined() || !node_.IsMap()) return std::nullopt;
   for (const auto& entry : node_) {
-    if (entry.first.IsScalar() && entry.first.Scalar() == key)
-      return InputNode(entry.second, file_, child_path(key), mark_of(entry.first), mark());
+    if (!entry.first.IsScalar() || entry.first.Scalar() != key) continue;
+    if (ledger_ && (!entry.second.IsDefined() || entry.second.IsNull())) return std::nullopt;
+    return InputNode(entry.second, file_, child_path(key), mark_of(entry.first), mark(), ledger_);
   }
   return std::nullopt;
 }
@@ -189,6 +350,10 @@ InputNode InputNode::required(std::string_view key) const {
   return *child;
 }
 
+InputNode InputNode::empty_child(std::string_view key) const {
+  return InputNode(YAML::Node(), file_, child_path(key), YAML::Mark::null_mark(), mark(), ledger_);
+}
+
 std::vector<InputNode> InputNode::elements() const {
   if (!node_.IsDefined() || !node_.IsSequence()) fail("expected a list, got " + kind());
   std::vector<InputNode> out;
@@ -196,7 +361,7 @@ std::vector<InputNode> InputNode::elements() const {
   const YAML::Mark here = mark();
   for (const auto& element : node_)
     out.push_back(InputNode(element, file_, path_ + "[" + std::to_string(out.size()) + "]",
-                            YAML::Mark::null_mark(), here));
+                            YAML::Mark::null_mark(), here, ledger_));
   return out;
 }
 
@@ -269,19 +434,34 @@ bool InputNode::boolean() const {
 
 void InputNode::read_quantity(std::string_view key, const Dimension& expected, Bound bound,
                               double& out) const {
-  if (const auto child = find(key)) out = child->quantity(expected, bound);
+  if (const auto child = find(key))
+    out = child->quantity(expected, bound);
+  else
+    note_default(key, format_si(out, expected));
 }
 void InputNode::read_number(std::string_view key, Bound bound, double& out) const {
-  if (const auto child = find(key)) out = child->number(bound);
+  if (const auto child = find(key))
+    out = child->number(bound);
+  else
+    note_default(key, format_si(out, dim::kNone));
 }
 void InputNode::read_integer(std::string_view key, int min, int max, int& out) const {
-  if (const auto child = find(key)) out = child->integer(min, max);
+  if (const auto child = find(key))
+    out = child->integer(min, max);
+  else
+    note_default(key, std::to_string(out));
 }
 void InputNode::read_boolean(std::string_view key, bool& out) const {
-  if (const auto child = find(key)) out = child->boolean();
+  if (const auto child = find(key))
+    out = child->boolean();
+  else
+    note_default(key, out ? "true" : "false");
 }
 void InputNode::read_string(std::string_view key, std::string& out) const {
-  if (const auto child = find(key)) out = child->string();
+  if (const auto child = find(key))
+    out = child->string();
+  else
+    note_default(key, out);
 }
 
 void InputNode::fail_unknown_choice(const std::string& text,

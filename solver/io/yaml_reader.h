@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <initializer_list>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -53,6 +54,18 @@ enum class Bound {
   kFraction,     // in [0, 1): damping ratios
 };
 
+// A default the reader used for a key that was not written: shown in the run's settings.
+struct DefaultUsed {
+  std::string key;    // full key path, "building.walls.e"
+  std::string value;  // as it acts, SI with its unit ("0.7", "500000 kg")
+};
+
+struct KeyLedger;  // what a tracked read looked up (yaml_reader.cpp)
+
+// Every key path a tracked read has ever looked up in this process, list indices dropped
+// ("building.walls.k_h", "neighbours.building.floors.mass"): the reader's own schema.
+std::vector<std::string> known_model_keys();
+
 // A node of an input file together with its key path ("building.floors[1].mass") and the
 // nearest known position. Nodes built in code have no mark: errors then point at the nearest
 // parent that has one, or at line 0.
@@ -60,6 +73,11 @@ class InputNode {
  public:
   // The root of a document; `file` is used in messages only.
   InputNode(YAML::Node root, std::string file);
+  // The root of a document read under the one rule for keys: a null value ("walls: ~") is the
+  // same as an absent key; every key looked up (find, has, required, read_*) counts as used,
+  // and refuse_unused() then refuses any other key of every map read, naming what the section
+  // uses. Defaults taken by read_* for absent keys are collected (defaults_used()).
+  static InputNode tracked(YAML::Node root, std::string file);
 
   const YAML::Node& yaml() const { return node_; }
   const std::string& file() const { return file_; }
@@ -76,6 +94,8 @@ class InputNode {
   std::optional<InputNode> find(std::string_view key) const;
   // Throws "missing required key" at this node's position when absent.
   InputNode required(std::string_view key) const;
+  // An absent key as an empty value (same ledger): its section's defaults are then noted.
+  InputNode empty_child(std::string_view key) const;
   // The elements of a sequence, as "path[i]".
   std::vector<InputNode> elements() const;
 
@@ -93,19 +113,43 @@ class InputNode {
     const std::string text = string();
     std::vector<std::string_view> names;
     for (const auto& [name, value] : options) {
-      if (name == text) return value;
+      if (name == text) {
+        note_choice(text);
+        return value;
+      }
       names.push_back(name);
     }
     fail_unknown_choice(text, names);
   }
 
-  // --- optional keys of this map: each sets `out` only when `key` is present ---
+  // --- optional keys of this map: each sets `out` only when `key` is present; when it is
+  // absent, a tracked read records `out` as the default used (note_default) ---
+  template <typename T>
+  void read_choice(std::string_view key,
+                   std::initializer_list<std::pair<std::string_view, T>> options, T& out) const {
+    if (const auto child = find(key)) {
+      out = child->choice<T>(options);
+      return;
+    }
+    for (const auto& [name, value] : options)
+      if (value == out) return note_default(key, std::string(name));
+  }
   void read_quantity(std::string_view key, const Dimension& expected, Bound bound,
                      double& out) const;
   void read_number(std::string_view key, Bound bound, double& out) const;
   void read_integer(std::string_view key, int min, int max, int& out) const;
   void read_boolean(std::string_view key, bool& out) const;
   void read_string(std::string_view key, std::string& out) const;
+
+  // --- the one rule for keys (tracked reads only; no-ops otherwise) ---
+  // Throws an InputError for the first key, in file order, that no read looked up, in any map
+  // reached from this root.
+  void refuse_unused() const;
+  // Records that `key` of this map was absent and `value` is used instead.
+  void note_default(std::string_view key, std::string value) const;
+  std::vector<DefaultUsed> defaults_used() const;
+  // Every key path looked up so far, list indices dropped ("building.walls.k"), sorted.
+  std::vector<std::string> used_keys() const;
 
   // --- errors ---
   std::string kind() const;  // for messages: "a map", "a list", "an empty value", "'text'"
@@ -115,7 +159,9 @@ class InputNode {
 
  private:
   InputNode(YAML::Node node, std::string file, std::string path, YAML::Mark key_mark,
-            YAML::Mark parent_mark);
+            YAML::Mark parent_mark, std::shared_ptr<KeyLedger> ledger);
+  void note_used(std::string_view key) const;
+  void note_choice(const std::string& text) const;
   YAML::Mark mark() const;  // the best known 0-based position, possibly null
   std::string child_path(std::string_view key) const;
   [[noreturn]] void fail_unknown_choice(const std::string& text,
@@ -128,7 +174,8 @@ class InputNode {
   std::string path_;
   YAML::Mark
       key_mark_;  // where the key naming this node is written; null for the root and list items
-  YAML::Mark parent_mark_;  // the parent's best known position, the fallback
+  YAML::Mark parent_mark_;             // the parent's best known position, the fallback
+  std::shared_ptr<KeyLedger> ledger_;  // null: an untracked read (study files)
 };
 
 }  // namespace isopound

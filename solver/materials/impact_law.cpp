@@ -418,6 +418,23 @@ void validate(const LawEntry& law, const ImpactLawConfig& c) {
 
 }  // namespace
 
+ImpactLawUses impact_law_uses(std::string_view name) {
+  for (const LawEntry& law : kLaws) {
+    if (law.name != name) continue;
+    ImpactLawUses uses;
+    uses.k = law.uses_k;
+    uses.k_h = law.uses_k_h;
+    uses.n = law.uses_n;
+    uses.e = law.uses_e;
+    uses.mass = law.uses_mass;
+    uses.min_impact_velocity = name == "ye" || name == "pant_wijeyewickrema" ||
+                               name == "hertz_damp_muthukumar" || name == "hertz_damp_ye";
+    uses.xi_formula = name == "mahmoud_jankowski";
+    return uses;
+  }
+  throw std::invalid_argument("unknown impact law '" + std::string(name) + "'");
+}
+
 std::unique_ptr<ImpactLaw> make_impact_law(const ImpactLawConfig& config) {
   for (const LawEntry& law : kLaws) {
     if (law.name != config.law) continue;

@@ -81,6 +81,14 @@ double mahmoud_jankowski_xi(double e, std::string_view formula = "eq_3_12");
 // xi_h of Jankowski's nonlinear viscoelastic law (law 8, eq. 3.17):
 // (9 sqrt5 / 2) (1-e^2) / (e (e (9 pi - 16) + 16)).
 double jankowski_xi(double e);
+// Which ImpactLawConfig fields a law reads (the input reader asks only for those).
+struct ImpactLawUses {
+  bool k = false, k_h = false, n = false, e = false, mass = false;
+  bool min_impact_velocity = false;  // laws dividing by v_imp (4, 6, 9, 10)
+  bool xi_formula = false;           // mahmoud_jankowski
+};
+// Throws std::invalid_argument for an unknown name.
+ImpactLawUses impact_law_uses(std::string_view name);
 // "none", "concrete", "steel", "timber", "ceramic" <-> ImpactMaterial (throws for other names).
 ImpactMaterial impact_material_from_name(std::string_view name);
 std::string_view impact_material_name(ImpactMaterial m);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/excitation/ground_motion.h"
@@ -85,6 +86,7 @@ struct NeighbourConfig {
   bool right = true;       // side of the main building it stands on (+x = right)
   double gap = 0.1;        // m, clear distance at rest
   ImpactLawConfig impact;  // masses are taken from the two colliding levels
+  bool pounding = true;    // false: no contact elements (the unobstructed comparison)
 };
 
 struct GroundMotionConfig {
@@ -126,6 +128,9 @@ struct ModelConfig {
   GroundMotionConfig ground_motion;
   AnalysisConfig analysis;
   OutputConfig output;
+  // Keys the file did not give and the values used for them ("building.walls[0].mass",
+  // "500000 kg"): printed in the settings block and summary.json, so no default is silent.
+  std::vector<std::pair<std::string, std::string>> defaults;
 };
 
 }  // namespace isopound

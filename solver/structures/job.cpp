@@ -2,6 +2,11 @@
 // Keeps parsing out of the physics: it only reads the plain config structs.
 #include "solver/structures/job.h"
 
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "solver/elements/contact.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/pounding2d.h"
 
@@ -33,12 +38,65 @@ RunOptions run_options(const ModelConfig& config) {
   return options;
 }
 
-JobResult run_job(const ModelConfig& config) {
+UnobstructedResult run_unobstructed(const ModelConfig& config, const JobResult& pounding) {
+  ModelConfig free_config = config;
+  free_config.building.walls.clear();
+  for (NeighbourConfig& n : free_config.neighbours) {
+    n.building.walls.clear();
+    n.pounding = false;
+  }
+  free_config.output.histories = false;
+  UnobstructedResult out;
+  out.job.motion = pounding.motion;
+  out.job.motion_peaks = pounding.motion_peaks;
+  out.job.model = build_model(free_config);
+  // DOFs are matched by label: wall structures shift the numbering of later structures.
+  const auto dof_in_free = [&](int dof) {
+    if (dof < 0) return -1;
+    const std::string& label = pounding.model.dofs[dof].label;
+    for (int i = 0; i < out.job.model.size(); ++i)
+      if (out.job.model.dofs[i].label == label) return i;
+    return -1;  // a flexible wall: rigid here
+  };
+  RunOptions options = run_options(free_config);
+  for (const auto& element : pounding.model.elements) {
+    const auto* contact = dynamic_cast<const Contact1D*>(element.get());
+    if (!contact) continue;
+    const ContactBody a = contact->body_a(), b = contact->body_b();
+    options.tracked.push_back(
+        {dof_in_free(a.dof), a.coefficient, dof_in_free(b.dof), b.coefficient});
+    out.gaps.push_back({contact->label(), contact->gap(), 0.0});
+  }
+  out.job.analysis = run_analysis(out.job.model, out.job.motion, options);
+  for (std::size_t k = 0; k < out.gaps.size(); ++k)
+    out.gaps[k].critical_gap = out.job.analysis.tracked[k].positive;
+  return out;
+}
+
+void check_step_against_record(const AnalysisConfig& analysis, const GroundMotion& motion) {
+  if (analysis.stepping != AnalysisConfig::Stepping::kFixed) return;
+  const double ratio = motion.dt / analysis.dt;
+  const double whole = std::round(ratio);
+  if (whole >= 1.0 && std::abs(ratio - whole) <= 1e-9 * ratio) return;
+  std::ostringstream msg;
+  msg << "analysis.dt: a fixed step of " << analysis.dt << " s does not divide the record interval "
+      << motion.dt << " s (" << motion.name
+      << "); steps end on every record sample, so use dt = " << motion.dt << " s / k, e.g. "
+      << motion.dt / std::max(1.0, std::ceil(ratio)) << " s";
+  throw std::invalid_argument(msg.str());
+}
+
+JobResult run_job(const ModelConfig& config, HistorySink* history_sink,
+                  std::function<void(double, double)> progress) {
   JobResult job;
   job.motion = load_ground_motion(config.ground_motion);
+  check_step_against_record(config.analysis, job.motion);
   job.motion_peaks = peaks_of(job.motion);
   job.model = build_model(config);
-  job.analysis = run_analysis(job.model, job.motion, run_options(config));
+  RunOptions options = run_options(config);
+  options.history_sink = history_sink;
+  options.progress = std::move(progress);
+  job.analysis = run_analysis(job.model, job.motion, options);
   return job;
 }
 

@@ -2,6 +2,10 @@
 // the model, run. The one place the CLI and the studies turn configuration into an analysis.
 #pragma once
 
+#include <functional>
+#include <string>
+#include <vector>
+
 #include "solver/core/analysis.h"
 #include "solver/core/model.h"
 #include "solver/excitation/ground_motion.h"
@@ -24,6 +28,31 @@ struct JobResult {
 };
 
 // Loads, assembles and runs. Throws RecordError, std::invalid_argument or AnalysisError.
-JobResult run_job(const ModelConfig& config);
+// `history_sink` receives the history rows (else they stay in the result); `progress` see
+// RunOptions.
+JobResult run_job(const ModelConfig& config, HistorySink* history_sink = nullptr,
+                  std::function<void(double, double)> progress = {});
+
+// A contact of the pounding model and how far its gap closes in the unobstructed run.
+struct ContactGap {
+  std::string label;
+  double gap = 0.0;           // m, as modelled
+  double critical_gap = 0.0;  // m: the largest closing without contact; a smaller gap pounds
+};
+
+struct UnobstructedResult {
+  JobResult job;  // the same model without walls, neighbours kept but without contacts
+  std::vector<ContactGap> gaps;  // per contact of the pounding model, in its element order
+};
+
+// The unobstructed comparison of `pounding` (a run of `config`). A contact's critical gap is the
+// peak of its closing coordinate c_a u_a + c_b u_b without any contact: for a wall at level L
+// the displacement of level L towards it, for a neighbour the relative displacement of the two
+// floors that meet. A flexible wall counts as rigid here (its own motion is not computed).
+UnobstructedResult run_unobstructed(const ModelConfig& config, const JobResult& pounding);
+
+// Checks the analysis settings against the record: a fixed step must divide the record interval
+// (the stepper never skips samples). Throws std::invalid_argument naming analysis.dt.
+void check_step_against_record(const AnalysisConfig& analysis, const GroundMotion& motion);
 
 }  // namespace isopound

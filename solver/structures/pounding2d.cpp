@@ -94,10 +94,11 @@ void add_neighbour(Model& model, int main, const BuildingConfig& main_building,
       const int dof_other = model.structures[other].level_dofs[j];
       const std::string label = main_building.name + "~" + neighbour.building.name + "/" +
                                 model.dofs[dof_main].label.substr(main_building.name.size() + 1);
+      ++pairs;
+      if (!neighbour.pounding) continue;
       add_contact(model, label, {dof_main, s}, {dof_other, -s}, neighbour.gap, neighbour.impact,
                   model.mass(dof_main, dof_main), model.mass(dof_other, dof_other),
                   steps_per_contact);
-      ++pairs;
     }
   }
   if (pairs == 0)

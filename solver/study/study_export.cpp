@@ -161,6 +161,32 @@ ExportTables export_tables(const StudyStore& store, const ExportOptions& options
     rows.insert(rows.end(), ratios.begin(), ratios.end());
     tables.statistics = statistics_table(layout, rows);
   }
+  // Every column with its unit: outputs in SI, numeric axes hold SI values, ratios are "-".
+  const auto unit_of = [](const std::vector<std::string>& units, std::size_t i) {
+    return i < units.size() ? units[i] : std::string("SI");
+  };
+  tables.units = csv_line({"table", "column", "unit"});
+  const auto add = [&](const char* table, const std::string& column, const std::string& unit) {
+    tables.units += csv_line({table, column, unit});
+  };
+  add("runs", "case_id", "-");
+  for (std::size_t i = 0; i < layout.axes.size(); ++i)
+    add("runs", layout.axes[i], unit_of(layout.axis_units, i));
+  add("runs", "status", "label");
+  add("runs", "steps", "-");
+  for (std::size_t i = 0; i < layout.outputs.size(); ++i)
+    add("runs", layout.outputs[i], unit_of(layout.output_units, i));
+  if (options.timing) add("runs", "wall_seconds", "s");
+  add("runs", "error", "text");
+  if (!tables.ratios.empty())
+    for (std::size_t i = 0; i < layout.outputs.size(); ++i)
+      add("ratios", layout.outputs[i], "- (ratio of two runs' values)");
+  if (!tables.statistics.empty()) {
+    add("statistics", "n", "-");
+    for (const char* column :
+         {"mean", "std", "mean_minus_std", "mean_plus_std", "min", "max", "median"})
+      add("statistics", column, "the unit of the row's output (runs table), '-' for ratios");
+  }
   return tables;
 }
 
@@ -172,7 +198,7 @@ std::vector<std::string> write_export(const StudyStore& store, const std::string
   std::vector<std::string> written;
   for (const auto& [name, text] :
        {std::pair{"runs.csv", &tables.runs}, std::pair{"ratios.csv", &tables.ratios},
-        std::pair{"statistics.csv", &tables.statistics}}) {
+        std::pair{"statistics.csv", &tables.statistics}, std::pair{"units.csv", &tables.units}}) {
     if (text->empty()) continue;
     const std::string path = (fs::path(dir) / name).string();
     std::ofstream out(path, std::ios::binary);

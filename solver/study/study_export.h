@@ -16,6 +16,7 @@ struct ExportOptions {
 
 // CSV texts; ratios / statistics are empty when the study defines none.
 struct ExportTables {
+  std::string units;  // table,column,unit for every column of the other tables
   std::string runs;
   std::string ratios;
   std::string statistics;

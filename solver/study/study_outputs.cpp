@@ -6,14 +6,15 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <stdexcept>
 
 namespace isopound {
 namespace {
 
 constexpr std::string_view kLevelQuantities[] = {"displacement", "velocity",
-                                                 "absolute_acceleration"};
-constexpr std::string_view kStoryQuantities[] = {"drift", "drift_ratio"};
+                                                 "absolute_acceleration", "residual_displacement"};
+constexpr std::string_view kStoryQuantities[] = {"drift", "drift_ratio", "shear"};
 constexpr std::string_view kEnergyTerms[] = {"input",          "kinetic",           "elastic",
                                              "viscous",        "hysteretic",        "error",
                                              "relative_error", "max_relative_error"};
@@ -100,6 +101,33 @@ OutputSelector parse_output_selector(std::string_view text) {
   }
   if (s.sum && s.kind != OutputSelector::Kind::kElement) fail("'sum:' applies to elements only");
   return s;
+}
+
+std::string output_unit(const OutputSelector& s) {
+  static const std::pair<std::string_view, const char*> kUnits[] = {
+      {"displacement", "m"},
+      {"velocity", "m/s"},
+      {"absolute_acceleration", "m/s2"},
+      {"residual_displacement", "m"},
+      {"drift", "m"},
+      {"drift_ratio", "-"},
+      {"shear", "N"},
+      {"pga", "m/s2"},
+      {"pgv", "m/s"},
+      {"pgd", "m"},
+      {"force", "N"},
+      {"deformation", "m"},
+      {"z", "-"},
+      {"penetration", "m"},
+      {"impacts", "-"},
+      {"impact_velocity", "m/s"},
+      {"indentation", "m"},
+      {"dissipated_energy", "J"}};
+  if (s.kind == OutputSelector::Kind::kEnergy)
+    return s.quantity == "relative_error" || s.quantity == "max_relative_error" ? "-" : "J";
+  for (const auto& [name, unit] : kUnits)
+    if (name == s.quantity) return unit;
+  return "SI";
 }
 
 ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
@@ -203,12 +231,18 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
     }
     case OutputSelector::Kind::kLevel:
     case OutputSelector::Kind::kStory: {
+      double value = 0.0;
+      if (r.kind == OutputSelector::Kind::kLevel && r.quantity == 3) {  // |u| at the end
+        for (const int i : r.indices)
+          value = std::max(value, std::abs(result.final_displacement[i]));
+        return value;
+      }
       const std::vector<Peak>* families[] = {&result.displacement, &result.velocity,
                                              &result.absolute_acceleration};
-      const std::vector<Peak>* stories[] = {&result.drift, &result.drift_ratio};
+      const std::vector<Peak>* stories[] = {&result.drift, &result.drift_ratio,
+                                            &result.story_shear};
       const std::vector<Peak>& peaks =
           r.kind == OutputSelector::Kind::kLevel ? *families[r.quantity] : *stories[r.quantity];
-      double value = 0.0;
       for (const int i : r.indices) value = std::max(value, peaks[i].value);
       return value;
     }

@@ -1,9 +1,11 @@
 // Peaks a study keeps per run, addressed by selectors "<where>.<quantity>" over the main building
 // (structure 0) and all elements. Values are SI peaks of |x| over time; a group gives its maximum.
 //
-//   base | roof | floor<N> | floors | levels  .  displacement | velocity | absolute_acceleration
+//   base | roof | floor<N> | floors | levels  .  displacement | velocity | absolute_acceleration |
+//       residual_displacement (|u| at the end; base.residual_displacement: the isolators')
 //       (floors: max over floors 1..N; levels: also the base slab)
-//   story<N> | stories  .  drift | drift_ratio
+//   story<N> | stories  .  drift | drift_ratio | shear (N; story1.shear = base of the
+//       superstructure)
 //   energy  .  input | kinetic | elastic | viscous | hysteretic | error | relative_error |
 //   max_relative_error ground  .  pga | pgv | pgd <element>  .  <output>   element label after its
 //   last '/' or the full label, '*' and '?'
@@ -33,6 +35,9 @@ struct OutputSelector {
 
 // Checks the grammar above. Throws std::invalid_argument naming the problem.
 OutputSelector parse_output_selector(std::string_view text);
+
+// The SI unit of a selector's value ("m", "m/s2", "N", "J", "-" for ratios and counts).
+std::string output_unit(const OutputSelector& selector);
 
 // A selector bound to the DOFs, stories or element outputs of one model.
 struct ResolvedOutput {

@@ -143,8 +143,8 @@ class Writer {
 // refused. The kernel drops the lock when the process dies, however it dies.
 class DatabaseLock {
  public:
-  explicit DatabaseLock(const std::string& db_path) {
-    const std::string path = db_path + ".lock";
+  explicit DatabaseLock(const std::string& db_path) : path_(db_path + ".lock") {
+    const std::string& path = path_;
     fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
     if (fd_ < 0)
       throw InputError(path, 0, 0, "", "cannot create the lock file beside the database");
@@ -153,11 +153,17 @@ class DatabaseLock {
       throw InputError(db_path, 0, 0, "", "another isopound sweep is writing this database");
     }
   }
-  ~DatabaseLock() { ::close(fd_); }
+  // A clean finish leaves no lock file (removed while still held); a killed sweep leaves it,
+  // unlocked, and the next sweep takes it over.
+  ~DatabaseLock() {
+    ::unlink(path_.c_str());
+    ::close(fd_);
+  }
   DatabaseLock(const DatabaseLock&) = delete;
   DatabaseLock& operator=(const DatabaseLock&) = delete;
 
  private:
+  std::string path_;
   int fd_ = -1;
 };
 
@@ -439,6 +445,15 @@ int run_sweep(const std::string& study_path, const SweepOptions& options,
         static_cast<long long>(writer.failed()),
         already > 0 ? (", " + std::to_string(already) + " were done before").c_str() : "");
     std::printf("Results in %s; tables: isopound export %s\n", db_path.c_str(), db_path.c_str());
+  }
+  // Failed runs make the sweep fail (exit 1), also under -q: say how many and where to look.
+  if (writer.failed() > 0) {
+    std::fprintf(stderr,
+                 "isopound sweep: error: %lld of %lld runs failed; their messages are in the "
+                 "'error' column of the runs table of %s (isopound export %s --table runs)\n",
+                 static_cast<long long>(writer.failed()), static_cast<long long>(writer.finished()),
+                 db_path.c_str(), db_path.c_str());
+    return 1;
   }
   return 0;
 }

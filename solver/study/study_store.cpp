@@ -3,6 +3,10 @@
 // last ones.
 #include "solver/study/study_store.h"
 
+#include <algorithm>
+
+#include "solver/study/study_outputs.h"
+
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -87,6 +91,8 @@ std::string StoreLayout::to_json() const {
   nlohmann::json j;
   j["axes"] = axes;
   j["outputs"] = outputs;
+  j["axis_units"] = axis_units;
+  j["output_units"] = output_units;
   j["ratios"] = nlohmann::json::array();
   for (const RatioSpec& r : ratios)
     j["ratios"].push_back({{"name", r.name},
@@ -104,6 +110,9 @@ StoreLayout StoreLayout::from_json(const std::string& text) {
   StoreLayout l;
   l.axes = j.at("axes").get<std::vector<std::string>>();
   l.outputs = j.at("outputs").get<std::vector<std::string>>();
+  if (j.contains("axis_units")) l.axis_units = j.at("axis_units").get<std::vector<std::string>>();
+  if (j.contains("output_units"))
+    l.output_units = j.at("output_units").get<std::vector<std::string>>();
   for (const auto& r : j.at("ratios"))
     l.ratios.push_back({r.at("name"), r.at("axis"), r.at("numerator"), r.at("denominator")});
   for (const auto& s : j.at("statistics"))
@@ -113,8 +122,16 @@ StoreLayout StoreLayout::from_json(const std::string& text) {
 
 StoreLayout StoreLayout::of(const Study& study) {
   StoreLayout l;
-  for (const Axis& a : study.axes) l.axes.push_back(a.name);
-  for (const OutputSpec& o : study.outputs) l.outputs.push_back(o.column);
+  for (const Axis& a : study.axes) {
+    l.axes.push_back(a.name);
+    const bool numeric = !a.levels.empty() && std::all_of(a.levels.begin(), a.levels.end(),
+                                                          [](const Level& v) { return v.numeric; });
+    l.axis_units.push_back(numeric ? "SI" : "label");
+  }
+  for (const OutputSpec& o : study.outputs) {
+    l.outputs.push_back(o.column);
+    l.output_units.push_back(output_unit(parse_output_selector(o.selector)));
+  }
   l.ratios = study.ratios;
   l.statistics = study.statistics;
   return l;
@@ -165,6 +182,24 @@ StudyStore StudyStore::create(const std::string& path, const StoreLayout& layout
   store.execute("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)");
   store.execute(runs);
   store.execute("CREATE INDEX runs_status ON runs(status)");
+  // Every column of runs with its unit (outputs SI; numeric axes SI; counts and ratios "-").
+  store.execute("CREATE TABLE units(column_name TEXT PRIMARY KEY, unit TEXT NOT NULL)");
+  {
+    const auto fail_units = [&](const std::string& what) { store.fail(what); };
+    Statement put(store.db_.get(), "INSERT INTO units(column_name, unit) VALUES(?, ?)", fail_units);
+    const auto add = [&](const std::string& column, const std::string& unit) {
+      put.bind(1, column);
+      put.bind(2, unit);
+      put.step();
+      put.reset();
+    };
+    for (std::size_t i = 0; i < layout.axes.size(); ++i)
+      add(layout.axes[i], i < layout.axis_units.size() ? layout.axis_units[i] : "");
+    for (std::size_t i = 0; i < layout.outputs.size(); ++i)
+      add(layout.outputs[i], i < layout.output_units.size() ? layout.output_units[i] : "");
+    add("steps", "-");
+    add("wall_seconds", "s");
+  }
   store.execute(
       "CREATE TABLE sessions(session INTEGER PRIMARY KEY, started_utc TEXT, jobs INTEGER, ranks "
       "INTEGER, "

@@ -29,6 +29,10 @@ class StoreError : public std::runtime_error {
 struct StoreLayout {
   std::vector<std::string> axes;     // axis columns, in enumeration order
   std::vector<std::string> outputs;  // peak columns
+  // Units of the axis and peak columns: outputs in SI ("m", "N", "-"); numeric axes hold SI
+  // values ("SI"), label axes "label". Empty in databases written before units were stored.
+  std::vector<std::string> axis_units;
+  std::vector<std::string> output_units;
   std::vector<RatioSpec> ratios;
   std::vector<StatisticsSpec> statistics;
 
