@@ -12,7 +12,8 @@
 //
 // Usage: isopound_battery [--records a,b|all] [--gaps 5,10,..(cm)] [--laws l1,l2|all]
 //          [--duration s] [--reference-dt s] [--halving] [--cache dir] [--max-error f]
-//          [--tolerance f] [--records-dir dir] [--table file.md]
+//          [--tolerance f] [--steps-per-contact n] [--max-step s] [--records-dir dir]
+//          [--table file.md]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -47,7 +48,9 @@ struct Options {
   bool halving = false;  // also a reference at reference_dt / 2, to show it converged
   std::string cache;     // empty: no cache
   double max_error = 0.01;
-  double tolerance = 0.0;  // 0: the default of AnalysisConfig
+  double tolerance = 0.0;          // 0: the default of AnalysisConfig
+  double steps_per_contact = 0.0;  // 0: the default
+  double max_step = 0.0;           // 0: the default (adaptive dt)
   fs::path records_dir;
   std::string table;
 };
@@ -87,12 +90,19 @@ BuildingConfig building_with_walls(const std::string& law, double gap) {
   return b;
 }
 
+// Knobs of the default run (0: the default of AnalysisConfig).
+struct Knobs {
+  double tolerance = 0.0, steps_per_contact = 0.0, max_step = 0.0;
+};
+
 Outcome run_case(const GroundMotion& motion, const std::string& law, double gap, double fixed_dt,
-                 double tolerance) {
+                 const Knobs& knobs) {
   const BuildingConfig building = building_with_walls(law, gap);
   RunOptions options;
   options.output.histories = false;
-  if (tolerance > 0) options.analysis.tolerance = tolerance;
+  if (knobs.tolerance > 0) options.analysis.tolerance = knobs.tolerance;
+  if (knobs.steps_per_contact > 0) options.analysis.steps_per_contact = knobs.steps_per_contact;
+  if (knobs.max_step > 0) options.analysis.dt = knobs.max_step;
   if (fixed_dt > 0) {
     options.analysis.stepping = AnalysisConfig::Stepping::kFixed;
     options.analysis.dt = fixed_dt;
@@ -160,7 +170,7 @@ Outcome reference(const Options& opt, const GroundMotion& motion, const std::str
   Outcome o;
   const std::string path = opt.cache.empty() ? "" : cache_file(opt, record, gap, law, dt);
   if (!path.empty() && load(path, o)) return o;
-  o = run_case(motion, law, gap, dt, 0.0);
+  o = run_case(motion, law, gap, dt, Knobs{});
   if (!path.empty()) save(path, o);
   return o;
 }
@@ -235,6 +245,10 @@ Options parse(int argc, char** argv) {
       opt.max_error = number(value(), "max-error");
     } else if (a == "--tolerance") {
       opt.tolerance = number(value(), "tolerance");
+    } else if (a == "--steps-per-contact") {
+      opt.steps_per_contact = number(value(), "steps-per-contact");
+    } else if (a == "--max-step") {
+      opt.max_step = number(value(), "max-step");
     } else if (a == "--records-dir") {
       opt.records_dir = value();
     } else if (a == "--table") {
@@ -293,7 +307,8 @@ int main(int argc, char** argv) {
     for (const double gap : opt.gaps) {
       for (const std::string& law : opt.laws) {
         const Outcome ref = reference(opt, motion, record, law, gap, opt.reference_dt);
-        const Outcome def = run_case(motion, law, gap, 0.0, opt.tolerance);
+        const Outcome def =
+            run_case(motion, law, gap, 0.0, {opt.tolerance, opt.steps_per_contact, opt.max_step});
         int which = 0;
         const double worst = worst_error(ref, def, which);
         const int dcount = count_difference(ref, def);
