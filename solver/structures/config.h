@@ -96,7 +96,7 @@ struct AnalysisConfig {
   double steps_per_period = 25.0;
   // Adaptive: local error tolerance (see THEORY-notes.md, "Time integration").
   double tolerance = 1e-4;  // 1e-3 until issue 8: see bench/RESULTS.md, "Convergence battery"
-  int max_halvings = 16;  // smallest adaptive step = dt / 2^max_halvings
+  int max_halvings = 16;    // smallest adaptive step = dt / 2^max_halvings
   // During a contact the step is at most (contact period) / steps_per_contact, with the
   // contact period pi sqrt(m_eff / k_tangent); before a contact, at most the time of impact.
   // Both in fixed stepping too (the fixed dt is then an upper bound).
