@@ -114,11 +114,13 @@ TEST(TwoMassSolver, RestitutionConvergesWithStepsPerContact) {
   // 4x the steps per contact: second order cuts the error 16x (>= 8x asked for KV); Hertz
   // (delta^1.5: a slope starting at 0) measured 6.4x, >= 5x asked; Jankowski's damping
   // ~ delta^(1/4) has an infinite slope at onset, which lowers the order (>= 3x asked).
+  // 50 vs 200: at 25 steps per contact the error tolerance (1e-4) already refines the contact
+  // steps itself (KV error 1.8e-4 instead of 5.1e-4), so 25 no longer is "25 per contact".
   for (const auto& [law, factor] :
        {std::pair{"kelvin_voigt", 8.0}, std::pair{"hertz", 5.0}, std::pair{"jankowski", 3.0}}) {
     const double ref = test::reference_collision(law, 0.7, kM1, kM2, kV0, kK, kKh).restitution;
-    const double coarse = std::abs(collide(law, 0.7, 25).restitution - ref);
-    const double fine = std::abs(collide(law, 0.7, 100).restitution - ref);
+    const double coarse = std::abs(collide(law, 0.7, 50).restitution - ref);
+    const double fine = std::abs(collide(law, 0.7, 200).restitution - ref);
     EXPECT_LT(fine, coarse / factor) << law << " " << coarse << " " << fine;
   }
 }

@@ -356,12 +356,12 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   int settles_here = 0;
   const double min_fraction = std::ldexp(1.0, -max_level);
   const auto level_step = [&](int l) { return H * std::ldexp(1.0, -l); };
-  // Raises the level until the step respects every element's limit; returns the limit.
+  // Raises the level until the step respects every element's limit (in fixed stepping too);
+  // returns the limit.
   const auto refine_to_limit = [&]() {
     double limit = 1e300;
     for (const auto& e : model.elements) limit = std::min(limit, e->step_limit());
-    if (adaptive)
-      while (level < max_level && level_step(level) > limit) ++level;
+    while (level < max_level && level_step(level) > limit) ++level;
     return limit;
   };
   std::vector<double> event_theta(model.elements.size(), 1.0);
@@ -372,6 +372,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     bool jumped = false;
     for (std::size_t k = 0; k < model.elements.size(); ++k)
       if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
+    std::fill(settling.begin(), settling.end(), 0);
     if (!jumped) return;
     stepper.restart(ag);
     ++st.restarts;
@@ -400,10 +401,16 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         const bool can_halve = frac > min_fraction * (1 + 1e-9);
         if (can_halve && (adaptive || !out.converged)) {
           stepper.reject();
-          if (forced > 0)
-            forced *= 0.5;
-          else
+          if (forced > 0) {
+            // A step cut to end at an event failed: half of it no longer ends at the event, so
+            // the event is dropped (no element may settle at the wrong instant) and found
+            // again by regular, unfrozen steps of at most half the cut step.
+            while (level < max_level && std::ldexp(1.0, -level) > 0.5 * forced) ++level;
+            forced = 0.0;
+            std::fill(settling.begin(), settling.end(), 0);
+          } else {
             ++level;
+          }
           level = std::min(level, max_level);
           ++st.rejected_steps;
           continue;
@@ -468,7 +475,10 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         const double limit = refine_to_limit();  // also gives a new contact its own step
         if (level > 0 && err < 0.1 && level_step(level - 1) <= limit) --level;
       } else {
-        level = 0;  // fixed stepping: back to the fixed step after a Newton-failure halving
+        // Fixed stepping: back to the fixed step after a Newton-failure halving, but never
+        // longer than an element's limit (a contact's step, the time of impact).
+        level = 0;
+        refine_to_limit();
       }
     }
   }

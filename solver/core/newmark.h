@@ -11,7 +11,7 @@ namespace isopound {
 
 struct NewtonSettings {
   // Converged when |R|_inf <= tolerance * F_ref + round-off allowance, F_ref = heaviest
-  // level's weight (max_i (M iota)_i g), or when the correction |du|_inf <= 1e-14 m.
+  // level's weight (max_i (M iota)_i g); never on a small correction alone.
   double tolerance = 1e-9;
   int max_iterations = 25;
 };
@@ -28,6 +28,8 @@ struct StepOutcome {
 // Nothing is allocated per step once each distinct h has been seen (K_hat is cached per h).
 class NewmarkStepper {
  public:
+  // Throws std::invalid_argument if M is not symmetric positive definite (e.g. a DOF without
+  // mass): an input error.
   NewmarkStepper(Model& model, const NewtonSettings& settings);
 
   // Committed state at rest; a0 from equilibrium with ground acceleration ag0.
@@ -67,6 +69,8 @@ class NewmarkStepper {
   Eigen::VectorXd delta_;  // u1 - u0 of the trial
   Eigen::MatrixXd k_tangent_;
   Eigen::MatrixXd k_hat_scratch_;  // K_hat of an uncached step
+  // Factorisations are only ever computed in place, never copied (an unused Eigen
+  // factorisation holds uninitialised state).
   Eigen::LLT<Eigen::MatrixXd> llt_;
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
   Eigen::LLT<Eigen::MatrixXd> mass_llt_;

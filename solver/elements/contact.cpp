@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "solver/elements/witness.h"
+
 namespace isopound {
 
 namespace {
@@ -33,39 +35,6 @@ double Contact1D::kinematics(const Eigen::VectorXd& x) const {
   return s;
 }
 
-// Pseudocode: p(theta) is the cubic Hermite interpolant of delta over the step (values d0, d1,
-// slopes h r0, h r1). Find theta in [0, 1] with p = 0 by Newton safeguarded with bisection,
-// starting from the linear estimate; 0 if there is no sign change.
-double Contact1D::crossing_fraction(double d0, double r0, double d1, double r1) const {
-  if ((d0 > 0) == (d1 > 0)) return 0.0;
-  const double s0 = h_ * r0, s1 = h_ * r1;
-  const auto p = [&](double t) {
-    const double t2 = t * t, t3 = t2 * t;
-    return (2 * t3 - 3 * t2 + 1) * d0 + (t3 - 2 * t2 + t) * s0 + (-2 * t3 + 3 * t2) * d1 +
-           (t3 - t2) * s1;
-  };
-  const auto dp = [&](double t) {
-    const double t2 = t * t;
-    return (6 * t2 - 6 * t) * d0 + (3 * t2 - 4 * t + 1) * s0 + (-6 * t2 + 6 * t) * d1 +
-           (3 * t2 - 2 * t) * s1;
-  };
-  double lo = 0.0, hi = 1.0;  // p(lo) has the sign of d0
-  double t = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
-  for (int it = 0; it < 50; ++it) {
-    const double value = p(t);
-    if ((value > 0) == (d0 > 0))
-      lo = t;
-    else
-      hi = t;
-    const double slope = dp(t);
-    double next = slope != 0.0 ? t - value / slope : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - t) < 1e-14) return next;
-    t = next;
-  }
-  return t;
-}
-
 void Contact1D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
   State& T = trial_;
   const State& C = committed_;
@@ -80,14 +49,13 @@ void Contact1D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
   if (freeze_) {
     // A step cut to end at an event: the status changes only in settle_event().
   } else if (!C.in_contact && T.delta > 0) {
-    // Onset inside this step: the approach rate at delta = 0 is the impact velocity.
-    const double theta = crossing_fraction(C.delta, C.rate, T.delta, T.rate);
-    const double t2 = theta * theta;
-    const double rate_at_onset =
-        C.delta > 0 ? C.rate
-                    : ((6 * t2 - 6 * theta) * C.delta + (3 * t2 - 4 * theta + 1) * h_ * C.rate +
-                       (-6 * t2 + 6 * theta) * T.delta + (3 * t2 - 2 * theta) * h_ * T.rate) /
-                          h_;
+    // Onset inside this step: the approach rate at delta = 0 is the impact velocity. A step
+    // that began already past 0 (open but penetrating, after a cut) starts it at once.
+    const WitnessStep w{C.delta, C.rate, T.delta, T.rate, h_};
+    double theta = first_status_change(w, false, 0.0);
+    if (theta >= 1.0) theta = 0.0;
+    const double rate_at_onset = theta > 0 ? witness_rate(w, theta) : C.rate;
+    T.onset_rate = rate_at_onset;
     law_->begin_contact(std::max(rate_at_onset, 0.0), T.phase);
     T.in_contact = true;
     T.started = true;
@@ -156,6 +124,7 @@ void Contact1D::commit() {
     contact_step_ =
         contact_period_estimate(trial_.phase.impact_velocity, trial_.phase) / steps_per_contact_;
     ++impacts_;
+    if (trial_.onset_rate >= kCountedImpactVelocity) ++counted_impacts_;
     max_impact_velocity_ = std::max(max_impact_velocity_, trial_.phase.impact_velocity);
   }
   if (trial_.in_contact) max_penetration_ = std::max(max_penetration_, trial_.delta);
@@ -163,6 +132,7 @@ void Contact1D::commit() {
     indentation_ += trial_.end_indentation;
     trial_.delta -= trial_.end_indentation;
   }
+  if (h_ > 0) rate_change_ = std::abs(trial_.rate - committed_.rate) / h_;
   work_ = trial_work_;
   stored_ = trial_stored_;
   committed_ = trial_;
@@ -190,13 +160,25 @@ double Contact1D::event_fraction() {
       pending_ = kind;
     }
   };
+  const WitnessStep w{C.delta, C.rate, T.delta, T.rate, h_};
   if (T.started) consider(std::min(T.onset_fraction, 1.0 - 1e-15), Event::kOnset);
   if (C.in_contact && T.ended) {
     const double f = T.end_indentation > 0  // no-tension law: its force reached 0
                          ? C.raw_force / (C.raw_force - T.raw_force)
-                         : crossing_fraction(C.delta, C.rate, T.delta, T.rate);
+                         : first_status_change(w, true, 0.0);
     consider(std::min(f, 1.0 - 1e-15),
              T.end_indentation > 0 ? Event::kNoTension : Event::kSeparation);
+  }
+  // Crossings that the step's ends do not show: the interpolant rises above 0 inside an open
+  // step and falls back (a missed onset), or dips below 0 inside a closed one (a missed
+  // separation, the grazing end of a long contact).
+  if (!C.in_contact && !T.started) {
+    const double f = first_status_change(w, false);
+    if (f < 1.0) consider(f, Event::kOnset);
+  }
+  if (C.in_contact && T.in_contact) {
+    const double f = first_status_change(w, true);
+    if (f < 1.0) consider(f, Event::kSeparation);
   }
   if (C.in_contact && T.in_contact && C.rate > 0 && T.rate <= 0)  // approach -> restitution
     consider(C.rate / (C.rate - T.rate), Event::kPhase);
@@ -216,6 +198,7 @@ bool Contact1D::settle_event() {
       steps_in_contact_ = 0;
       C.in_contact = true;
       ++impacts_;
+      if (C.rate >= kCountedImpactVelocity) ++counted_impacts_;
       max_impact_velocity_ = std::max(max_impact_velocity_, C.phase.impact_velocity);
       break;
     case Event::kSeparation:
@@ -238,9 +221,32 @@ bool Contact1D::settle_event() {
   return true;
 }
 
+// Pseudocode. Open: conservative advancement (time of impact): with |delta''| <= A, taken as
+// twice the mean |delta''| of the last step (an estimate, not a proof: the interior-crossing
+// test of event_fraction() is the backstop), the gap -delta cannot close before
+//   t = 2 d / (v + sqrt(v^2 + 2 A d)),  d = -delta > 0, v = delta' (the earliest root of
+// -d + v t + A t^2 / 2); the step is at most t, but never below the step of a contact that
+// would begin at the arrival speed sqrt(v^2 + 2 A d) (else the steps would shrink to 0 along a
+// grazing approach). Closed: a fraction of the contact period, graded from the onset.
 double Contact1D::step_limit() const {
   const State& C = committed_;
-  if (!C.in_contact) return 1e300;
+  if (!C.in_contact) {
+    const double distance = -C.delta, v = C.rate, bound = 2.0 * rate_change_;
+    const double arrival = std::sqrt(std::max(v * v + 2.0 * bound * std::max(distance, 0.0), 0.0));
+    if (!(v + arrival > 0)) return 1e300;  // receding with no acceleration towards the wall
+    const double time_of_impact = distance > 0 ? 2.0 * distance / (v + arrival) : 0.0;
+    // The floor changes slowly with the speed (not at all for the linear-type laws, as
+    // v^(-1/5) for Hertz): recomputed only when it may bind and the speed moved by 25 %.
+    if (time_of_impact >= 2.0 * approach_step_) return time_of_impact;
+    const double speed = std::max(arrival, kCountedImpactVelocity);
+    if (!(std::abs(speed - approach_speed_) <= 0.25 * approach_speed_)) {
+      ImpactPhase phase;
+      law_->begin_contact(speed, phase);
+      approach_step_ = contact_period_estimate(phase.impact_velocity, phase) / steps_per_contact_;
+      approach_speed_ = speed;
+    }
+    return std::max(time_of_impact, approach_step_);
+  }
   // Graded from the onset (1/32 of the contact step, doubling each step): the force of the
   // Hertz-type laws grows as delta^(n-1), Jankowski's damping as delta^(1/4) (infinite slope).
   double limit = contact_step_ * std::ldexp(1.0, std::min(steps_in_contact_, 5) - 5);

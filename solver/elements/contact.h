@@ -11,6 +11,11 @@
 
 namespace isopound {
 
+// Impacts whose approach rate at onset (before any law's floor) reaches this are counted by
+// Contact1D::counted_impacts(): slower touches are grazing contacts that carry no momentum to
+// speak of, and their number depends on the step (m/s; the default min_impact_velocity).
+inline constexpr double kCountedImpactVelocity = 1e-3;
+
 // One side of a contact: a DOF and its coefficient (+1 if moving +x closes the gap, -1 if
 // moving -x does). dof = -1: the ground (a rigid, immovable wall), which contributes nothing.
 struct ContactBody {
@@ -55,6 +60,8 @@ class Contact1D final : public Element {
 
   // Outputs by name, for tests.
   int impacts() const { return impacts_; }
+  // Impacts with an approach rate >= kCountedImpactVelocity at onset.
+  int counted_impacts() const { return counted_impacts_; }
   int trial_impacts() const { return impacts_ + (trial_.started ? 1 : 0); }
   double indentation() const { return indentation_; }
   double max_impact_velocity() const { return max_impact_velocity_; }
@@ -77,11 +84,11 @@ class Contact1D final : public Element {
     bool started = false;  // this step began a contact
     bool ended = false;    // this step ended a contact
     double onset_fraction = 1.0;
+    double onset_rate = 0.0;       // approach rate at delta = 0 of a contact begun this step
     double end_indentation = 0.0;  // penetration left when a no-tension contact ended
   };
   double kinematics(const Eigen::VectorXd& x) const;
   double contact_period_estimate(double impact_velocity, const ImpactPhase& phase) const;
-  double crossing_fraction(double d0, double r0, double d1, double r1) const;
 
   std::string label_;
   ContactBody a_, b_;
@@ -97,7 +104,12 @@ class Contact1D final : public Element {
   double indentation_ = 0.0;     // accumulated permanent indentation (committed), m
   double contact_step_ = 1e300;  // step limit of the current contact from its estimated period
   int steps_in_contact_ = 0;     // accepted steps since the current contact began
+  double rate_change_ = 0.0;     // |d rate / dt| over the last accepted step, m/s^2
+  // Step of a contact that would begin at approach speed approach_speed_ (cached, see
+  // step_limit): the floor of the time-of-impact limit.
+  mutable double approach_speed_ = -1.0, approach_step_ = 1e300;
   int impacts_ = 0;
+  int counted_impacts_ = 0;
   double max_impact_velocity_ = 0.0;
   double max_penetration_ = 0.0;
   double work_ = 0.0, trial_work_ = 0.0;      // work of the contact force on the bodies, J

@@ -78,8 +78,13 @@ double witness_rate(const WitnessStep& w, double theta) {
 }
 
 double first_status_change(const WitnessStep& w, bool closed, double tolerance) {
-  const Cubic p = cubic_of(w);
   const double sign = closed ? -1.0 : 1.0;  // q = sign p > 0 is the side of a status change
+  // Quick exit (most steps): the Hermite basis gives p between the end values, give or take
+  // h (|r0| + |r1|) 4/27 (the largest |theta (1 - theta)^2|); if even that stays on the status'
+  // side, nothing happens.
+  const double bulge = (4.0 / 27.0) * w.h * (std::abs(w.r0) + std::abs(w.r1));
+  if (std::max(sign * w.d0, sign * w.d1) + bulge <= tolerance) return 1.0;
+  const Cubic p = cubic_of(w);
   double breaks[4] = {0.0, 1.0, 1.0, 1.0};
   const int n_roots = slope_roots(p, breaks + 1);
   breaks[n_roots + 1] = 1.0;

@@ -55,12 +55,14 @@ std::vector<double> level_elevations(const BuildingConfig& building) {
 
 void add_walls(Model& model, int structure, const BuildingConfig& building,
                double steps_per_contact) {
-  const StructureInfo& info = model.structures[structure];
+  // A copy: a flexible wall adds a structure (push_back), which may move model.structures, so
+  // a reference into it would dangle for the next walls entry.
+  const std::vector<int> level_dofs = model.structures.at(structure).level_dofs;
   for (const WallConfig& wall : building.walls) {
-    if (wall.level < 0 || wall.level >= static_cast<int>(info.level_dofs.size()))
+    if (wall.level < 0 || wall.level >= static_cast<int>(level_dofs.size()))
       throw std::invalid_argument("walls: level " + std::to_string(wall.level) +
                                   " does not exist in '" + building.name + "'");
-    const int level_dof = info.level_dofs[wall.level];
+    const int level_dof = level_dofs[wall.level];
     const double level_mass = model.mass(level_dof, level_dof);
     const std::string where =
         wall.level == 0 && building.isolated ? "base" : "level " + std::to_string(wall.level);
