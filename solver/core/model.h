@@ -1,5 +1,5 @@
-// A model as the stepper sees it: DOFs (relative to the ground), linear M, C, K, the ground
-// motion influence vector, and nonlinear elements. Several structures may share one model.
+// A model as the stepper sees it: DOFs (relative to the ground) of three kinds, linear M, C, K,
+// the influence matrix of a two-component ground acceleration, and nonlinear elements.
 #pragma once
 
 #include <Eigen/Dense>
@@ -11,10 +11,26 @@
 
 namespace isopound {
 
+// What a DOF measures. Translations are in m (their residuals in N); a rotation in rad (its
+// residual a moment in N m).
+enum class DofKind { kTranslationX, kTranslationY, kRotation };
+
 struct Dof {
   std::string label;  // e.g. "building/base", "building/floor 2"
   int structure = 0;  // index into Model::structures
   int level = 0;      // 0 = base slab (or the lowest DOF), 1.. = floors
+  DofKind kind = DofKind::kTranslationX;
+  // Length (m) through which the DOF's errors are measured: 1 for a translation; for a rotation
+  // e.g. the floor's radius of gyration r, so that an angle error e reads as a displacement r e
+  // and a moment residual M as a force M / r (the adaptive error test and Newton's residual test
+  // then compare like with like).
+  double length = 1.0;
+};
+
+// Ground acceleration (m/s^2) in the model's x and y directions; a bare number is along x.
+struct GroundAcceleration {
+  double x = 0.0, y = 0.0;
+  GroundAcceleration(double ax = 0.0, double ay = 0.0) : x(ax), y(ay) {}  // NOLINT: implicit
 };
 
 // Bookkeeping for outputs: which DOFs belong to a structure, bottom to top, and its stories.
@@ -30,14 +46,16 @@ struct Model {
   Eigen::MatrixXd mass;       // M, kg (symmetric positive definite)
   Eigen::MatrixXd damping;    // C, N s/m (linear viscous)
   Eigen::MatrixXd stiffness;  // K, N/m (linear springs)
-  // Equation of motion: M a + C v + K u + f_nl(u, v) = -M influence a_g(t).
-  Eigen::VectorXd influence;
+  // Equation of motion: M a + C v + K u + f_nl(u, v) = -M influence a_g(t), a_g = (a_x, a_y).
+  // n x 2: column c holds the DOFs' rigid-body displacement for a unit ground displacement in
+  // direction c. A model given a single column (n x 1) is excited along x only.
+  Eigen::MatrixXd influence;
   std::vector<std::unique_ptr<Element>> elements;
   std::vector<Dof> dofs;
   std::vector<StructureInfo> structures;
 
   int size() const { return static_cast<int>(dofs.size()); }
-  // Grows M, C, K and the influence vector to n DOFs; the new rows and columns are zero.
+  // Grows M, C, K and the influence matrix (to n x 2) to n DOFs; the new entries are zero.
   void grow(int n) {
     for (Eigen::MatrixXd* m : {&mass, &damping, &stiffness}) {
       const Eigen::Index old = m->rows();
@@ -45,11 +63,19 @@ struct Model {
       m->bottomRows(n - old).setZero();
       m->rightCols(n - old).setZero();
     }
-    const Eigen::Index old = influence.size();
-    influence.conservativeResize(n);
-    influence.tail(n - old).setZero();
+    const Eigen::Index old = influence.rows(), old_cols = influence.cols();
+    influence.conservativeResize(n, 2);
+    influence.bottomRows(n - old).setZero();
+    influence.rightCols(2 - old_cols).setZero();
   }
-  double total_mass() const { return influence.dot(mass * influence); }
+  // M times the influence matrix, always n x 2 (a zero y column for an x-only model).
+  Eigen::MatrixXd ground_load_matrix() const {
+    Eigen::MatrixXd m_iota = Eigen::MatrixXd::Zero(size(), 2);
+    m_iota.leftCols(influence.cols()) = mass * influence;
+    return m_iota;
+  }
+  // Total translational mass (along x), kg.
+  double total_mass() const { return influence.col(0).dot(mass * influence.col(0)); }
 };
 
 }  // namespace isopound
