@@ -41,12 +41,13 @@ void update(Peak& peak, double value, double t) {
   }
 }
 
-// Ground acceleration at a fraction `frac` in [0, 1] of analysis interval `interval`.
+// Ground acceleration (both components) at a fraction `frac` in [0, 1] of analysis interval
+// `interval`.
 struct GroundSampler {
   const GroundMotion& motion;
   int per_sample;  // analysis intervals per record interval
 
-  double operator()(long interval, double frac_of_interval) const {
+  GroundAcceleration operator()(long interval, double frac_of_interval) const {
     long k = interval / per_sample;
     const long j = interval % per_sample;
     double frac = (static_cast<double>(j) + frac_of_interval) / per_sample;
@@ -54,11 +55,13 @@ struct GroundSampler {
       ++k;
       frac = 0.0;
     }
-    const auto& a = motion.acceleration;
-    const long n = static_cast<long>(a.size());
-    const double a0 = k < n ? a[k] : 0.0;
-    const double a1 = k + 1 < n ? a[k + 1] : 0.0;
-    return a0 + frac * (a1 - a0);
+    const auto sample = [&](const std::vector<double>& a) {
+      const long n = static_cast<long>(a.size());
+      const double a0 = k < n ? a[k] : 0.0;
+      const double a1 = k + 1 < n ? a[k + 1] : 0.0;
+      return a0 + frac * (a1 - a0);
+    };
+    return {sample(motion.acceleration), sample(motion.acceleration_y)};
   }
 };
 
@@ -100,7 +103,7 @@ double shortest_period(Model& model) {
     e->revert();
   }
   try {
-    return compute_modes(k, model.mass, model.influence).period.minCoeff();
+    return compute_modes(k, model.mass, model.influence.col(0)).period.minCoeff();
   } catch (const std::invalid_argument&) {
     return 0.0;  // a mechanism at rest (e.g. only contacts hold a DOF): no period rule
   }
@@ -140,17 +143,28 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   const long intervals = static_cast<long>(std::ceil(total / H - 1e-9));
   const int max_level = cfg.max_halvings;
   const GroundSampler ground{motion, per_sample};
+  const bool two_components = !motion.acceleration_y.empty();
+  // Absolute acceleration = relative + rigid response to the ground: a + iota a_g.
+  const Eigen::MatrixXd& iota = model.influence;
+  const auto rigid = [&](int i, const GroundAcceleration& ag) {
+    return iota.cols() > 1 && ag.y != 0.0 ? iota(i, 0) * ag.x + iota(i, 1) * ag.y
+                                          : iota(i, 0) * ag.x;
+  };
 
-  // Error scale per DOF: the weight of the DOF's mass times the tolerance (see newmark.h).
+  // Error scale per DOF: the weight of the DOF's mass times the tolerance (see newmark.h); for a
+  // rotation measured through a length r (Dof::length, e.g. the radius of gyration, M_ii = m r^2)
+  // the moment of the weight at arm r, M_ii g / r.
   Eigen::VectorXd force_scale(n);
   for (int i = 0; i < n; ++i)
-    force_scale[i] = cfg.tolerance * kGravity * std::max(model.mass(i, i), 1e-12);
+    force_scale[i] =
+        cfg.tolerance * kGravity * std::max(model.mass(i, i), 1e-12) / model.dofs[i].length;
 
   // History layout.
   const double out_interval = options.output.interval > 0 ? options.output.interval : motion.dt;
   if (options.output.histories) {
     auto& c = res.history.columns;
     c = {"time [s]", "ground_acceleration [m/s2]"};
+    if (two_components) c.push_back("ground_acceleration_y [m/s2]");
     for (const Dof& d : model.dofs) c.push_back(d.label + " u [m]");
     for (const Dof& d : model.dofs) c.push_back(d.label + " v [m/s]");
     for (const Dof& d : model.dofs) c.push_back(d.label + " a_abs [m/s2]");
@@ -175,20 +189,20 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
 
   // Energy terms (trapezoidal rule on the powers).
   Eigen::VectorXd work(n);
-  const Eigen::VectorXd m_iota = model.mass * model.influence;
+  const Eigen::MatrixXd m_iota = model.ground_load_matrix();
   double p_in_prev = 0.0, p_visc_prev = 0.0, p_elem_prev = 0.0;
   double e_in = 0.0, e_visc = 0.0, w_elem = 0.0, max_in = 0.0, max_err = 0.0;
   double initial_energy = -1.0;  // kinetic + recoverable energy of the initial conditions
   double stored_at_start = 0.0;  // element work is counted from 0, their energy from here
 
-  auto record = [&](double t, double ag, double h) {
+  auto record = [&](double t, const GroundAcceleration& ag, double h) {
     const Eigen::VectorXd& u = stepper.u();
     const Eigen::VectorXd& v = stepper.v();
     const Eigen::VectorXd& a = stepper.a();
     for (int i = 0; i < n; ++i) {
       update(res.displacement[i], u[i], t);
       update(res.velocity[i], v[i], t);
-      update(res.absolute_acceleration[i], a[i] + model.influence[i] * ag, t);
+      update(res.absolute_acceleration[i], a[i] + rigid(i, ag), t);
     }
     for (std::size_t s = 0; s < res.stories.size(); ++s) {
       const Story& st = res.stories[s];
@@ -203,7 +217,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
 
     // Energy.
-    const double p_in = -v.dot(m_iota) * ag;
+    double p_in = -v.dot(m_iota.col(0)) * ag.x;
+    if (ag.y != 0.0) p_in -= v.dot(m_iota.col(1)) * ag.y;
     work.noalias() = model.damping * v;
     const double p_visc = v.dot(work);
     double p_elem = 0.0, stored = 0.0;
@@ -238,10 +253,11 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     if (options.output.histories && t >= next_output - 1e-9 * out_interval) {
       auto& vals = res.history.values;
       vals.push_back(t);
-      vals.push_back(ag);
+      vals.push_back(ag.x);
+      if (two_components) vals.push_back(ag.y);
       for (int i = 0; i < n; ++i) vals.push_back(u[i]);
       for (int i = 0; i < n; ++i) vals.push_back(v[i]);
-      for (int i = 0; i < n; ++i) vals.push_back(a[i] + model.influence[i] * ag);
+      for (int i = 0; i < n; ++i) vals.push_back(a[i] + rigid(i, ag));
       vals.insert(vals.end(), output_scratch.begin(), output_scratch.end());
       next_output += out_interval;
       while (next_output <= t + 1e-9 * out_interval) next_output += out_interval;
@@ -285,7 +301,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   std::vector<char> settling(model.elements.size(), 0);
   // The settling elements switch status at the committed state; if a force jumped, the stepper
   // restarts from equilibrium (ground acceleration ag) and so does the power integrand.
-  const auto settle_events = [&](double ag) {
+  const auto settle_events = [&](const GroundAcceleration& ag) {
     bool jumped = false;
     for (std::size_t k = 0; k < model.elements.size(); ++k)
       if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
@@ -306,7 +322,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         frac = 1.0 - pos;
       }
       const double h = frac * H;
-      const double ag1 = ground(i, pos + frac);
+      const GroundAcceleration ag1 = ground(i, pos + frac);
       const bool at_event = forced > 0;
       const StepOutcome out = stepper.try_step(h, ag1, regular, at_event);
       st.newton_iterations += out.iterations;
