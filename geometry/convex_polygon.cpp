@@ -1,0 +1,146 @@
+// ConvexPolygon: validation (with messages naming the vertex), rigid placement, area properties.
+// Orientation: counter-clockwise; clockwise input is reversed, the index in messages is the
+// input's.
+#include "geometry/convex_polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace isopound {
+namespace {
+
+// A vertex whose turn has |sin| below this (relative to its two edges) lies on the line
+// through its neighbours: it deviates from that line by < 1e-9 of an edge length, far below
+// anything a drawing means, yet well above the round-off (~1e-13) of coordinates near 10³ m.
+constexpr double kCollinearSine = 1e-9;
+// Two vertices closer than this fraction of the polygon's size are the same vertex.
+constexpr double kRepeatedFraction = 1e-12;
+
+std::string describe(int i, Vec2 p) {
+  std::ostringstream out;
+  out.precision(12);
+  out << "vertex " << i << " (" << p.x << ", " << p.y << ")";
+  return out.str();
+}
+
+[[noreturn]] void reject(int i, Vec2 p, const std::string& what) {
+  throw InvalidPolygon(i, describe(i, p) + ": " + what);
+}
+
+}  // namespace
+
+ConvexPolygon::ConvexPolygon(std::initializer_list<Vec2> vertices)
+    : ConvexPolygon(std::span<const Vec2>(vertices.begin(), vertices.size())) {}
+
+ConvexPolygon::ConvexPolygon(std::span<const Vec2> in) {
+  const int n = int(in.size());
+  if (n < 3) {
+    throw InvalidPolygon(-1, "a polygon needs at least 3 vertices, got " + std::to_string(n));
+  }
+  if (n > kMaxPolygonVertices) {
+    throw InvalidPolygon(-1, "a polygon may have at most " + std::to_string(kMaxPolygonVertices) +
+                                 " vertices, got " + std::to_string(n));
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!std::isfinite(in[i].x) || !std::isfinite(in[i].y)) {
+      reject(i, in[i], "coordinate is not a finite number");
+    }
+  }
+  Vec2 lo = in[0], hi = in[0];
+  for (const Vec2& p : in) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  const double size = std::max(hi.x - lo.x, hi.y - lo.y);
+  for (int i = 1; i < n; ++i) {
+    for (int j = 0; j < i; ++j) {
+      const Vec2 d = in[i] - in[j];
+      if (std::hypot(d.x, d.y) <= kRepeatedFraction * size) {
+        reject(i, in[i], "repeats vertex " + std::to_string(j));
+      }
+    }
+  }
+  // Twice the signed area about vertex 0: > 0 counter-clockwise.
+  double twice_area = 0.0;
+  for (int i = 1; i + 1 < n; ++i) twice_area += cross(in[i] - in[0], in[i + 1] - in[0]);
+  if (std::abs(twice_area) <= kCollinearSine * size * size) {
+    throw InvalidPolygon(-1, "zero area: all " + std::to_string(n) + " vertices lie on one line");
+  }
+  const double orientation = twice_area > 0.0 ? 1.0 : -1.0;
+  // Every turn strictly left (in the polygon's own orientation), and one turn around in total.
+  double turned = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const Vec2 e_in = in[i] - in[(i + n - 1) % n];
+    const Vec2 e_out = in[(i + 1) % n] - in[i];
+    const double c = orientation * cross(e_in, e_out);
+    const double scale = std::hypot(e_in.x, e_in.y) * std::hypot(e_out.x, e_out.y);
+    if (std::abs(c) <= kCollinearSine * scale) {
+      reject(i, in[i], "lies on the straight line through its neighbours (remove it)");
+    }
+    if (c < 0.0) {
+      reject(i, in[i],
+             orientation > 0.0 ? "the outline turns right here: not convex"
+                               : "the outline (clockwise) turns left here: not convex");
+    }
+    turned += std::atan2(c, dot(e_in, e_out));
+    if (turned > 2.0 * std::numbers::pi * (1.0 + 1e-9)) {
+      reject(i, in[i],
+             "the outline has turned more than 360 degrees by here (it crosses itself): "
+             "not convex");
+    }
+  }
+  count_ = n;
+  reversed_ = orientation < 0.0;
+  for (int i = 0; i < n; ++i) vertices_[i] = reversed_ ? in[n - 1 - i] : in[i];
+  update_box();
+}
+
+void ConvexPolygon::update_box() {
+  box_min_ = box_max_ = vertices_[0];
+  for (int i = 1; i < count_; ++i) {
+    box_min_ = {std::min(box_min_.x, vertices_[i].x), std::min(box_min_.y, vertices_[i].y)};
+    box_max_ = {std::max(box_max_.x, vertices_[i].x), std::max(box_max_.y, vertices_[i].y)};
+  }
+}
+
+ConvexPolygon ConvexPolygon::placed(const Placement2& x, Vec2 about) const {
+  ConvexPolygon out;
+  out.count_ = count_;
+  out.reversed_ = reversed_;
+  const double c = std::cos(x.theta), s = std::sin(x.theta);
+  for (int i = 0; i < count_; ++i) {
+    const Vec2 r = vertices_[i] - about;
+    out.vertices_[i] = {about.x + c * r.x - s * r.y + x.u, about.y + s * r.x + c * r.y + x.v};
+  }
+  out.update_box();
+  return out;
+}
+
+AreaProperties area_properties(const ConvexPolygon& polygon) {
+  const int n = polygon.size();
+  Vec2 origin;
+  for (int i = 0; i < n; ++i) origin = origin + polygon[i];
+  origin = (1.0 / n) * origin;
+  // Shoelace sums about `origin`: 2A, 6A·C, and 12·(I_xx + I_yy) about `origin`.
+  double twice_area = 0.0, cx = 0.0, cy = 0.0, twelve_j = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const Vec2 p = polygon[i] - origin;
+    const Vec2 q = polygon[(i + 1) % n] - origin;
+    const double w = cross(p, q);
+    twice_area += w;
+    cx += w * (p.x + q.x);
+    cy += w * (p.y + q.y);
+    twelve_j += w * (p.x * p.x + p.x * q.x + q.x * q.x + p.y * p.y + p.y * q.y + q.y * q.y);
+  }
+  AreaProperties out;
+  out.area = 0.5 * twice_area;
+  const Vec2 p_OC{cx / (3.0 * twice_area), cy / (3.0 * twice_area)};
+  out.p_WC = origin + p_OC;
+  // Parallel axes: J_origin = J_c + A·|OC|².
+  out.polar_moment_c = twelve_j / 12.0 - out.area * dot(p_OC, p_OC);
+  return out;
+}
+
+}  // namespace isopound

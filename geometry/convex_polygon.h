@@ -1,0 +1,107 @@
+// ConvexPolygon: a convex polygon in plan (a floor diaphragm, a wall), its validation, rigid
+// placement by (u, v, θ) and mass properties. Vertices counter-clockwise, in metres, plan frame W.
+#pragma once
+
+#include <array>
+#include <initializer_list>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace isopound {
+
+// A point or vector in plan (metres for points).
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+inline Vec2 operator+(Vec2 a, Vec2 b) {
+  return {a.x + b.x, a.y + b.y};
+}
+inline Vec2 operator-(Vec2 a, Vec2 b) {
+  return {a.x - b.x, a.y - b.y};
+}
+inline Vec2 operator*(double s, Vec2 a) {
+  return {s * a.x, s * a.y};
+}
+inline double dot(Vec2 a, Vec2 b) {
+  return a.x * b.x + a.y * b.y;
+}
+// z-component of a × b: > 0 when b is counter-clockwise from a.
+inline double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+
+// Most vertices a ConvexPolygon may have. Two of them intersect in at most 2·kMax vertices, so
+// every overlap fits in fixed arrays (no allocation in the contact loop).
+inline constexpr int kMaxPolygonVertices = 16;
+
+// Thrown by ConvexPolygon's validation. `vertex()` is the 0-based index of the offending vertex
+// in the order given, or -1 when the fault is the polygon as a whole (too few vertices, zero area).
+class InvalidPolygon : public std::invalid_argument {
+ public:
+  InvalidPolygon(int vertex, const std::string& what)
+      : std::invalid_argument(what), vertex_(vertex) {}
+  int vertex() const { return vertex_; }
+
+ private:
+  int vertex_;
+};
+
+// Rigid motion in plan: rotation θ (rad, counter-clockwise) about a point, then translation (u, v).
+// The DOFs (u, v, θ) of a diaphragm are taken at the point `about` (the global origin for floors).
+struct Placement2 {
+  double u = 0.0;      // m, translation along x
+  double v = 0.0;      // m, translation along y
+  double theta = 0.0;  // rad, counter-clockwise
+};
+
+// A strictly convex polygon, vertices counter-clockwise. Invariants (checked on construction):
+// 3..kMaxPolygonVertices finite vertices, no two equal, every turn strictly left (no vertex on
+// the line through its neighbours), turning once around (no star shapes), area > 0.
+// Clockwise input is FIXED (the order is reversed), not rejected: the same outline, either way.
+class ConvexPolygon {
+ public:
+  // Validates; throws InvalidPolygon with a message naming the vertex (index in `vertices`).
+  explicit ConvexPolygon(std::span<const Vec2> vertices);
+  ConvexPolygon(std::initializer_list<Vec2> vertices);
+
+  int size() const { return count_; }
+  const Vec2& operator[](int i) const { return vertices_[i]; }  // i in [0, size())
+  std::span<const Vec2> vertices() const { return {vertices_.data(), size_t(count_)}; }
+  // Axis-aligned bounding box (kept with the vertices: the rejection test reads it).
+  Vec2 box_min() const { return box_min_; }
+  Vec2 box_max() const { return box_max_; }
+  // True when the input was clockwise and has been reversed.
+  bool was_reversed() const { return reversed_; }
+
+  // This polygon moved rigidly: each vertex p ↦ about + R(θ)(p − about) + (u, v).
+  // No validation and no allocation (a rigid motion keeps a valid polygon valid, up to round-off).
+  ConvexPolygon placed(const Placement2& x, Vec2 about = {0.0, 0.0}) const;
+
+ private:
+  ConvexPolygon() = default;
+  void update_box();
+
+  std::array<Vec2, kMaxPolygonVertices> vertices_{};
+  int count_ = 0;
+  bool reversed_ = false;
+  Vec2 box_min_;
+  Vec2 box_max_;
+};
+
+// Area properties of a plane figure (what a rigid diaphragm's mass matrix needs).
+struct AreaProperties {
+  double area = 0.0;            // m², > 0
+  Vec2 p_WC;                    // centroid C in the plan frame W, m
+  double polar_moment_c = 0.0;  // J_c = ∫ |p − C|² dA, m⁴, about the centroid
+  // Polar radius of gyration squared about the centroid, r_g² = J_c / A (m²).
+  double radius_of_gyration_sq() const { return polar_moment_c / area; }
+};
+
+// Area, centroid and polar second moment about the centroid, computed about a vertex-mean origin
+// (less round-off far from W's origin). A rectangle b×h: A = bh, J_c = bh(b² + h²)/12.
+AreaProperties area_properties(const ConvexPolygon& polygon);
+
+}  // namespace isopound
