@@ -8,6 +8,7 @@
 #include "solver/core/modes.h"
 #include "solver/io/model_input.h"
 #include "solver/io/report.h"
+#include "solver/io/report3d.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
@@ -61,6 +62,7 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
 }
 
 void print_modes(const ModelConfig& config) {
+  if (!config.structures3d.empty()) return print_modes3d(std::cout, config);  // report3d.cpp
   const BuildingConfig& b = config.building;
   const auto show = [](const char* title, const Modes& m, const std::vector<std::string>& labels) {
     std::printf("%s\n  mode  period [s]  eff. mass [%%]  shape (%s ... %s, max = 1)\n", title,

@@ -124,6 +124,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   res.absolute_acceleration.resize(n);
   res.drift.resize(res.stories.size());
   res.drift_ratio.resize(res.stories.size());
+  res.probes.resize(model.probes.size());
   res.element_outputs.resize(n_elements);
   for (int e = 0; e < n_elements; ++e)
     res.element_outputs[e].resize(model.elements[e]->output_count());
@@ -209,6 +210,21 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
       update(res.drift[s], drift, t);
       update(res.drift_ratio[s], drift / st.height, t);
+    }
+    for (std::size_t p = 0; p < model.probes.size(); ++p) {
+      const PlanProbe& probe = model.probes[p];
+      const bool abs_acc = probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration;
+      const auto sum = [&](const std::vector<std::pair<int, double>>& terms) {
+        double x = 0.0;
+        for (const auto& [dof, c] : terms) x += c * (abs_acc ? a[dof] + rigid(dof, ag) : u[dof]);
+        return x;
+      };
+      const double x = sum(probe.x_terms), y = sum(probe.y_terms), r = std::sqrt(x * x + y * y);
+      ProbePeaks& pk = res.probes[p];
+      update(pk.x, x, t);
+      update(pk.y, y, t);
+      update(pk.resultant, r, t);
+      if (probe.length > 0) update(pk.ratio, r / probe.length, t);
     }
     for (int e = 0; e < n_elements; ++e) {
       double* values = output_scratch.data() + output_offset[e];

@@ -66,6 +66,12 @@ struct History {
   std::size_t rows() const { return columns.empty() ? 0 : values.size() / columns.size(); }
 };
 
+// Peaks of a PlanProbe (model.h).
+struct ProbePeaks {
+  Peak x, y, resultant;  // m or m/s^2
+  Peak ratio;            // resultant / length, when length > 0
+};
+
 struct AnalysisResult {
   std::vector<Story> stories;
   std::vector<Peak> displacement;                  // per DOF, relative to the ground, m
@@ -74,6 +80,7 @@ struct AnalysisResult {
   std::vector<Peak> drift;                         // per story, m
   std::vector<Peak> drift_ratio;                   // per story
   std::vector<std::vector<Peak>> element_outputs;  // per element, per output
+  std::vector<ProbePeaks> probes;                  // per Model::probes entry
   EnergyBalance energy;
   RunStatistics stats;
   History history;

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/core/element.h"
@@ -42,6 +43,18 @@ struct StructureInfo {
   int isolator_element = -1;          // index into Model::elements, or -1
 };
 
+// A derived response in plan, for outputs only: two components, each a linear combination of DOF
+// values (a point of a rigid floor: u - y theta, v + x theta; a column's drift: the difference of
+// that between two floors). The analysis reports peaks of x, y and of the resultant sqrt(x^2 +
+// y^2) taken at each instant.
+struct PlanProbe {
+  enum class Quantity { kDisplacement, kAbsoluteAcceleration };
+  std::string label;  // e.g. "building/floor 1/CM", "building/story 2/A1"
+  Quantity quantity = Quantity::kDisplacement;
+  std::vector<std::pair<int, double>> x_terms, y_terms;  // (DOF index, coefficient)
+  double length = 0.0;  // > 0: also the peak of resultant / length (a drift ratio)
+};
+
 struct Model {
   Eigen::MatrixXd mass;       // M, kg (symmetric positive definite)
   Eigen::MatrixXd damping;    // C, N s/m (linear viscous)
@@ -53,6 +66,7 @@ struct Model {
   std::vector<std::unique_ptr<Element>> elements;
   std::vector<Dof> dofs;
   std::vector<StructureInfo> structures;
+  std::vector<PlanProbe> probes;
 
   int size() const { return static_cast<int>(dofs.size()); }
   // Grows M, C, K and the influence matrix (to n x 2) to n DOFs; the new entries are zero.

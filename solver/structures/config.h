@@ -7,6 +7,7 @@
 
 #include "solver/excitation/ground_motion.h"
 #include "solver/materials/impact_law.h"
+#include "solver/structures/config3d.h"
 
 namespace isopound {
 
@@ -84,6 +85,13 @@ struct GroundMotionConfig {
   RecordReadOptions read;   // format, column, dt, unit, scale
   PulseParameters pulse;
   double extra_time = 0.0;  // s of free vibration computed after the record ends
+  // A record pair (3D): components[0] = L, components[1] = T (their record or pulse fields; the
+  // fields above then are unused) at incidence angle `angle` (rad, counter-clockwise from X to
+  // L; THEORY eq. 5.12-5.13). Empty: one component along x (or, for a 3D model without any
+  // record, the built-in pulse as L and pulse_transverse_ratio times it as T).
+  std::vector<GroundMotionConfig> components;
+  double angle = 0.0;
+  double pulse_transverse_ratio = 0.5;
 };
 
 struct AnalysisConfig {
@@ -113,6 +121,9 @@ struct OutputConfig {
 struct ModelConfig {
   std::string source;  // the YAML file it came from (for messages)
   BuildingConfig building;
+  // 3D structures (`structures:` in the model file); when not empty, `building` and
+  // `neighbours` are unused.
+  std::vector<Building3DConfig> structures3d;
   std::vector<NeighbourConfig> neighbours;
   GroundMotionConfig ground_motion;
   AnalysisConfig analysis;
