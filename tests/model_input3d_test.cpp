@@ -88,6 +88,20 @@ TEST(ModelInput3D, BadInputsNameLineAndKey) {
   }
 }
 
+TEST(ModelInput3D, TutorialAndThesisConfigsParse) {
+  const ModelConfig t =
+      load_model_file((test::source_dir() / "configs" / "tutorial-3d.yaml").string());
+  ASSERT_EQ(t.structures3d.size(), 1u);
+  ASSERT_EQ(t.ground_motion.components.size(), 2u);
+  EXPECT_NEAR(t.ground_motion.angle, 30.0 * 3.14159265358979323846 / 180.0, 1e-15);
+  EXPECT_EQ(t.structures3d[0].storeys[0].columns.size(), 16u);
+  const ModelConfig e =
+      load_model_file((test::source_dir() / "configs" / "3d-eccentric-v30.yaml").string());
+  EXPECT_DOUBLE_EQ(e.structures3d[0].base.eccentricity.x, 0.60);
+  EXPECT_DOUBLE_EQ(e.structures3d[0].storeys[2].floor.eccentricity.y, 0.60);
+  EXPECT_DOUBLE_EQ(e.structures3d[0].bearing.strength_ratio, 0.10);
+}
+
 TEST(ModelInput3D, CheckCommandExitsWith2) {
   const std::string path = ::testing::TempDir() + "bad3d.yaml";
   {

@@ -115,8 +115,15 @@ Column3DConfig make_column(const ColumnProps& p, const InputNode& where) {
   return c;
 }
 
+// Built by append: GCC 12 warns (-Wrestrict, a false positive) on "x" + std::to_string(n).
+std::string numbered(char prefix, std::size_t n) {
+  std::string s(1, prefix);
+  s.append(std::to_string(n));
+  return s;
+}
+
 std::string grid_label(int ix, int iy) {
-  return std::string(1, static_cast<char>('A' + ix)) + std::to_string(iy + 1);
+  return numbered(static_cast<char>('A' + ix), static_cast<std::size_t>(iy + 1));
 }
 
 // grid: {bays_x: [...], bays_y: [...], origin: [x, y]}: columns at every intersection, named
@@ -304,8 +311,8 @@ Building3DConfig read_building3d(const InputNode& node) {
           read_column_props(c, p);
           Column3DConfig col = make_column(p, c);
           col.position = read_point(c.required("at"));
-          col.label = c.has("label") ? c.required("label").string()
-                                     : "C" + std::to_string(s.columns.size() + 1);
+          col.label =
+              c.has("label") ? c.required("label").string() : numbered('C', s.columns.size() + 1);
           s.columns.push_back(col);
         }
         if (s.columns.empty()) cols->fail("no columns");
@@ -347,7 +354,7 @@ Building3DConfig read_building3d(const InputNode& node) {
         Bearing3DConfig br;
         br.position = read_point(item.required("at"));
         br.label = item.has("label") ? item.required("label").string()
-                                     : "B" + std::to_string(b.bearings.size() + 1);
+                                     : numbered('B', b.bearings.size() + 1);
         item.read_quantity("carried_mass", dim::kMass, Bound::kPositive, br.carried_mass);
         if (!inside(b.base.plan, br.position))
           item.required("at").fail("bearing " + br.label + " is outside the base slab's plan");

@@ -126,10 +126,10 @@ class UncoupledPlanBearing final : public Element {
     const double dy = dofs_.uy >= 0 ? y_->deformation() : 0.0;
     out[0] = x_->force();
     out[1] = fy;
-    out[2] = std::hypot(out[0], fy);
+    out[2] = std::sqrt(out[0] * out[0] + fy * fy);
     out[3] = x_->deformation();
     out[4] = dy;
-    out[5] = std::hypot(out[3], dy);
+    out[5] = std::sqrt(out[3] * out[3] + dy * dy);
     out[6] = x_->internal();
     out[7] = dofs_.uy >= 0 ? y_->internal() : 0.0;
   }
