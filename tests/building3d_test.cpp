@@ -143,6 +143,48 @@ TEST(Building3D, QuarterTurnOfThePairSwapsXAndY) {
         << p;  // CM and column resultants of a quarter-turn-symmetric building
 }
 
+// Two buildings in one model: one at the origin, one placed at (40 m, 12 m) and turned by 90
+// degrees (a square grid turned by a quarter is the same building, so its centre of mass moves
+// exactly as the first's), plus a fixed-base building.
+TEST(Building3D, SeveralStructuresPlacedInPlan) {
+  ModelConfig c = thesis_config();
+  c.ground_motion = GroundMotionConfig{};  // pulse pair
+  c.ground_motion.angle = 0.3;
+  c.output.histories = false;
+  Building3DConfig moved = c.structures3d[0];
+  moved.name = "moved";
+  moved.position = {40.0, 12.0};
+  moved.rotation = std::numbers::pi / 2;
+  Building3DConfig fixed = c.structures3d[0];
+  fixed.name = "fixed";
+  fixed.isolated = false;
+  fixed.position = {-40.0, 0.0};
+  c.structures3d.push_back(moved);
+  c.structures3d.push_back(fixed);
+  const JobResult job = run_job(c);
+  const AnalysisResult& r = job.analysis;
+  ASSERT_EQ(job.model.size(), 12 + 12 + 9);
+  // Centre-of-mass probes of the moved building equal the first's.
+  const auto probe = [&](const std::string& label) -> const ProbePeaks& {
+    for (std::size_t p = 0; p < job.model.probes.size(); ++p)
+      if (job.model.probes[p].label == label &&
+          job.model.probes[p].quantity == PlanProbe::Quantity::kDisplacement)
+        return r.probes[p];
+    ADD_FAILURE() << "no probe " << label;
+    return r.probes[0];
+  };
+  for (const char* level : {"base", "floor 1", "floor 3"}) {
+    const ProbePeaks& a = probe(std::string("building/") + level + "/CM");
+    const ProbePeaks& b = probe(std::string("moved/") + level + "/CM");
+    EXPECT_NEAR(b.x.value, a.x.value, 1e-9 * a.resultant.value) << level;
+    EXPECT_NEAR(b.y.value, a.y.value, 1e-9 * a.resultant.value) << level;
+    EXPECT_NEAR(b.resultant.value, a.resultant.value, 1e-9 * a.resultant.value) << level;
+  }
+  // The fixed-base building drifts (a storey-1 column relative to the ground) but has no base.
+  EXPECT_GT(probe("fixed/floor 1/CM").resultant.value, 1e-4);
+  EXPECT_FALSE(job.model.structures[2].has_base);
+}
+
 // The eccentric validation building under the RSN1084 pair at 30 degrees.
 TEST(Building3D, EccentricBuildingEnergyBalance) {
   ISOPOUND_REQUIRE_RECORDS();

@@ -61,6 +61,10 @@ TEST(ModelInput3D, BadInputsNameLineAndKey) {
             "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {polygon: [[-6, -3], "
             "[6, -3], [0, 0], [6, 3], [-6, 3]]}"),
        4, "structures[0].plan.polygon[2]", "convex"},
+      {with("grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}",
+            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {polygon: [[-6, -3], "
+            "[6, 3], [6, -3], [-6, 3]]}"),
+       4, "structures[0].plan.polygon", "convex"},  // self-intersecting (a bow tie)
       {with(
            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}",
            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {rectangle: [10 m, 5.5 m]}"),

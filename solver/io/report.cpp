@@ -92,6 +92,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       {"extra_time_s", g.extra_time},
       {"isolator_model", isolator_name(config.building.isolator.model)}};
 
+  if (!config.structures3d.empty()) j["settings"].erase("isolator_model");  // 3D: per building
   json structures = json::array();
   std::size_t story_index = 0;
   for (const StructureInfo& s : model.structures) {
