@@ -147,7 +147,8 @@ int main(int argc, char** argv) {
       return kOk;
     }
     if (*check) {
-      const GroundMotion motion = load_ground_motion(config.ground_motion);
+      const GroundMotion motion =
+          load_ground_motion(config.ground_motion, !config.structures3d.empty());
       Model model = build_model(config);
       std::printf("%s: ok (%d DOFs, %zu ground-motion samples at %g s)\n", model_path.c_str(),
                   model.size(), motion.acceleration.size(), motion.dt);

@@ -166,9 +166,13 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     auto& c = res.history.columns;
     c = {"time [s]", "ground_acceleration [m/s2]"};
     if (two_components) c.push_back("ground_acceleration_y [m/s2]");
-    for (const Dof& d : model.dofs) c.push_back(d.label + " u [m]");
-    for (const Dof& d : model.dofs) c.push_back(d.label + " v [m/s]");
-    for (const Dof& d : model.dofs) c.push_back(d.label + " a_abs [m/s2]");
+    const auto unit = [](const Dof& d, const char* translation, const char* rotation) {
+      return d.kind == DofKind::kRotation ? rotation : translation;
+    };
+    for (const Dof& d : model.dofs) c.push_back(d.label + " u [" + unit(d, "m", "rad") + "]");
+    for (const Dof& d : model.dofs) c.push_back(d.label + " v [" + unit(d, "m/s", "rad/s") + "]");
+    for (const Dof& d : model.dofs)
+      c.push_back(d.label + " a_abs [" + unit(d, "m/s2", "rad/s2") + "]");
     for (const auto& e : model.elements)
       for (int k = 0; k < e->output_count(); ++k)
         c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");

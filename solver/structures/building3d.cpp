@@ -73,9 +73,9 @@ Assembly assemble(const Building3DConfig& b, bool with_base) {
     a.influence(3 * l + 1, 1) = 1.0;
     const std::string level =
         b.name + "/" + (with_base && l == 0 ? "base" : "floor " + std::to_string(l + !with_base));
-    a.dofs.push_back({level + " u", 0, l, DofKind::kTranslationX, 1.0});
-    a.dofs.push_back({level + " v", 0, l, DofKind::kTranslationY, 1.0});
-    a.dofs.push_back({level + " theta", 0, l, DofKind::kRotation, std::sqrt(m(2, 2) / m(0, 0))});
+    a.dofs.push_back({level + " (x)", 0, l, DofKind::kTranslationX, 1.0});
+    a.dofs.push_back({level + " (y)", 0, l, DofKind::kTranslationY, 1.0});
+    a.dofs.push_back({level + " (theta)", 0, l, DofKind::kRotation, std::sqrt(m(2, 2) / m(0, 0))});
   }
   const int first_floor = with_base ? 1 : 0;
   for (std::size_t s = 0; s < b.storeys.size(); ++s) {
