@@ -6,6 +6,7 @@
 
 #include "solver/core/analysis.h"
 #include "solver/io/model_input.h"
+#include "solver/structures/config3d.h"
 #include "solver/structures/job.h"
 
 namespace {

@@ -10,6 +10,7 @@
 #include "solver/io/report.h"
 #include "solver/io/report3d.h"
 #include "solver/structures/building2d.h"
+#include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
 #include "solver/study/study_cli.h"  // study commands (sweep, export)

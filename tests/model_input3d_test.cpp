@@ -6,6 +6,7 @@
 #include <string>
 
 #include "solver/io/model_input.h"
+#include "solver/structures/config3d.h"
 #include "test_support.h"
 
 namespace isopound {

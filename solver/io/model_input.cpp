@@ -3,6 +3,7 @@
 #include "solver/io/model_input.h"
 
 #include "solver/io/model_input3d.h"
+#include "solver/structures/config3d.h"
 
 #include <cstdio>
 #include <filesystem>

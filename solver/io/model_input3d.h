@@ -9,6 +9,7 @@
 
 #include "solver/io/yaml_reader.h"
 #include "solver/structures/config.h"
+#include "solver/structures/config3d.h"
 
 namespace isopound {
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "solver/io/report3d.h"
+#include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 
 namespace isopound {

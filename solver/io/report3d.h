@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "solver/structures/config3d.h"
 #include "solver/structures/job.h"
 
 namespace isopound {

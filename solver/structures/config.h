@@ -7,7 +7,6 @@
 
 #include "solver/excitation/ground_motion.h"
 #include "solver/materials/impact_law.h"
-#include "solver/structures/config3d.h"
 
 namespace isopound {
 
@@ -118,11 +117,22 @@ struct OutputConfig {
   bool histories = true;
 };
 
+// config3d.h (its bearing law, bearing.h, may include this file: no include cycle here).
+struct Building3DConfig;
+
+// Special members are defined in config.cpp, where Building3DConfig is complete.
 struct ModelConfig {
+  ModelConfig();
+  ~ModelConfig();
+  ModelConfig(const ModelConfig&);
+  ModelConfig(ModelConfig&&) noexcept;
+  ModelConfig& operator=(const ModelConfig&);
+  ModelConfig& operator=(ModelConfig&&) noexcept;
+
   std::string source;  // the YAML file it came from (for messages)
   BuildingConfig building;
   // 3D structures (`structures:` in the model file); when not empty, `building` and
-  // `neighbours` are unused.
+  // `neighbours` are unused. Include solver/structures/config3d.h to use them.
   std::vector<Building3DConfig> structures3d;
   std::vector<NeighbourConfig> neighbours;
   GroundMotionConfig ground_motion;

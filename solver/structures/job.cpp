@@ -5,6 +5,7 @@
 #include "solver/excitation/ground_motion_pair.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/config3d.h"
 #include "solver/structures/pounding2d.h"
 
 namespace isopound {
