@@ -94,7 +94,7 @@ void print_modes(const ModelConfig& config) {
     K(0, 0) += k;
     const std::string title = std::string("Isolated, isolators at their ") + name + " = " +
                               std::to_string(k / 1e6) + " MN/m";
-    show(title.c_str(), compute_modes(K, model.mass, model.influence.col(0)), labels);
+    show(title.c_str(), compute_modes(K, model.mass, model.influence), labels);
   }
   std::printf("Isolators: K_post %.4g N/m, F_y %.4g N, K_el %.4g N/m, alpha %.4f, Q %.4g N\n",
               p.post_yield_stiffness, p.yield_force, p.elastic_stiffness, p.alpha,

@@ -39,7 +39,8 @@ TEST(StepperGeneral, NonSymmetricTangentUsesLUAndMatchesDirectNewmark) {
   model.mass = Eigen::Vector2d(2e5, 3e5).asDiagonal();
   model.stiffness = Eigen::Matrix2d{{4e7, 0.0}, {0.0, 5e7}};
   model.damping = Eigen::Matrix2d::Zero();
-  model.influence = Eigen::Matrix2d::Identity();
+  model.influence = Eigen::Vector2d(1.0, 0.0);
+  model.influence_y = Eigen::Vector2d(0.0, 1.0);
   Eigen::Matrix2d A{{1e6, 3e7}, {-2e7, 2e6}};  // strongly non-symmetric
   model.elements.push_back(std::make_unique<NonSymmetricLinear>(A));
   NewmarkStepper stepper(model, {1e-12, 25});

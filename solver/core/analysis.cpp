@@ -103,7 +103,7 @@ double shortest_period(Model& model) {
     e->revert();
   }
   try {
-    return compute_modes(k, model.mass, model.influence.col(0)).period.minCoeff();
+    return compute_modes(k, model.mass, model.influence).period.minCoeff();
   } catch (const std::invalid_argument&) {
     return 0.0;  // a mechanism at rest (e.g. only contacts hold a DOF): no period rule
   }
@@ -146,10 +146,10 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   const GroundSampler ground{motion, per_sample};
   const bool two_components = !motion.acceleration_y.empty();
   // Absolute acceleration = relative + rigid response to the ground: a + iota a_g.
-  const Eigen::MatrixXd& iota = model.influence;
+  const bool has_y = model.influence_y.size() == n;
   const auto rigid = [&](int i, const GroundAcceleration& ag) {
-    return iota.cols() > 1 && ag.y != 0.0 ? iota(i, 0) * ag.x + iota(i, 1) * ag.y
-                                          : iota(i, 0) * ag.x;
+    return has_y && ag.y != 0.0 ? model.influence[i] * ag.x + model.influence_y[i] * ag.y
+                                : model.influence[i] * ag.x;
   };
 
   // Error scale per DOF: the weight of the DOF's mass times the tolerance (see newmark.h); for a

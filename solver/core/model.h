@@ -59,17 +59,18 @@ struct Model {
   Eigen::MatrixXd mass;       // M, kg (symmetric positive definite)
   Eigen::MatrixXd damping;    // C, N s/m (linear viscous)
   Eigen::MatrixXd stiffness;  // K, N/m (linear springs)
-  // Equation of motion: M a + C v + K u + f_nl(u, v) = -M influence a_g(t), a_g = (a_x, a_y).
-  // n x 2: column c holds the DOFs' rigid-body displacement for a unit ground displacement in
-  // direction c. A model given a single column (n x 1) is excited along x only.
-  Eigen::MatrixXd influence;
+  // Equation of motion: M a + C v + K u + f_nl(u, v) = -M [influence influence_y] (a_x, a_y)^T:
+  // the influence matrix (n x 2) by columns, each the DOFs' rigid-body displacement for a unit
+  // ground displacement in x (influence) and in y (influence_y; empty: not excited along y).
+  Eigen::VectorXd influence;
+  Eigen::VectorXd influence_y;
   std::vector<std::unique_ptr<Element>> elements;
   std::vector<Dof> dofs;
   std::vector<StructureInfo> structures;
   std::vector<PlanProbe> probes;
 
   int size() const { return static_cast<int>(dofs.size()); }
-  // Grows M, C, K and the influence matrix (to n x 2) to n DOFs; the new entries are zero.
+  // Grows M, C, K and the influence columns to n DOFs; the new entries are zero.
   void grow(int n) {
     for (Eigen::MatrixXd* m : {&mass, &damping, &stiffness}) {
       const Eigen::Index old = m->rows();
@@ -77,19 +78,21 @@ struct Model {
       m->bottomRows(n - old).setZero();
       m->rightCols(n - old).setZero();
     }
-    const Eigen::Index old = influence.rows(), old_cols = influence.cols();
-    influence.conservativeResize(n, 2);
-    influence.bottomRows(n - old).setZero();
-    influence.rightCols(2 - old_cols).setZero();
+    for (Eigen::VectorXd* iota : {&influence, &influence_y}) {
+      const Eigen::Index old = iota->size();
+      iota->conservativeResize(n);
+      iota->tail(n - old).setZero();
+    }
   }
-  // M times the influence matrix, always n x 2 (a zero y column for an x-only model).
+  // M times the influence matrix, n x 2 (a zero y column for a model not excited along y).
   Eigen::MatrixXd ground_load_matrix() const {
     Eigen::MatrixXd m_iota = Eigen::MatrixXd::Zero(size(), 2);
-    m_iota.leftCols(influence.cols()) = mass * influence;
+    m_iota.col(0) = mass * influence;
+    if (influence_y.size() == size()) m_iota.col(1) = mass * influence_y;
     return m_iota;
   }
   // Total translational mass (along x), kg.
-  double total_mass() const { return influence.col(0).dot(mass * influence.col(0)); }
+  double total_mass() const { return influence.dot(mass * influence); }
 };
 
 }  // namespace isopound

@@ -68,7 +68,7 @@ void add_building(Model& model, const BuildingConfig& b) {
   const int n = first_floor + floors;
 
   model.grow(n);
-  model.influence.col(0).tail(n - offset).setOnes();
+  model.influence.tail(n - offset).setOnes();
 
   StructureInfo info;
   info.name = b.name;

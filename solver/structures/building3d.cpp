@@ -202,7 +202,8 @@ void add_building3d(Model& model, const Building3DConfig& b) {
   model.grow(offset + nb);
   model.mass.block(offset, offset, nb, nb) = a.mass;
   model.stiffness.block(offset, offset, nb, nb) = a.stiffness;
-  model.influence.block(offset, 0, nb, 2) = a.influence;
+  model.influence.segment(offset, nb) = a.influence.col(0);
+  model.influence_y.segment(offset, nb) = a.influence.col(1);
   StructureInfo info;
   info.name = b.name;
   info.has_base = b.isolated;

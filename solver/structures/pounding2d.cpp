@@ -18,7 +18,7 @@ int add_wall_structure(Model& model, const std::string& name, const WallConfig& 
   const int dof = model.size();
   const int n = dof + 1;
   model.grow(n);
-  model.influence(dof, 0) = 1.0;
+  model.influence[dof] = 1.0;
   model.mass(dof, dof) = wall.mass;
   model.stiffness(dof, dof) = wall.stiffness;
   model.damping(dof, dof) = 2.0 * wall.damping_ratio * std::sqrt(wall.stiffness * wall.mass);
