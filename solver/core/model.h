@@ -1,20 +1,37 @@
-// A model as the stepper sees it: DOFs (relative to the ground), linear M, C, K, the ground
-// motion influence vector, and nonlinear elements. Several structures may share one model.
+// A model as the stepper sees it: DOFs (relative to the ground) of three kinds, linear M, C, K,
+// the influence matrix of a two-component ground acceleration, and nonlinear elements.
 #pragma once
 
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/core/element.h"
 
 namespace isopound {
 
+// What a DOF measures. Translations are in m (their residuals in N); a rotation in rad (its
+// residual a moment in N m).
+enum class DofKind { kTranslationX, kTranslationY, kRotation };
+
 struct Dof {
   std::string label;  // e.g. "building/base", "building/floor 2"
   int structure = 0;  // index into Model::structures
   int level = 0;      // 0 = base slab (or the lowest DOF), 1.. = floors
+  DofKind kind = DofKind::kTranslationX;
+  // Length (m) through which the DOF's errors are measured: 1 for a translation; for a rotation
+  // e.g. the floor's radius of gyration r, so that an angle error e reads as a displacement r e
+  // and a moment residual M as a force M / r (the adaptive error test and Newton's residual test
+  // then compare like with like).
+  double length = 1.0;
+};
+
+// Ground acceleration (m/s^2) in the model's x and y directions; a bare number is along x.
+struct GroundAcceleration {
+  double x = 0.0, y = 0.0;
+  GroundAcceleration(double ax = 0.0, double ay = 0.0) : x(ax), y(ay) {}  // NOLINT: implicit
 };
 
 // Bookkeeping for outputs: which DOFs belong to a structure, bottom to top, and its stories.
@@ -26,18 +43,34 @@ struct StructureInfo {
   int isolator_element = -1;          // index into Model::elements, or -1
 };
 
+// A derived response in plan, for outputs only: two components, each a linear combination of DOF
+// values (a point of a rigid floor: u - y theta, v + x theta; a column's drift: the difference of
+// that between two floors). The analysis reports peaks of x, y and of the resultant sqrt(x^2 +
+// y^2) taken at each instant.
+struct PlanProbe {
+  enum class Quantity { kDisplacement, kAbsoluteAcceleration };
+  std::string label;  // e.g. "building/floor 1/CM", "building/story 2/A1"
+  Quantity quantity = Quantity::kDisplacement;
+  std::vector<std::pair<int, double>> x_terms, y_terms;  // (DOF index, coefficient)
+  double length = 0.0;  // > 0: also the peak of resultant / length (a drift ratio)
+};
+
 struct Model {
   Eigen::MatrixXd mass;       // M, kg (symmetric positive definite)
   Eigen::MatrixXd damping;    // C, N s/m (linear viscous)
   Eigen::MatrixXd stiffness;  // K, N/m (linear springs)
-  // Equation of motion: M a + C v + K u + f_nl(u, v) = -M influence a_g(t).
+  // Equation of motion: M a + C v + K u + f_nl(u, v) = -M [influence influence_y] (a_x, a_y)^T:
+  // the influence matrix (n x 2) by columns, each the DOFs' rigid-body displacement for a unit
+  // ground displacement in x (influence) and in y (influence_y; empty: not excited along y).
   Eigen::VectorXd influence;
+  Eigen::VectorXd influence_y;
   std::vector<std::unique_ptr<Element>> elements;
   std::vector<Dof> dofs;
   std::vector<StructureInfo> structures;
+  std::vector<PlanProbe> probes;
 
   int size() const { return static_cast<int>(dofs.size()); }
-  // Grows M, C, K and the influence vector to n DOFs; the new rows and columns are zero.
+  // Grows M, C, K and the influence columns to n DOFs; the new entries are zero.
   void grow(int n) {
     for (Eigen::MatrixXd* m : {&mass, &damping, &stiffness}) {
       const Eigen::Index old = m->rows();
@@ -45,10 +78,20 @@ struct Model {
       m->bottomRows(n - old).setZero();
       m->rightCols(n - old).setZero();
     }
-    const Eigen::Index old = influence.size();
-    influence.conservativeResize(n);
-    influence.tail(n - old).setZero();
+    for (Eigen::VectorXd* iota : {&influence, &influence_y}) {
+      const Eigen::Index old = iota->size();
+      iota->conservativeResize(n);
+      iota->tail(n - old).setZero();
+    }
   }
+  // M times the influence matrix, n x 2 (a zero y column for a model not excited along y).
+  Eigen::MatrixXd ground_load_matrix() const {
+    Eigen::MatrixXd m_iota = Eigen::MatrixXd::Zero(size(), 2);
+    m_iota.col(0) = mass * influence;
+    if (influence_y.size() == size()) m_iota.col(1) = mass * influence_y;
+    return m_iota;
+  }
+  // Total translational mass (along x), kg.
   double total_mass() const { return influence.dot(mass * influence); }
 };
 

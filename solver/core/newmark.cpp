@@ -1,5 +1,5 @@
 // Newmark average-acceleration stepper with Newton-Raphson: effective linear matrix cached per
-// step size, element tangents added each iteration, Cholesky (LDL^T fallback) solve.
+// step size, element tangents added each iteration, Cholesky (LDL^T fallback) or LU solve.
 #include "solver/core/newmark.h"
 
 #include <cmath>
@@ -17,8 +17,11 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   for (Eigen::VectorXd* x :
        {&u0_, &v0_, &a0_, &u1_, &v1_, &a1_, &p_hat_, &r_, &du_, &work_, &delta_})
     x->setZero(n);
-  m_iota_ = model.mass * model.influence;
-  force_ref_ = m_iota_.cwiseAbs().maxCoeff() * kGravity;
+  m_iota_ = model.ground_load_matrix();
+  force_ref_ = m_iota_.col(0).cwiseAbs().maxCoeff() * kGravity;
+  residual_weight_.resize(n);
+  for (int i = 0; i < n; ++i) residual_weight_[i] = 1.0 / model.dofs[i].length;
+  for (const auto& e : model.elements) use_lu_ = use_lu_ || !e->symmetric_tangent();
   k_tangent_.setZero(n, n);
   k_hat_scratch_.setZero(n, n);
   // The accelerations come from M^-1: a mass matrix that is not symmetric positive definite
@@ -42,20 +45,22 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   const Eigen::VectorXd pivots = Eigen::MatrixXd(mass_llt_.matrixL()).diagonal();
   if (pivots.minCoeff() <= 1e-7 * pivots.maxCoeff())
     throw std::invalid_argument("mass matrix is singular to working precision");
+  if (use_lu_) lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
 }
 
-void NewmarkStepper::start(double ag0) {
+void NewmarkStepper::start(GroundAcceleration ag0) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model_.size());
   start(zero, zero, ag0);
 }
 
-void NewmarkStepper::start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0, double ag0) {
+void NewmarkStepper::start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0,
+                           GroundAcceleration ag0) {
   u0_ = u0;
   v0_ = v0;
   restart(ag0);
 }
 
-void NewmarkStepper::restart(double ag0) {
+void NewmarkStepper::restart(GroundAcceleration ag0) {
   u1_ = u0_;
   v1_ = v0_;
   delta_.setZero();
@@ -64,7 +69,8 @@ void NewmarkStepper::restart(double ag0) {
     e->set_trial(u0_, v0_);
   }
   // M a0 = -M iota ag0 - C v0 - K u0 - f_nl(u0, v0)
-  work_ = -m_iota_ * ag0;
+  work_ = -m_iota_.col(0) * ag0.x;
+  if (ag0.y != 0.0) work_ -= m_iota_.col(1) * ag0.y;
   work_.noalias() -= model_.damping * v0_;
   work_.noalias() -= model_.stiffness * u0_;
   for (auto& e : model_.elements) {
@@ -91,7 +97,7 @@ const Eigen::MatrixXd& NewmarkStepper::effective_linear(double h, bool cache) {
   return k_hat_cache_.back().second;
 }
 
-StepOutcome NewmarkStepper::try_step(double h, double ag1, bool cache, bool freeze) {
+StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cache, bool freeze) {
   h_ = h;
   const Eigen::MatrixXd& k_hat = effective_linear(h, cache);
   for (auto& e : model_.elements) e->begin_step(h, freeze);
@@ -104,7 +110,8 @@ StepOutcome NewmarkStepper::try_step(double h, double ag1, bool cache, bool free
   p_hat_.noalias() = model_.stiffness * u0_;
   p_hat_.noalias() -= model_.mass * work_;
   p_hat_.noalias() -= model_.damping * v0_;
-  p_hat_ += m_iota_ * ag1;
+  p_hat_ += m_iota_.col(0) * ag1.x;
+  if (ag1.y != 0.0) p_hat_ += m_iota_.col(1) * ag1.y;
   const double tol_r =
       settings_.tolerance * force_ref_ +
       64.0 * std::numeric_limits<double>::epsilon() *
@@ -119,7 +126,7 @@ StepOutcome NewmarkStepper::try_step(double h, double ag1, bool cache, bool free
     r_.noalias() = k_hat * delta_;
     r_ += p_hat_;
     for (const auto& e : model_.elements) e->add_force(r_);
-    const double r_norm = r_.cwiseAbs().maxCoeff();
+    const double r_norm = r_.cwiseAbs().cwiseProduct(residual_weight_).maxCoeff();
     if (!std::isfinite(r_norm)) break;
     out.iterations = it;
     // Only a small residual converges: a tiny correction alone may mean a stalled iteration.
@@ -130,8 +137,10 @@ StepOutcome NewmarkStepper::try_step(double h, double ag1, bool cache, bool free
     if (it == settings_.max_iterations) break;
     k_tangent_ = k_hat;
     for (const auto& e : model_.elements) e->add_tangent(k_tangent_, 2.0 / h);
-    llt_.compute(k_tangent_);
-    if (llt_.info() == Eigen::Success) {
+    if (use_lu_) {
+      lu_.compute(k_tangent_);
+      du_ = lu_.solve(r_);
+    } else if (llt_.compute(k_tangent_); llt_.info() == Eigen::Success) {
       du_ = llt_.solve(r_);
     } else {
       ldlt_.compute(k_tangent_);

@@ -1,5 +1,5 @@
 // Newmark average-acceleration stepper (gamma = 1/2, beta = 1/4) with Newton-Raphson on the
-// nonlinear elements. Sees only M, C, K, the influence vector and Element residual/tangent/commit.
+// nonlinear elements. Sees only M, C, K, the influence matrix and Element residual/tangent/commit.
 #pragma once
 
 #include <Eigen/Dense>
@@ -10,8 +10,9 @@
 namespace isopound {
 
 struct NewtonSettings {
-  // Converged when |R|_inf <= tolerance * F_ref + round-off allowance, F_ref = heaviest
-  // level's weight (max_i (M iota)_i g); never on a small correction alone.
+  // Converged when max_i |R_i| / length_i <= tolerance * F_ref + round-off allowance, F_ref =
+  // heaviest level's weight (max_i (M iota_x)_i g), length_i = Dof::length (1 for a
+  // translation); never on a small correction alone.
   double tolerance = 1e-9;
   int max_iterations = 25;
 };
@@ -23,8 +24,10 @@ struct StepOutcome {
 
 // One step from the committed state (u0, v0, a0) at t to the trial state at t + h:
 //   u1 = u0 + h v0 + h^2/4 (a0 + a1),  v1 = v0 + h/2 (a0 + a1),
-//   M a1 + C v1 + K u1 + f_nl(u1, v1) = -M iota ag1.
-// Solved for du = u1 - u0 with K_hat = K + (2/h) C + (4/h^2) M + df_nl/du + (2/h) df_nl/dv.
+//   M a1 + C v1 + K u1 + f_nl(u1, v1) = -M iota ag1   (iota: n x 2, ag1 = (a_x, a_y)).
+// Solved for du = u1 - u0 with K_hat = K + (2/h) C + (4/h^2) M + df_nl/du + (2/h) df_nl/dv,
+// factored by Cholesky (LDL^T fallback), or by LU when an element's tangent may be
+// non-symmetric (Element::symmetric_tangent()).
 // Nothing is allocated per step once each distinct h has been seen (K_hat is cached per h).
 class NewmarkStepper {
  public:
@@ -33,15 +36,15 @@ class NewmarkStepper {
   NewmarkStepper(Model& model, const NewtonSettings& settings);
 
   // Committed state at rest; a0 from equilibrium with ground acceleration ag0.
-  void start(double ag0);
+  void start(GroundAcceleration ag0);
   // Committed state (u0, v0); a0 from the equation of motion with ground acceleration ag0.
-  void start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0, double ag0);
+  void start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0, GroundAcceleration ag0);
   // `cache`: keep K_hat for this h (the regular steps); false for one-off steps cut at an event.
   // `freeze`: elements keep their contact status through the trial (a step cut at an event).
-  StepOutcome try_step(double h, double ag1, bool cache = true, bool freeze = false);
+  StepOutcome try_step(double h, GroundAcceleration ag1, bool cache = true, bool freeze = false);
   // After elements changed status at an event (settle_event): a0 from equilibrium at the
   // committed (u, v) with ground acceleration ag, elements re-evaluated and committed.
-  void restart(double ag);
+  void restart(GroundAcceleration ag);
   void accept();  // trial becomes committed (elements commit)
   void reject();  // elements revert; committed state unchanged
 
@@ -57,6 +60,8 @@ class NewmarkStepper {
   const Eigen::VectorXd& trial_a() const { return a1_; }
   const Eigen::VectorXd& residual() const { return r_; }
   double last_step() const { return h_; }
+  // True when the Newton matrix is factored by LU (some element's tangent is non-symmetric).
+  bool uses_lu() const { return use_lu_; }
 
  private:
   const Eigen::MatrixXd& effective_linear(double h, bool cache);
@@ -65,7 +70,10 @@ class NewmarkStepper {
   NewtonSettings settings_;
   double force_ref_;
   Eigen::VectorXd u0_, v0_, a0_, u1_, v1_, a1_;
-  Eigen::VectorXd p_hat_, r_, du_, work_, m_iota_;
+  Eigen::VectorXd p_hat_, r_, du_, work_;
+  Eigen::MatrixXd m_iota_;           // M iota, n x 2
+  Eigen::VectorXd residual_weight_;  // 1 / Dof::length
+  bool use_lu_ = false;
   Eigen::VectorXd delta_;  // u1 - u0 of the trial
   Eigen::MatrixXd k_tangent_;
   Eigen::MatrixXd k_hat_scratch_;  // K_hat of an uncached step
@@ -73,6 +81,7 @@ class NewmarkStepper {
   // factorisation holds uninitialised state).
   Eigen::LLT<Eigen::MatrixXd> llt_;
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   Eigen::LLT<Eigen::MatrixXd> mass_llt_;
   std::vector<std::pair<double, Eigen::MatrixXd>> k_hat_cache_;
   double h_ = 0.0;

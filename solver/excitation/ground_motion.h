@@ -15,6 +15,9 @@ struct GroundMotion {
   std::string name;                  // file stem or "pulse"
   double dt = 0.0;                   // s, > 0
   std::vector<double> acceleration;  // m/s^2, acceleration[0] at t = 0
+  // Second horizontal component (the model's y direction), same dt and length; empty: the
+  // motion acts along x only.
+  std::vector<double> acceleration_y;
 
   double duration() const { return dt * static_cast<double>(acceleration.size() - 1); }
   // Linear interpolation; 0 outside [0, duration()].

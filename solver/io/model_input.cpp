@@ -12,6 +12,9 @@
 #include <optional>
 #include <vector>
 
+#include "solver/io/model_input3d.h"
+#include "solver/structures/config3d.h"
+
 namespace isopound {
 namespace {
 
@@ -378,6 +381,10 @@ PulseParameters read_pulse(const InputNode& node) {
 
 GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& base_dir) {
   using Format = RecordReadOptions::Format;
+  for (std::string_view key : kPairKeys)  // a record pair (3D): model_input3d.cpp
+    if (node.has(key))
+      return read_ground_motion_pair(
+          node, [&](const InputNode& c) { return read_ground_motion(c, base_dir); });
   node.expect_keys(
       {"record", "format", "column", "time_column", "dt", "unit", "scale", "extra_time", "pulse"});
   GroundMotionConfig g;
@@ -492,10 +499,18 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
                        const std::string& base_dir, std::vector<std::string>* used_keys) {
   try {
     const InputNode top = InputNode::tracked(root, source_name);
-    top.expect_keys({"building", "neighbours", "ground_motion", "analysis", "output"});
+    top.expect_keys(
+        {"building", "neighbours", "structures", "ground_motion", "analysis", "output"});
     ModelConfig model;
     model.source = source_name;
-    model.building = read_building(top.required("building"));
+    if (const auto structures = top.find("structures")) {  // 3D: model_input3d.cpp
+      for (const char* key : {"building", "neighbours"})
+        if (const auto n = top.find(key))
+          n->fail("a 2D building cannot be combined with 3D structures (structures:)");
+      model.structures3d = read_structures3d(*structures);
+    } else {
+      model.building = read_building(top.required("building"));
+    }
     if (const auto list = top.find("neighbours")) {
       if (!list->is_sequence()) list->fail("must be a list of neighbours");
       for (const InputNode& n : list->elements()) model.neighbours.push_back(read_neighbour(n));

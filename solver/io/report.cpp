@@ -9,6 +9,8 @@
 #include <iomanip>
 #include <stdexcept>
 
+#include "solver/io/report3d.h"
+#include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 
 namespace isopound {
@@ -88,6 +90,25 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                         {"baseline",
                          "none: velocity and displacement integrated exactly from the "
                          "piecewise-linear acceleration, zero initial conditions"}};
+  if (!job.motion.acceleration_y.empty()) {  // a pair rotated into x and y (3D)
+    GroundMotion y = job.motion;
+    y.acceleration = y.acceleration_y;
+    const GroundMotionPeaks py = peaks_of(y);
+    j["ground_motion"]["angle_deg"] = g.angle * 180.0 / 3.14159265358979323846;
+    j["ground_motion"]["angle_convention"] =
+        "counter-clockwise from X to L: a_x = a_L cos - a_T sin, a_y = a_L sin + a_T cos; "
+        "pga_m_s2, "
+        "pgv_m_s, pgd_m are of a_x";
+    if (g.components.size() == 2) {
+      j["ground_motion"]["source"] =
+          g.components[0].use_pulse ? "pulse" : g.components[0].record_path;
+      j["ground_motion"]["source_T"] =
+          g.components[1].use_pulse ? "pulse" : g.components[1].record_path;
+    }
+    j["ground_motion"]["pga_y_m_s2"] = py.pga;
+    j["ground_motion"]["pgv_y_m_s"] = py.pgv;
+    j["ground_motion"]["pgd_y_m"] = py.pgd;
+  }
 
   const AnalysisConfig& a = config.analysis;
   json defaults = json::object();
@@ -107,6 +128,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       {"isolator_model", isolator_name(config.building.isolator.model)},
       {"defaults_used", defaults}};
 
+  if (!config.structures3d.empty()) j["settings"].erase("isolator_model");  // 3D: per building
   json structures = json::array();
   std::size_t story_index = 0;
   for (std::size_t si = 0; si < model.structures.size(); ++si) {
@@ -150,6 +172,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     structures.push_back(js);
   }
   j["structures"] = structures;
+  if (!config.structures3d.empty()) j["buildings_3d"] = summary3d_json(job);  // report3d.cpp
 
   json elements = json::array();
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
@@ -295,8 +318,6 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                 job.motion.name.c_str(), job.motion.acceleration.size(), job.motion.dt,
                 gp.pga / kGravity, gp.pgv, gp.pgd);
   out << line;
-  out << "Building " << config.building.name << " ("
-      << isolator_name(config.building.isolator.model) << " isolators)\n";
   if (!config.defaults.empty()) {
     out << "Defaults used (keys not in the file):\n";
     for (const auto& [key, value] : config.defaults) out << "  " << key << " = " << value << '\n';
@@ -308,48 +329,55 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
       r.stats.interval > 0 ? static_cast<int>(std::lround(job.motion.dt / r.stats.interval)) : 0,
       config.output.interval > 0 ? config.output.interval : job.motion.dt);
   out << line;
-  std::size_t story_index = 0;
-  for (std::size_t si = 0; si < model.structures.size(); ++si) {
-    const StructureInfo& s = model.structures[si];
-    if (s.has_base) {
-      const double weight = structure_weight(model, s);
-      std::snprintf(line, sizeof line,
-                    "  %-22s base shear %8.1f kN (V/W %.3f)   residual isolator displacement "
-                    "%.2f cm\n",
-                    s.name.c_str(), r.base_shear[si].value / 1e3,
-                    weight > 0 ? r.base_shear[si].value / weight : 0.0,
-                    100 * r.final_displacement[s.level_dofs[0]]);
-      out << line;
+  if (!config.structures3d.empty()) {  // report3d.cpp
+    print_summary3d(out, job);
+  } else {
+    out << "Building " << config.building.name << " ("
+        << isolator_name(config.building.isolator.model) << " isolators)\n";
+    std::size_t story_index = 0;
+    for (std::size_t si = 0; si < model.structures.size(); ++si) {
+      const StructureInfo& s = model.structures[si];
+      if (s.has_base) {
+        const double weight = structure_weight(model, s);
+        std::snprintf(line, sizeof line,
+                      "  %-22s base shear %8.1f kN (V/W %.3f)   residual isolator displacement "
+                      "%.2f cm\n",
+                      s.name.c_str(), r.base_shear[si].value / 1e3,
+                      weight > 0 ? r.base_shear[si].value / weight : 0.0,
+                      100 * r.final_displacement[s.level_dofs[0]]);
+        out << line;
+      }
+      for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
+        const int d = s.level_dofs[k];
+        std::snprintf(line, sizeof line,
+                      "  %-22s displacement %8.2f cm   abs. acceleration %6.3f g\n",
+                      model.dofs[d].label.c_str(), 100 * r.displacement[d].value,
+                      r.absolute_acceleration[d].value / kGravity);
+        out << line;
+      }
+      const std::size_t count = s.story_heights.size();
+      for (std::size_t k = 0; k < count; ++k, ++story_index) {
+        std::snprintf(
+            line, sizeof line, "  %-22s drift %8.3f cm   drift ratio %.3f %%   shear %8.1f kN\n",
+            r.stories[story_index].label.c_str(), 100 * r.drift[story_index].value,
+            100 * r.drift_ratio[story_index].value, r.story_shear[story_index].value / 1e3);
+        out << line;
+      }
     }
-    for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
-      const int d = s.level_dofs[k];
-      std::snprintf(line, sizeof line,
-                    "  %-22s displacement %8.2f cm   abs. acceleration %6.3f g\n",
-                    model.dofs[d].label.c_str(), 100 * r.displacement[d].value,
-                    r.absolute_acceleration[d].value / kGravity);
+    for (std::size_t e = 0; e < model.elements.size(); ++e) {
+      const Element& el = *model.elements[e];
+      std::snprintf(line, sizeof line, "  %-22s peak force %8.1f kN   peak %s %6.2f cm",
+                    el.label().c_str(), r.element_outputs[e][0].value / 1e3,
+                    el.output_name(1).c_str(), 100 * r.element_outputs[e][1].value);
       out << line;
+      if (el.output_count() > 3 && el.output_name(2) == "impacts") {
+        std::snprintf(line, sizeof line, "   %d impacts, max impact velocity %.3f m/s",
+                      static_cast<int>(r.element_outputs[e][2].value),
+                      r.element_outputs[e][3].value);
+        out << line;
+      }
+      out << '\n';
     }
-    const std::size_t count = s.story_heights.size();
-    for (std::size_t k = 0; k < count; ++k, ++story_index) {
-      std::snprintf(line, sizeof line,
-                    "  %-22s drift %8.3f cm   drift ratio %.3f %%   shear %8.1f kN\n",
-                    r.stories[story_index].label.c_str(), 100 * r.drift[story_index].value,
-                    100 * r.drift_ratio[story_index].value, r.story_shear[story_index].value / 1e3);
-      out << line;
-    }
-  }
-  for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const Element& el = *model.elements[e];
-    std::snprintf(line, sizeof line, "  %-22s peak force %8.1f kN   peak %s %6.2f cm",
-                  el.label().c_str(), r.element_outputs[e][0].value / 1e3,
-                  el.output_name(1).c_str(), 100 * r.element_outputs[e][1].value);
-    out << line;
-    if (el.output_count() > 3 && el.output_name(2) == "impacts") {
-      std::snprintf(line, sizeof line, "   %d impacts, max impact velocity %.3f m/s",
-                    static_cast<int>(r.element_outputs[e][2].value), r.element_outputs[e][3].value);
-      out << line;
-    }
-    out << '\n';
   }
   std::snprintf(line, sizeof line,
                 "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "

@@ -95,6 +95,13 @@ struct GroundMotionConfig {
   RecordReadOptions read;   // format, column, dt, unit, scale
   PulseParameters pulse;
   double extra_time = 0.0;  // s of free vibration computed after the record ends
+  // A record pair (3D): components[0] = L, components[1] = T (their record or pulse fields; the
+  // fields above then are unused) at incidence angle `angle` (rad, counter-clockwise from X to
+  // L; THEORY eq. 5.12-5.13). Empty: one component along x (or, for a 3D model without any
+  // record, the built-in pulse as L and pulse_transverse_ratio times it as T).
+  std::vector<GroundMotionConfig> components;
+  double angle = 0.0;
+  double pulse_transverse_ratio = 0.5;
 };
 
 struct AnalysisConfig {
@@ -122,9 +129,23 @@ struct OutputConfig {
   bool histories = true;
 };
 
+// config3d.h (its bearing law, bearing.h, may include this file: no include cycle here).
+struct Building3DConfig;
+
+// Special members are defined in config.cpp, where Building3DConfig is complete.
 struct ModelConfig {
+  ModelConfig();
+  ~ModelConfig();
+  ModelConfig(const ModelConfig&);
+  ModelConfig(ModelConfig&&) noexcept;
+  ModelConfig& operator=(const ModelConfig&);
+  ModelConfig& operator=(ModelConfig&&) noexcept;
+
   std::string source;  // the YAML file it came from (for messages)
   BuildingConfig building;
+  // 3D structures (`structures:` in the model file); when not empty, `building` and
+  // `neighbours` are unused. Include solver/structures/config3d.h to use them.
+  std::vector<Building3DConfig> structures3d;
   std::vector<NeighbourConfig> neighbours;
   GroundMotionConfig ground_motion;
   AnalysisConfig analysis;

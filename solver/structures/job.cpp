@@ -7,10 +7,26 @@
 #include <sstream>
 
 #include "solver/elements/contact.h"
+#include "solver/excitation/ground_motion_pair.h"
 #include "solver/structures/building2d.h"
+#include "solver/structures/building3d.h"
+#include "solver/structures/config3d.h"
 #include "solver/structures/pounding2d.h"
 
 namespace isopound {
+
+GroundMotion load_ground_motion(const GroundMotionConfig& config, bool two_components) {
+  if (config.components.size() == 2)
+    return combine_pair(load_ground_motion(config.components[0]),
+                        load_ground_motion(config.components[1]), config.angle);
+  if (two_components && config.use_pulse) {
+    const GroundMotion l = load_ground_motion(config);
+    GroundMotion t = l;
+    for (double& a : t.acceleration) a *= config.pulse_transverse_ratio;
+    return combine_pair(l, t, config.angle);
+  }
+  return load_ground_motion(config);
+}
 
 GroundMotion load_ground_motion(const GroundMotionConfig& config) {
   if (config.use_pulse) {
@@ -22,6 +38,11 @@ GroundMotion load_ground_motion(const GroundMotionConfig& config) {
 }
 
 Model build_model(const ModelConfig& config) {
+  if (!config.structures3d.empty()) {
+    Model model;
+    for (const Building3DConfig& b : config.structures3d) add_building3d(model, b);
+    return model;
+  }
   Model model = make_model(config.building);
   const double per_contact = config.analysis.steps_per_contact;
   add_walls(model, 0, config.building, per_contact);
@@ -89,7 +110,7 @@ void check_step_against_record(const AnalysisConfig& analysis, const GroundMotio
 JobResult run_job(const ModelConfig& config, HistorySink* history_sink,
                   std::function<void(double, double)> progress) {
   JobResult job;
-  job.motion = load_ground_motion(config.ground_motion);
+  job.motion = load_ground_motion(config.ground_motion, !config.structures3d.empty());
   check_step_against_record(config.analysis, job.motion);
   job.motion_peaks = peaks_of(job.motion);
   job.model = build_model(config);

@@ -14,7 +14,10 @@
 namespace isopound {
 
 // The record named in the config (scaled), or the built-in pulse when none is given.
+// A pair (config.components) is rotated into x and y at config.angle.
 GroundMotion load_ground_motion(const GroundMotionConfig& config);
+// As above; with two_components (a 3D model) and no record, the built-in pulse pair.
+GroundMotion load_ground_motion(const GroundMotionConfig& config, bool two_components);
 
 Model build_model(const ModelConfig& config);
 

@@ -1,0 +1,439 @@
+// The 3D model format (README "3D buildings"): buildings with a column grid or listed columns,
+// storeys (short form or list), base slab, bearings, damping; record pairs at an angle.
+#include "solver/io/model_input3d.h"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+namespace isopound {
+namespace {
+
+constexpr Dimension kAreaMoment{4, 0, 0};  // m^4
+constexpr Dimension kMassMoment{2, 1, 0};  // kg m^2
+constexpr int kMaxStoreys = 200;
+constexpr int kMaxGridLines = 26;  // column lines named A..Z along x
+
+Vec2 read_point(const InputNode& node, const Dimension& d = dim::kLength) {
+  if (!node.is_sequence() || node.elements().size() != 2)
+    node.fail("expected [x, y], e.g. [2.75 m, -2.75 m]; got " + node.kind());
+  const std::vector<InputNode> e = node.elements();
+  return {e[0].quantity(d), e[1].quantity(d)};
+}
+
+// plan: {rectangle: [Lx, Ly]} (centred on the building frame's origin) or {polygon: [[x, y], ..]}.
+std::vector<Vec2> read_plan(const InputNode& node) {
+  node.expect_keys({"rectangle", "polygon"});
+  const auto rect = node.find("rectangle");
+  const auto poly = node.find("polygon");
+  if (rect && poly) poly->fail("give either rectangle or polygon, not both");
+  if (rect) {
+    const std::vector<InputNode> e = rect->elements();
+    if (e.size() != 2) rect->fail("expected [Lx, Ly]");
+    const double lx = e[0].quantity(dim::kLength, Bound::kPositive);
+    const double ly = e[1].quantity(dim::kLength, Bound::kPositive);
+    return {{-lx / 2, -ly / 2}, {lx / 2, -ly / 2}, {lx / 2, ly / 2}, {-lx / 2, ly / 2}};
+  }
+  if (!poly) node.fail("expected rectangle: [Lx, Ly] or polygon: [[x, y], ...]");
+  if (!poly->is_sequence()) poly->fail("expected a list of vertices [[x, y], ...]");
+  std::vector<Vec2> v;
+  for (const InputNode& p : poly->elements()) v.push_back(read_point(p));
+  try {
+    const ConvexPolygon check(std::span<const Vec2>(v.data(), v.size()));
+  } catch (const InvalidPolygon& e) {
+    if (e.vertex() >= 0 && e.vertex() < static_cast<int>(v.size()))
+      poly->elements()[e.vertex()].fail(std::string("not a convex polygon: ") + e.what());
+    poly->fail(std::string("not a convex polygon: ") + e.what());
+  }
+  return v;
+}
+
+bool inside(const std::vector<Vec2>& plan, Vec2 p) {
+  const ConvexPolygon poly(std::span<const Vec2>(plan.data(), plan.size()));
+  const AreaProperties a = area_properties(poly);
+  const double tol = 1e-9 * std::sqrt(a.area);
+  for (int i = 0; i < poly.size(); ++i) {
+    const Vec2 a0 = poly[i], a1 = poly[(i + 1) % poly.size()];
+    const Vec2 edge = a1 - a0;
+    if (cross(edge, p - a0) < -tol * std::sqrt(dot(edge, edge))) return false;
+  }
+  return true;
+}
+
+// Column section and material: defaults from the building's `columns:` map, overridden per item.
+struct ColumnProps {
+  std::optional<double> b, h, I11, I22, J, E, G, nu;
+  double orientation = 0.0;
+};
+
+const std::vector<std::string_view> kColumnPropKeys = {"section",     "I11", "I22", "J",
+                                                       "orientation", "E",   "G",   "nu"};
+
+void read_column_props(const InputNode& node, ColumnProps& p) {
+  if (const auto s = node.find("section")) {
+    const std::vector<InputNode> e = s->elements();
+    if (!s->is_sequence() || e.size() != 2) s->fail("expected [b, h], e.g. [45 cm, 45 cm]");
+    p.b = e[0].quantity(dim::kLength, Bound::kPositive);
+    p.h = e[1].quantity(dim::kLength, Bound::kPositive);
+  }
+  for (auto [key, out] : {std::pair{"I11", &p.I11}, {"I22", &p.I22}, {"J", &p.J}})
+    if (const auto n = node.find(key)) *out = n->quantity(kAreaMoment, Bound::kPositive);
+  node.read_number("orientation", Bound::kAny, p.orientation);
+  if (const auto n = node.find("E")) p.E = n->quantity(dim::kPressure, Bound::kPositive);
+  if (const auto n = node.find("G")) p.G = n->quantity(dim::kPressure, Bound::kPositive);
+  if (const auto n = node.find("nu")) {
+    p.nu = n->number(Bound::kNonNegative);
+    if (*p.nu >= 0.5) n->fail("Poisson's ratio must be in [0, 0.5)");
+  }
+  if (p.G && p.nu) node.fail_at_key("nu", "give either G or nu, not both");
+}
+
+// Rectangle b (along axis 1) x h (along axis 2): I11 = b h^3/12, I22 = h b^3/12 and Saint-Venant
+// J = a c^3 (1/3 - 0.21 (c/a)(1 - c^4/(12 a^4))), a >= c the longer and shorter sides.
+Column3DConfig make_column(const ColumnProps& p, const InputNode& where) {
+  Column3DConfig c;
+  c.orientation = p.orientation;
+  if (p.b) {
+    const double b = *p.b, h = *p.h, a = std::max(b, h), s = std::min(b, h);
+    c.I11 = b * h * h * h / 12.0;
+    c.I22 = h * b * b * b / 12.0;
+    c.J = a * s * s * s * (1.0 / 3.0 - 0.21 * (s / a) * (1.0 - std::pow(s / a, 4) / 12.0));
+  }
+  if (p.I11) c.I11 = *p.I11;
+  if (p.I22) c.I22 = *p.I22;
+  if (p.J) c.J = *p.J;
+  if (!(c.I11 > 0 && c.I22 > 0 && c.J > 0))
+    where.fail("a column needs its section: section: [b, h] or I11, I22 and J");
+  if (!p.E) where.fail("a column needs E (Young's modulus)");
+  c.E = *p.E;
+  if (p.G)
+    c.G = *p.G;
+  else if (p.nu)
+    c.G = c.E / (2.0 * (1.0 + *p.nu));
+  else
+    where.fail("a column needs G or nu");
+  return c;
+}
+
+// Built by append: GCC 12 warns (-Wrestrict, a false positive) on "x" + std::to_string(n).
+std::string numbered(char prefix, std::size_t n) {
+  std::string s(1, prefix);
+  s.append(std::to_string(n));
+  return s;
+}
+
+std::string grid_label(int ix, int iy) {
+  return numbered(static_cast<char>('A' + ix), static_cast<std::size_t>(iy + 1));
+}
+
+// grid: {bays_x: [...], bays_y: [...], origin: [x, y]}: columns at every intersection, named
+// A1.. (letter along x, number along y); origin = position of A1 (default: grid centred).
+std::vector<std::pair<std::string, Vec2>> read_grid(const InputNode& node) {
+  node.expect_keys({"bays_x", "bays_y", "origin"});
+  std::vector<double> lines[2];
+  const char* keys[2] = {"bays_x", "bays_y"};
+  for (int d = 0; d < 2; ++d) {
+    const InputNode bays = node.required(keys[d]);
+    if (!bays.is_sequence() || bays.elements().empty())
+      bays.fail("expected a list of bay widths, e.g. [5.5 m, 5.5 m, 5.5 m]");
+    if (bays.elements().size() + 1 > kMaxGridLines) bays.fail("at most 25 bays");
+    lines[d].push_back(0.0);
+    for (const InputNode& b : bays.elements())
+      lines[d].push_back(lines[d].back() + b.quantity(dim::kLength, Bound::kPositive));
+  }
+  Vec2 origin{-lines[0].back() / 2, -lines[1].back() / 2};
+  if (const auto o = node.find("origin")) origin = read_point(*o);
+  std::vector<std::pair<std::string, Vec2>> out;
+  for (std::size_t iy = 0; iy < lines[1].size(); ++iy)
+    for (std::size_t ix = 0; ix < lines[0].size(); ++ix)
+      out.push_back({grid_label(static_cast<int>(ix), static_cast<int>(iy)),
+                     {origin.x + lines[0][ix], origin.y + lines[1][iy]}});
+  return out;
+}
+
+void read_diaphragm_extras(const InputNode& node, Diaphragm3DConfig& d) {
+  if (const auto e = node.find("eccentricity")) d.eccentricity = read_point(*e);
+  node.read_quantity("polar_moment", kMassMoment, Bound::kPositive, d.polar_moment);
+  if (const auto p = node.find("plan")) d.plan = read_plan(*p);
+}
+
+BearingConfig read_bearing_law(const InputNode& node) {
+  using M = BearingConfig::Model;
+  node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
+                    "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter"});
+  BearingConfig c;
+  if (const auto m = node.find("model"))
+    c.model = m->choice<M>({{"bouc_wen", M::kBoucWenCoupled},
+                            {"bouc_wen_uncoupled", M::kBoucWenUncoupled},
+                            {"bilinear", M::kBilinear},
+                            {"linear", M::kLinear},
+                            {"friction_pendulum", M::kFrictionPendulum}});
+  const bool fp = c.model == M::kFrictionPendulum;
+  for (const char* key : {"Tb", "QW", "n", "A", "beta", "gamma", "strength_is_yield_force"})
+    if (fp && node.has(key))
+      node.find(key)->fail("not used by the friction pendulum (it takes radius, mu_slow, ...)");
+  for (const char* key : {"R", "mu_slow", "mu_fast", "rate_parameter"})
+    if (!fp && node.has(key)) node.find(key)->fail("only used by model: friction_pendulum");
+  node.read_quantity("Tb", dim::kTime, Bound::kPositive, c.period);
+  if (const auto qw = node.find("QW")) {
+    c.strength_ratio = qw->number(Bound::kNonNegative);
+    if (c.strength_ratio == 0.0 && c.model != M::kLinear)
+      qw->fail("must be > 0 for a yielding bearing (a bearing without strength is model: linear)");
+  }
+  node.read_quantity("uy", dim::kLength, Bound::kPositive, c.yield_displacement);
+  node.read_number("n", Bound::kPositive, c.n);
+  node.read_number("A", Bound::kPositive, c.A);
+  node.read_number("beta", Bound::kAny, c.beta);
+  node.read_number("gamma", Bound::kAny, c.gamma);
+  if (!(c.beta + c.gamma > 0)) node.fail_at_key("gamma", "beta + gamma must be > 0");
+  node.read_boolean("strength_is_yield_force", c.strength_is_yield_force);
+  node.read_quantity("carried_mass", dim::kMass, Bound::kPositive, c.carried_mass);
+  node.read_quantity("R", dim::kLength, Bound::kPositive, c.radius);
+  node.read_number("mu_slow", Bound::kNonNegative, c.mu_slow);
+  node.read_number("mu_fast", Bound::kNonNegative, c.mu_fast);
+  node.read_quantity("rate_parameter", Dimension{-1, 0, 1}, Bound::kNonNegative, c.rate_parameter);
+  if (fp && !(c.radius > 0)) node.fail_at_key("R", "the friction pendulum needs R > 0");
+  return c;
+}
+
+void read_damping3d(const InputNode& node, bool isolated, Damping3DConfig& d) {
+  using T = Damping3DConfig::Type;
+  node.expect_keys({"type", "ratios", "modes", "bearing_stiffness", "isolation"});
+  if (const auto t = node.find("type"))
+    d.type = t->choice<T>(
+        {{"rayleigh", T::kRayleigh}, {"non_classical", T::kNonClassical}, {"none", T::kNone}});
+  if (d.type == T::kNone)
+    for (const char* key : {"ratios", "modes", "bearing_stiffness", "isolation"})
+      if (node.has(key)) node.find(key)->fail("has no effect with type: none");
+  if (const auto r = node.find("ratios")) {
+    const std::vector<InputNode> e = r->elements();
+    if (!r->is_sequence() || e.size() != 2) r->fail("expected two ratios, e.g. [5 %, 2 %]");
+    d.ratio_a = e[0].number(Bound::kFraction);
+    d.ratio_b = e[1].number(Bound::kFraction);
+  }
+  if (const auto m = node.find("modes")) {
+    const std::vector<InputNode> e = m->elements();
+    if (!m->is_sequence() || e.size() != 2) m->fail("expected two mode numbers, e.g. [1, 4]");
+    d.mode_a = e[0].integer(1, 10000);
+    d.mode_b = e[1].integer(1, 10000);
+    if (d.mode_a == d.mode_b) m->fail("the two Rayleigh modes must differ");
+  }
+  if (const auto k = node.find("bearing_stiffness")) {
+    if (d.type != T::kRayleigh || !isolated)
+      k->fail("only used with type: rayleigh on an isolated building");
+    d.initial_bearing_stiffness = k->choice<bool>({{"post_yield", false}, {"initial", true}});
+  }
+  if (const auto i = node.find("isolation")) {
+    if (d.type != T::kNonClassical || !isolated)
+      i->fail("only used with type: non_classical on an isolated building");
+    d.isolation_ratio = i->number(Bound::kFraction);
+  }
+}
+
+Building3DConfig read_building3d(const InputNode& node) {
+  node.expect_keys({"name", "position", "rotation", "isolated", "plan", "grid", "columns",
+                    "storeys", "base", "eccentricity", "bearing", "bearings", "damping",
+                    "polar_moment_rule", "column_coupling"});
+  Building3DConfig b;
+  if (const auto n = node.find("name")) {
+    b.name = n->string();
+    if (b.name.empty()) n->fail("must not be empty");
+  }
+  if (const auto p = node.find("position")) b.position = read_point(*p);
+  node.read_number("rotation", Bound::kAny, b.rotation);
+  node.read_boolean("isolated", b.isolated);
+  if (const auto r = node.find("polar_moment_rule"))
+    b.polar_moment_rule = r->choice<EccentricPolarMoment>(
+        {{"thesis", EccentricPolarMoment::kThesis}, {"centroid", EccentricPolarMoment::kCentroid}});
+  if (const auto r = node.find("column_coupling"))
+    b.column_coupling = r->choice<ColumnCoupling>(
+        {{"thesis", ColumnCoupling::kThesis}, {"full", ColumnCoupling::kFull}});
+
+  // Column lines and default column properties.
+  std::vector<std::pair<std::string, Vec2>> grid;
+  if (const auto g = node.find("grid")) grid = read_grid(*g);
+  ColumnProps defaults;
+  const auto columns_node = node.find("columns");
+  if (columns_node) {
+    columns_node->expect_keys(kColumnPropKeys);
+    read_column_props(*columns_node, defaults);
+  }
+  // Default plan: `plan`, else the grid's outline.
+  std::vector<Vec2> plan;
+  if (const auto p = node.find("plan")) {
+    plan = read_plan(*p);
+  } else if (!grid.empty()) {
+    Vec2 lo = grid.front().second, hi = grid.back().second;
+    plan = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+  }
+  Vec2 eccentricity;
+  if (const auto e = node.find("eccentricity")) eccentricity = read_point(*e);
+
+  const auto grid_columns = [&](const InputNode& where) {
+    if (grid.empty())
+      where.fail("no columns: give grid: {bays_x, bays_y} or a columns list in each storey");
+    std::vector<Column3DConfig> cols;
+    for (const auto& [label, p] : grid) {
+      Column3DConfig c = make_column(defaults, columns_node ? *columns_node : where);
+      c.label = label;
+      c.position = p;
+      cols.push_back(c);
+    }
+    return cols;
+  };
+  const auto check_plan = [&](const Diaphragm3DConfig& d, const InputNode& where) {
+    if (d.plan.empty()) where.fail_at_key("plan", "no plan: give plan: or grid: for the building");
+  };
+
+  // Storeys: short form {count, height, mass, roof_mass} or a list.
+  const InputNode storeys = node.required("storeys");
+  std::vector<InputNode> storey_nodes;  // per storey, the node to blame
+  if (storeys.is_sequence()) {
+    if (storeys.elements().empty()) storeys.fail("no storeys");
+    if (storeys.elements().size() > kMaxStoreys) storeys.fail("too many storeys");
+    for (const InputNode& item : storeys.elements()) {
+      item.expect_keys({"height", "mass", "eccentricity", "polar_moment", "plan", "columns"});
+      Storey3DConfig s;
+      s.height = item.required("height").quantity(dim::kLength, Bound::kPositive);
+      s.floor.mass = item.required("mass").quantity(dim::kMass, Bound::kPositive);
+      s.floor.plan = plan;
+      s.floor.eccentricity = eccentricity;
+      read_diaphragm_extras(item, s.floor);
+      check_plan(s.floor, item);
+      if (const auto cols = item.find("columns")) {
+        if (!cols->is_sequence()) cols->fail("expected a list of columns");
+        for (const InputNode& c : cols->elements()) {
+          std::vector<std::string_view> keys = kColumnPropKeys;
+          keys.push_back("label");
+          keys.push_back("at");
+          c.expect_keys(keys);
+          ColumnProps p = defaults;
+          read_column_props(c, p);
+          Column3DConfig col = make_column(p, c);
+          col.position = read_point(c.required("at"));
+          col.label =
+              c.has("label") ? c.required("label").string() : numbered('C', s.columns.size() + 1);
+          s.columns.push_back(col);
+        }
+        if (s.columns.empty()) cols->fail("no columns");
+      } else {
+        s.columns = grid_columns(item);
+      }
+      b.storeys.push_back(s);
+      storey_nodes.push_back(item);
+    }
+  } else {
+    storeys.expect_keys({"count", "height", "mass", "roof_mass"});
+    const int count = storeys.required("count").integer(1, kMaxStoreys);
+    Storey3DConfig s;
+    s.height = storeys.required("height").quantity(dim::kLength, Bound::kPositive);
+    s.floor.mass = storeys.required("mass").quantity(dim::kMass, Bound::kPositive);
+    s.floor.plan = plan;
+    s.floor.eccentricity = eccentricity;
+    check_plan(s.floor, node);
+    s.columns = grid_columns(storeys);
+    b.storeys.assign(static_cast<std::size_t>(count), s);
+    storeys.read_quantity("roof_mass", dim::kMass, Bound::kPositive, b.storeys.back().floor.mass);
+    storey_nodes.assign(static_cast<std::size_t>(count), storeys);
+  }
+
+  // Base slab and bearings.
+  if (b.isolated) {
+    const InputNode base = node.required("base");
+    base.expect_keys({"mass", "eccentricity", "polar_moment", "plan"});
+    b.base.mass = base.required("mass").quantity(dim::kMass, Bound::kPositive);
+    b.base.plan = plan;
+    b.base.eccentricity = eccentricity;
+    read_diaphragm_extras(base, b.base);
+    check_plan(b.base, base);
+    if (const auto law = node.find("bearing")) b.bearing = read_bearing_law(*law);
+    if (const auto list = node.find("bearings")) {
+      if (!list->is_sequence()) list->fail("expected a list of bearings [{at: [x, y]}, ...]");
+      for (const InputNode& item : list->elements()) {
+        item.expect_keys({"label", "at", "carried_mass"});
+        Bearing3DConfig br;
+        br.position = read_point(item.required("at"));
+        br.label = item.has("label") ? item.required("label").string()
+                                     : numbered('B', b.bearings.size() + 1);
+        item.read_quantity("carried_mass", dim::kMass, Bound::kPositive, br.carried_mass);
+        if (!inside(b.base.plan, br.position))
+          item.required("at").fail("bearing " + br.label + " is outside the base slab's plan");
+        b.bearings.push_back(br);
+      }
+      if (b.bearings.empty()) list->fail("no bearings");
+    } else {
+      for (const Column3DConfig& c : b.storeys.front().columns)
+        if (!inside(b.base.plan, c.position))
+          storey_nodes.front().fail("column " + c.label +
+                                    " (and the bearing under it) is outside the base slab's plan");
+    }
+  } else {
+    for (const char* key : {"base", "bearing", "bearings"})
+      if (const auto n = node.find(key))
+        n->fail("not allowed for a fixed-base building (isolated: false)");
+  }
+  // Every column inside the floor it carries and the level it stands on.
+  for (std::size_t s = 0; s < b.storeys.size(); ++s) {
+    const std::vector<Vec2>* below =
+        s > 0 ? &b.storeys[s - 1].floor.plan : (b.isolated ? &b.base.plan : nullptr);
+    for (const Column3DConfig& c : b.storeys[s].columns) {
+      if (!inside(b.storeys[s].floor.plan, c.position) || (below && !inside(*below, c.position)))
+        storey_nodes[s].fail("column " + c.label + " of storey " + std::to_string(s + 1) +
+                             " is outside its slab's plan");
+    }
+  }
+  if (const auto d = node.find("damping")) read_damping3d(*d, b.isolated, b.damping);
+  if (!b.isolated && b.damping.type == Damping3DConfig::Type::kNonClassical) {
+    // Fixed base: the superstructure Rayleigh alone.
+  }
+  return b;
+}
+
+}  // namespace
+
+std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
+  if (!node.is_sequence() || node.elements().empty())
+    node.fail("expected a list of buildings: - {name, grid, storeys, ...}");
+  std::vector<Building3DConfig> out;
+  for (const InputNode& item : node.elements()) {
+    out.push_back(read_building3d(item));
+    for (std::size_t k = 0; k + 1 < out.size(); ++k)
+      if (out[k].name == out.back().name)
+        item.fail_at_key("name", "two structures are named '" + out.back().name + "'");
+  }
+  return out;
+}
+
+GroundMotionConfig read_ground_motion_pair(
+    const InputNode& node,
+    const std::function<GroundMotionConfig(const InputNode&)>& read_component) {
+  const auto l = node.find("L");
+  const auto t = node.find("T");
+  if (!l || !t) {
+    const std::string what =
+        "a record pair needs both components L and T (an angle with one component has no meaning)";
+    if (const auto angle = node.find("angle")) angle->fail(what);
+    node.fail(what);
+  }
+  node.expect_keys({"L", "T", "angle", "extra_time"});
+  GroundMotionConfig g;
+  node.read_quantity("extra_time", dim::kTime, Bound::kNonNegative, g.extra_time);
+  node.read_number("angle", Bound::kAny, g.angle);
+  for (const InputNode& c : {*l, *t}) {
+    if (c.has("extra_time"))
+      c.find("extra_time")->fail("give extra_time once, at ground_motion, for the pair");
+    g.components.push_back(read_component(c));
+  }
+  // Components of different units: an error (a pair is one measurement; a unit mismatch is
+  // almost always a mistake). PEER files are in g.
+  const auto unit_of = [](const GroundMotionConfig& c) {
+    return c.use_pulse ? AccelerationUnit::kMetrePerSecond2 : c.read.unit;
+  };
+  if (!g.components[0].use_pulse && !g.components[1].use_pulse &&
+      unit_of(g.components[0]) != unit_of(g.components[1]))
+    t->fail_at_key("unit", "the T component's unit differs from L's: give both in the same unit");
+  g.use_pulse = false;
+  return g;
+}
+
+}  // namespace isopound

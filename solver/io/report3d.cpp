@@ -1,0 +1,226 @@
+// 3D outputs from the model's plan probes (labels "building/level/point", "building/story k/
+// column") and the bearing elements. Keys end in their units, as in the 2D summary.
+#include "solver/io/report3d.h"
+
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "solver/core/constants.h"
+#include "solver/core/modes.h"
+#include "solver/structures/building3d.h"
+
+namespace isopound {
+namespace {
+
+struct Label {
+  std::string building, part, point;
+};
+
+Label split(const std::string& label) {
+  const auto a = label.find('/');
+  const auto b = label.rfind('/');
+  return {label.substr(0, a), label.substr(a + 1, b - a - 1), label.substr(b + 1)};
+}
+
+nlohmann::json peaks(const ProbePeaks& p, const char* unit) {
+  const std::string u = unit;
+  return {{"x_peak_" + u, p.x.value},
+          {"y_peak_" + u, p.y.value},
+          {"resultant_peak_" + u, p.resultant.value},
+          {"resultant_time_s", p.resultant.time}};
+}
+
+// Grid corner columns: the extreme letters and numbers among labels like "A1", "D4".
+std::vector<std::string> corner_labels(const std::vector<std::string>& labels) {
+  char lo = 'Z' + 1, hi = 'A' - 1;
+  int nlo = 1 << 30, nhi = -1;
+  for (const std::string& l : labels) {
+    if (l.size() < 2 || l[0] < 'A' || l[0] > 'Z') return {};
+    const int n = std::atoi(l.c_str() + 1);
+    lo = std::min(lo, l[0]);
+    hi = std::max(hi, l[0]);
+    nlo = std::min(nlo, n);
+    nhi = std::max(nhi, n);
+  }
+  if (labels.empty()) return {};
+  return {lo + std::to_string(nlo), hi + std::to_string(nlo), lo + std::to_string(nhi),
+          hi + std::to_string(nhi)};
+}
+
+}  // namespace
+
+nlohmann::json summary3d_json(const JobResult& job) {
+  using nlohmann::json;
+  const Model& model = job.model;
+  const AnalysisResult& r = job.analysis;
+  json buildings = json::array();
+  for (const StructureInfo& s : model.structures) {
+    json jb;
+    jb["name"] = s.name;
+    // Levels: DOF peaks and the plan points.
+    std::map<std::string, json> levels;
+    std::vector<std::string> level_order;
+    for (std::size_t l = 0; l < s.level_dofs.size(); ++l) {
+      const int d = s.level_dofs[l];
+      const std::string name = split(model.dofs[d].label + "/x").part;
+      const std::string level = name.substr(0, name.rfind(' '));
+      level_order.push_back(level);
+      levels[level] = {{"label", level},
+                       {"u_peak_m", r.displacement[d].value},
+                       {"v_peak_m", r.displacement[d + 1].value},
+                       {"theta_peak_rad", r.displacement[d + 2].value}};
+    }
+    std::map<std::string, json> stories;
+    std::vector<std::string> story_order;
+    for (std::size_t p = 0; p < model.probes.size(); ++p) {
+      const PlanProbe& probe = model.probes[p];
+      const Label l = split(probe.label);
+      if (l.building != s.name) continue;
+      const ProbePeaks& pk = r.probes[p];
+      if (levels.count(l.part)) {
+        json& lev = levels[l.part];
+        const bool acc = probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration;
+        json& point = lev[l.point == "CM" ? "centre_of_mass" : "corners"];
+        if (l.point == "CM") {
+          point[acc ? "absolute_acceleration" : "displacement"] = peaks(pk, acc ? "m_s2" : "m");
+        } else {
+          if (!point.is_array()) point = json::array();
+          if (!acc)
+            point.push_back({{"label", l.point}, {"displacement", peaks(pk, "m")}});
+          else
+            point.back()["absolute_acceleration"] = peaks(pk, "m_s2");
+        }
+        continue;
+      }
+      if (!stories.count(l.part)) {
+        story_order.push_back(l.part);
+        stories[l.part] = {
+            {"label", l.part}, {"height_m", probe.length}, {"columns", json::array()}};
+      }
+      json col = peaks(pk, "m");
+      col["label"] = l.point;
+      col["drift_ratio_peak"] = pk.ratio.value;
+      stories[l.part]["columns"].push_back(col);
+    }
+    json jl = json::array();
+    for (const std::string& l : level_order) jl.push_back(levels[l]);
+    jb["levels"] = jl;
+    json js = json::array();
+    for (const std::string& name : story_order) {
+      json& st = stories[name];
+      json env = {{"x_peak_m", 0.0},
+                  {"y_peak_m", 0.0},
+                  {"resultant_peak_m", 0.0},
+                  {"drift_ratio_peak", 0.0}};
+      std::vector<std::string> labels;
+      for (const json& c : st["columns"]) {
+        labels.push_back(c["label"]);
+        for (const char* k : {"x_peak_m", "y_peak_m", "resultant_peak_m", "drift_ratio_peak"})
+          env[k] = std::max(env[k].get<double>(), c[k].get<double>());
+      }
+      st["envelope_over_columns"] = env;
+      json corners = json::object();
+      for (const std::string& label : corner_labels(labels))
+        for (const json& c : st["columns"])
+          if (c["label"] == label) corners[label] = c;
+      st["corner_columns"] = corners;
+      js.push_back(st);
+    }
+    jb["storeys"] = js;
+    json bearings = json::array();
+    for (std::size_t e = 0; e < model.elements.size(); ++e) {
+      const Element& el = *model.elements[e];
+      if (el.label().rfind(s.name + "/bearing ", 0) != 0) continue;
+      json je = {{"label", el.label()}};
+      for (int k = 0; k < el.output_count(); ++k)
+        je[el.output_name(k) + "_peak_" + el.output_unit(k)] = r.element_outputs[e][k].value;
+      bearings.push_back(je);
+    }
+    jb["bearings"] = bearings;
+    buildings.push_back(jb);
+  }
+  return buildings;
+}
+
+void print_summary3d(std::ostream& out, const JobResult& job) {
+  const nlohmann::json j = summary3d_json(job);
+  char line[256];
+  for (const auto& b : j) {
+    out << "Building " << b["name"].get<std::string>() << " (3D)\n";
+    for (const auto& l : b["levels"]) {
+      const auto& cm = l["centre_of_mass"];
+      double corner = 0.0;
+      for (const auto& c : l["corners"])
+        corner = std::max(corner, c["displacement"]["resultant_peak_m"].get<double>());
+      std::snprintf(line, sizeof line,
+                    "  %-8s CM u %6.2f v %6.2f resultant %6.2f cm, corners %6.2f cm, theta %.2e "
+                    "rad, CM abs. acc. %.3f g\n",
+                    l["label"].get<std::string>().c_str(),
+                    100 * cm["displacement"]["x_peak_m"].get<double>(),
+                    100 * cm["displacement"]["y_peak_m"].get<double>(),
+                    100 * cm["displacement"]["resultant_peak_m"].get<double>(), 100 * corner,
+                    l["theta_peak_rad"].get<double>(),
+                    cm["absolute_acceleration"]["resultant_peak_m_s2"].get<double>() / kGravity);
+      out << line;
+    }
+    for (const auto& s : b["storeys"]) {
+      std::snprintf(line, sizeof line,
+                    "  %-8s drift (envelope over columns) %6.3f cm, ratio %.3f %%",
+                    s["label"].get<std::string>().c_str(),
+                    100 * s["envelope_over_columns"]["resultant_peak_m"].get<double>(),
+                    100 * s["envelope_over_columns"]["drift_ratio_peak"].get<double>());
+      out << line;
+      for (const auto& [name, c] : s["corner_columns"].items()) {
+        std::snprintf(line, sizeof line, "  %s %.3f", name.c_str(),
+                      100 * c["resultant_peak_m"].get<double>());
+        out << line;
+      }
+      out << '\n';
+    }
+    double d = 0.0, f = 0.0;
+    for (const auto& br : b["bearings"]) {
+      d = std::max(d, br.value("deformation_peak_m", 0.0));
+      f = std::max(f, br.value("force_peak_N", 0.0));
+    }
+    std::snprintf(line, sizeof line,
+                  "  bearings (%zu): peak resultant deformation %.2f cm, force %.1f kN\n",
+                  b["bearings"].size(), 100 * d, f / 1e3);
+    out << line;
+  }
+}
+
+}  // namespace isopound
+
+namespace isopound {
+
+void print_modes3d(std::ostream& out, const ModelConfig& config) {
+  char line[256];
+  for (const Building3DConfig& b : config.structures3d) {
+    const auto show = [&](const std::string& title, const LinearModel3D& m) {
+      const Modes modes = compute_modes(m.stiffness, m.mass, m.influence.col(0));
+      const Modes modes_y = compute_modes(m.stiffness, m.mass, m.influence.col(1));
+      out << "Building " << b.name << ": " << title << "\n"
+          << "  mode  period [s]  eff. mass x [%]  eff. mass y [%]  torsional [%]\n";
+      for (int j = 0; j < modes.period.size(); ++j) {
+        // Torsional share: the part of phi^T M phi = 1 on the rotation DOFs.
+        const Eigen::VectorXd phi = modes.shape.col(j), mphi = m.mass * phi;
+        double torsion = 0.0;
+        for (int i = 0; i < phi.size(); ++i)
+          if (m.dofs[i].kind == DofKind::kRotation) torsion += phi[i] * mphi[i];
+        std::snprintf(line, sizeof line, "  %4d  %10.4f  %15.1f  %15.1f  %13.1f\n", j + 1,
+                      modes.period[j], 100 * modes.effective_mass_ratio[j],
+                      100 * modes_y.effective_mass_ratio[j], 100 * torsion);
+        out << line;
+      }
+    };
+    show("fixed-base superstructure", linear_model3d(b, false, true));
+    if (b.isolated) {
+      show("isolated, bearings at their post-yield stiffness", linear_model3d(b, false, false));
+      show("isolated, bearings at their initial stiffness", linear_model3d(b, true, false));
+    }
+  }
+}
+
+}  // namespace isopound

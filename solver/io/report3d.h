@@ -1,0 +1,23 @@
+// summary.json section and console lines of 3D buildings: per floor the centre of mass and the
+// corners, per storey every column's drift (x, y, resultant at each instant), their envelope.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "solver/structures/config3d.h"
+#include "solver/structures/job.h"
+
+namespace isopound {
+
+// "buildings_3d": per building, levels (u, v, theta at the DOFs; centre of mass and corners:
+// displacement and absolute acceleration x, y, resultant), storeys (each column's drift x, y,
+// resultant and ratio; the envelope over columns; the corner columns), bearings (peaks).
+nlohmann::json summary3d_json(const JobResult& job);
+// The console summary of 3D buildings (after the ground-motion line).
+void print_summary3d(std::ostream& out, const JobResult& job);
+// `isopound modes` for 3D buildings: fixed-base and isolated (bearings at K_post and at K_el)
+// periods with the effective mass in x and y and the torsional share of each mode.
+void print_modes3d(std::ostream& out, const ModelConfig& config);
+
+}  // namespace isopound

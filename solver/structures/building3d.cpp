@@ -1,0 +1,314 @@
+// Assembly of 3D buildings: storey matrices summed over columns and placed tridiagonally over the
+// levels, diaphragm masses about the plan origin, bearings at their plan positions, damping.
+#include "solver/structures/building3d.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "solver/core/modes.h"
+#include "solver/structures/bearing_element.h"
+
+namespace isopound {
+
+namespace {
+
+// Rows of T = [[1, 0, -y], [0, 1, x], [0, 0, 1]]: a point p of a diaphragm moves by T q.
+Eigen::Matrix3d point_transform(Vec2 p) {
+  Eigen::Matrix3d T = Eigen::Matrix3d::Identity();
+  T(0, 2) = -p.y;
+  T(1, 2) = p.x;
+  return T;
+}
+
+Vec2 rotate(double angle, Vec2 v) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+Diaphragm3DConfig diaphragm_in_plan(const Building3DConfig& b, const Diaphragm3DConfig& d) {
+  Diaphragm3DConfig w = d;
+  for (Vec2& p : w.plan) p = to_plan(b, p);
+  w.eccentricity = rotate(b.rotation, d.eccentricity);
+  return w;
+}
+
+std::vector<Column3DConfig> columns_in_plan(const Building3DConfig& b,
+                                            const std::vector<Column3DConfig>& columns) {
+  std::vector<Column3DConfig> w = columns;
+  for (Column3DConfig& c : w) {
+    c.position = to_plan(b, c.position);
+    c.orientation += b.rotation;
+  }
+  return w;
+}
+
+// One building's levels (base slab if isolated, then floors), three DOFs each, in plan frame.
+struct Assembly {
+  Eigen::MatrixXd mass, stiffness, influence;  // over the building's DOFs
+  std::vector<Dof> dofs;
+  std::vector<Diaphragm3DConfig> levels_W;  // per level, plan frame
+  std::vector<Vec2> bearing_positions_W;
+  std::vector<std::string> bearing_labels;
+  std::vector<double> bearing_masses;
+  double total_mass = 0.0;
+};
+
+Assembly assemble(const Building3DConfig& b, bool with_base) {
+  if (b.storeys.empty()) throw std::invalid_argument("building '" + b.name + "' has no storeys");
+  Assembly a;
+  if (with_base) a.levels_W.push_back(diaphragm_in_plan(b, b.base));
+  for (const Storey3DConfig& s : b.storeys) a.levels_W.push_back(diaphragm_in_plan(b, s.floor));
+  const int levels = static_cast<int>(a.levels_W.size());
+  const int n = 3 * levels;
+  a.mass.setZero(n, n);
+  a.stiffness.setZero(n, n);
+  a.influence.setZero(n, 2);
+  for (int l = 0; l < levels; ++l) {
+    const Eigen::Matrix3d m = diaphragm_mass(a.levels_W[l], b.polar_moment_rule);
+    a.mass.block<3, 3>(3 * l, 3 * l) = m;
+    a.total_mass += m(0, 0);
+    a.influence(3 * l, 0) = 1.0;
+    a.influence(3 * l + 1, 1) = 1.0;
+    const std::string level =
+        b.name + "/" + (with_base && l == 0 ? "base" : "floor " + std::to_string(l + !with_base));
+    a.dofs.push_back({level + " (x)", 0, l, DofKind::kTranslationX, 1.0});
+    a.dofs.push_back({level + " (y)", 0, l, DofKind::kTranslationY, 1.0});
+    a.dofs.push_back({level + " (theta)", 0, l, DofKind::kRotation, std::sqrt(m(2, 2) / m(0, 0))});
+  }
+  const int first_floor = with_base ? 1 : 0;
+  for (std::size_t s = 0; s < b.storeys.size(); ++s) {
+    const Storey3DConfig& storey = b.storeys[s];
+    if (!(storey.height > 0))
+      throw std::invalid_argument("storey " + std::to_string(s + 1) + ": height must be > 0");
+    const Eigen::Matrix3d k =
+        storey_stiffness(columns_in_plan(b, storey.columns), storey.height, b.column_coupling);
+    const int upper = 3 * (first_floor + static_cast<int>(s));
+    const int lower = upper - 3;  // < 0: the ground
+    a.stiffness.block<3, 3>(upper, upper) += k;
+    if (lower >= 0) {
+      a.stiffness.block<3, 3>(lower, lower) += k;
+      a.stiffness.block<3, 3>(lower, upper) -= k;
+      a.stiffness.block<3, 3>(upper, lower) -= k;
+    }
+  }
+  if (with_base) {
+    if (b.bearings.empty()) {
+      for (const Column3DConfig& c : b.storeys.front().columns) {
+        a.bearing_positions_W.push_back(to_plan(b, c.position));
+        a.bearing_labels.push_back(c.label);
+        a.bearing_masses.push_back(0.0);
+      }
+    } else {
+      for (const Bearing3DConfig& c : b.bearings) {
+        a.bearing_positions_W.push_back(to_plan(b, c.position));
+        a.bearing_labels.push_back(c.label);
+        a.bearing_masses.push_back(c.carried_mass);
+      }
+    }
+    if (a.bearing_positions_W.empty())
+      throw std::invalid_argument("building '" + b.name + "': an isolated building needs bearings");
+    const double share = a.total_mass / static_cast<double>(a.bearing_positions_W.size());
+    for (double& m : a.bearing_masses)
+      if (m == 0.0) m = b.bearing.carried_mass > 0 ? b.bearing.carried_mass : share;
+  }
+  return a;
+}
+
+// Linear springs (k in x and y) at the bearings, added to the base slab's block (DOFs 0..2).
+void add_bearing_springs(Eigen::MatrixXd& K, const Assembly& a,
+                         const std::vector<double>& stiffness) {
+  for (std::size_t j = 0; j < a.bearing_positions_W.size(); ++j) {
+    const Eigen::Matrix3d T = point_transform(a.bearing_positions_W[j]);
+    const Eigen::Vector3d k(stiffness[j], stiffness[j], 0.0);
+    K.topLeftCorner<3, 3>() += T.transpose() * k.asDiagonal() * T;
+  }
+}
+
+std::vector<double> bearing_stiffnesses(const Building3DConfig& b, const Assembly& a,
+                                        bool initial) {
+  std::vector<double> k;
+  for (double m : a.bearing_masses) {
+    const BearingStiffness s = bearing_stiffness(b.bearing, m);
+    k.push_back(initial ? s.initial : s.post_yield);
+  }
+  return k;
+}
+
+// Rayleigh C = a0 M + a1 K with ratio_a at mode_a and ratio_b at mode_b of (K, M).
+Eigen::MatrixXd rayleigh(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
+                         const Eigen::MatrixXd& influence, const Damping3DConfig& d,
+                         const std::string& what) {
+  const Modes modes = compute_modes(K, M, influence.col(0));
+  const int count = static_cast<int>(modes.omega.size());
+  if (d.mode_a < 1 || d.mode_b < 1 || d.mode_a > count || d.mode_b > count || d.mode_a == d.mode_b)
+    throw std::invalid_argument("Rayleigh damping needs two distinct modes in 1.." +
+                                std::to_string(count) + " of " + what);
+  const double wa = modes.omega[d.mode_a - 1], wb = modes.omega[d.mode_b - 1];
+  // xi = a0 / (2 omega) + a1 omega / 2 at both modes.
+  Eigen::Matrix2d A;
+  A << 0.5 / wa, 0.5 * wa, 0.5 / wb, 0.5 * wb;
+  const Eigen::Vector2d coef = A.partialPivLu().solve(Eigen::Vector2d(d.ratio_a, d.ratio_b));
+  return coef[0] * M + coef[1] * K;
+}
+
+}  // namespace
+
+Vec2 to_plan(const Building3DConfig& b, Vec2 p_B) {
+  return b.position + rotate(b.rotation, p_B);
+}
+
+Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, double h,
+                                 ColumnCoupling coupling) {
+  Eigen::Matrix3d k = Eigen::Matrix3d::Zero();
+  for (const Column3DConfig& c : columns) {
+    if (!(c.I11 > 0) || !(c.I22 > 0) || !(c.J > 0) || !(c.E > 0) || !(c.G > 0))
+      throw std::invalid_argument("column " + c.label + ": section and moduli must be > 0");
+    const double h3 = h * h * h;
+    const double k1 = 12.0 * c.E * c.I22 / h3, k2 = 12.0 * c.E * c.I11 / h3;
+    const double cr = std::cos(c.orientation), sr = std::sin(c.orientation);
+    Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
+    local(0, 0) = k1 * cr * cr + k2 * sr * sr;  // k^I
+    local(1, 1) = k1 * sr * sr + k2 * cr * cr;  // k^II
+    if (coupling == ColumnCoupling::kFull) local(0, 1) = local(1, 0) = (k1 - k2) * sr * cr;
+    local(2, 2) = c.G * c.J / h;  // k^theta
+    const Eigen::Matrix3d T = point_transform(c.position);
+    k += T.transpose() * local * T;
+  }
+  return k;
+}
+
+Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
+  if (!(d.mass > 0)) throw std::invalid_argument("diaphragm mass must be > 0");
+  const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
+  const AreaProperties area = area_properties(plan);
+  const Vec2 cm = area.p_WC + d.eccentricity;
+  const double e2 = dot(d.eccentricity, d.eccentricity);
+  double j_cm = d.polar_moment;
+  if (j_cm <= 0) {
+    j_cm = d.mass * area.radius_of_gyration_sq();
+    if (rule == EccentricPolarMoment::kThesis) j_cm += d.mass * e2;
+  }
+  const Eigen::Matrix3d T = point_transform(cm);
+  return T.transpose() * Eigen::Vector3d(d.mass, d.mass, j_cm).asDiagonal() * T;
+}
+
+void add_building3d(Model& model, const Building3DConfig& b) {
+  const Assembly a = assemble(b, b.isolated);
+  const int offset = model.size();
+  const int nb = static_cast<int>(a.dofs.size());
+  const int structure = static_cast<int>(model.structures.size());
+  model.grow(offset + nb);
+  model.mass.block(offset, offset, nb, nb) = a.mass;
+  model.stiffness.block(offset, offset, nb, nb) = a.stiffness;
+  model.influence.segment(offset, nb) = a.influence.col(0);
+  model.influence_y.segment(offset, nb) = a.influence.col(1);
+  StructureInfo info;
+  info.name = b.name;
+  info.has_base = b.isolated;
+  for (Dof d : a.dofs) {
+    d.structure = structure;
+    model.dofs.push_back(d);
+  }
+  for (std::size_t l = 0; l < a.levels_W.size(); ++l)
+    info.level_dofs.push_back(offset + 3 * static_cast<int>(l));
+  // story_heights stay empty: storey drifts of a 3D building are the column probes below.
+
+  // Damping.
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(nb, nb);
+  const Damping3DConfig& d = b.damping;
+  if (d.type == Damping3DConfig::Type::kRayleigh) {
+    Eigen::MatrixXd K = a.stiffness;
+    if (b.isolated)
+      add_bearing_springs(K, a, bearing_stiffnesses(b, a, d.initial_bearing_stiffness));
+    C = rayleigh(K, a.mass, a.influence, d, "building '" + b.name + "'");
+  } else if (d.type == Damping3DConfig::Type::kNonClassical) {
+    const Assembly s = b.isolated ? assemble(b, false) : a;
+    const Eigen::MatrixXd c_s =
+        rayleigh(s.stiffness, s.mass, s.influence, d,
+                 "the fixed-base superstructure of building '" + b.name + "'");
+    if (b.isolated) {
+      // Relative to the base slab: w_i = q_i - q_base, C = T^T C_s T.
+      const int nf = nb - 3;
+      Eigen::MatrixXd T = Eigen::MatrixXd::Zero(nf, nb);
+      T.rightCols(nf).setIdentity();
+      for (int i = 0; i < nf; i += 3) T.block<3, 3>(i, 0) = -Eigen::Matrix3d::Identity();
+      C = T.transpose() * c_s * T;
+      double carried = 0.0;
+      for (double m : a.bearing_masses) carried += m;
+      const double omega_b = 2.0 * std::numbers::pi / b.bearing.period;
+      const double c_b = 2.0 * d.isolation_ratio * a.total_mass * omega_b;
+      std::vector<double> c_j;
+      for (double m : a.bearing_masses) c_j.push_back(c_b * m / carried);
+      add_bearing_springs(C, a, c_j);
+    } else {
+      C = c_s;
+    }
+  }
+  model.damping.block(offset, offset, nb, nb) += C;
+
+  // Bearings.
+  if (b.isolated) {
+    for (std::size_t j = 0; j < a.bearing_positions_W.size(); ++j) {
+      const Vec2 p = a.bearing_positions_W[j];
+      model.elements.push_back(make_bearing_element(
+          b.name + "/bearing " + a.bearing_labels[j], {offset, offset + 1, offset + 2},
+          Eigen::Vector2d(p.x, p.y), b.bearing, a.bearing_masses[j]));
+    }
+  }
+
+  // Output probes: centre of mass and corners of each level; each column's drift.
+  const auto point_terms = [](int upper, int lower, Vec2 p, PlanProbe& probe) {
+    probe.x_terms = {{upper, 1.0}, {upper + 2, -p.y}};
+    probe.y_terms = {{upper + 1, 1.0}, {upper + 2, p.x}};
+    if (lower >= 0) {
+      probe.x_terms.insert(probe.x_terms.end(), {{lower, -1.0}, {lower + 2, p.y}});
+      probe.y_terms.insert(probe.y_terms.end(), {{lower + 1, -1.0}, {lower + 2, -p.x}});
+    }
+  };
+  for (std::size_t l = 0; l < a.levels_W.size(); ++l) {
+    const Diaphragm3DConfig& lev = a.levels_W[l];
+    const ConvexPolygon plan(std::span<const Vec2>(lev.plan.data(), lev.plan.size()));
+    const Vec2 cm = area_properties(plan).p_WC + lev.eccentricity;
+    const int dof = offset + 3 * static_cast<int>(l);
+    const std::string level =
+        b.name + "/" +
+        (b.isolated && l == 0 ? std::string("base") : "floor " + std::to_string(l + !b.isolated));
+    std::vector<std::pair<std::string, Vec2>> points{{"CM", cm}};
+    for (std::size_t k = 0; k < lev.plan.size(); ++k)
+      points.push_back({"corner " + std::to_string(k + 1), lev.plan[k]});
+    for (const auto& [name, p] : points)
+      for (const auto q :
+           {PlanProbe::Quantity::kDisplacement, PlanProbe::Quantity::kAbsoluteAcceleration}) {
+        PlanProbe probe;
+        probe.label = level + "/" + name;
+        probe.quantity = q;
+        point_terms(dof, -1, p, probe);
+        model.probes.push_back(std::move(probe));
+      }
+  }
+  const int first_floor = b.isolated ? 1 : 0;
+  for (std::size_t s = 0; s < b.storeys.size(); ++s) {
+    const int upper = offset + 3 * (first_floor + static_cast<int>(s));
+    const int lower = s == 0 && !b.isolated ? -1 : upper - 3;
+    for (const Column3DConfig& c : b.storeys[s].columns) {
+      PlanProbe probe;
+      probe.label = b.name + "/story " + std::to_string(s + 1) + "/" + c.label;
+      probe.length = b.storeys[s].height;
+      point_terms(upper, lower, to_plan(b, c.position), probe);
+      model.probes.push_back(std::move(probe));
+    }
+  }
+  model.structures.push_back(std::move(info));
+}
+
+LinearModel3D linear_model3d(const Building3DConfig& b, bool initial, bool fixed_base) {
+  const bool with_base = b.isolated && !fixed_base;
+  const Assembly a = assemble(b, with_base);
+  LinearModel3D m{a.mass, a.stiffness, a.influence, a.dofs};
+  if (with_base) add_bearing_springs(m.stiffness, a, bearing_stiffnesses(b, a, initial));
+  return m;
+}
+
+}  // namespace isopound

@@ -1,0 +1,41 @@
+// Assembly of 3D buildings (THEORY section 5) into a Model: rigid diaphragms with DOFs (u, v,
+// theta) at the plan origin, storey matrices k = T^T diag(k^I, k^II, k^theta) T (eq. 5.1-5.6),
+// eccentric masses (eq. 5.7-5.10), bearings under the base slab, Rayleigh or non-classical damping.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "solver/core/model.h"
+#include "solver/structures/config3d.h"
+
+namespace isopound {
+
+// A building frame placed in the model's plan frame: p_W = position + R(rotation) p_B.
+Vec2 to_plan(const Building3DConfig& b, Vec2 p_B);
+
+// Storey stiffness (3 x 3, DOFs at the plan origin) of the columns of one storey of height h;
+// positions and orientations in the plan frame.
+Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns_W, double height,
+                                 ColumnCoupling coupling);
+
+// Mass matrix (3 x 3, DOFs at the plan origin) of a diaphragm whose plan and eccentricity are
+// in the plan frame.
+Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& diaphragm_W, EccentricPolarMoment rule);
+
+// Adds one building: DOFs (u, v, theta) per level (base slab first if isolated), matrices,
+// bearings, damping and output probes (centre of mass and corners of each floor, every column's
+// drift). Throws std::invalid_argument on an inconsistent building.
+void add_building3d(Model& model, const Building3DConfig& building);
+
+// The modes needed by `isopound modes`: the building's linear model with its bearings replaced by
+// linear springs of the given stiffness (post-yield or initial), and the fixed-base
+// superstructure. M and K over the building's DOFs.
+struct LinearModel3D {
+  Eigen::MatrixXd mass, stiffness, influence;
+  std::vector<Dof> dofs;
+};
+LinearModel3D linear_model3d(const Building3DConfig& building, bool initial_bearing_stiffness,
+                             bool fixed_base_superstructure);
+
+}  // namespace isopound

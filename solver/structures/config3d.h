@@ -1,0 +1,88 @@
+// Plain configuration of 3D buildings (THEORY section 5): rigid-diaphragm floors with convex
+// plans, columns per storey, bearings under the base slab. SI; plan coordinates in the building's
+// own frame, placed in the model's plan frame by (position, rotation).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polygon.h"
+#include "solver/structures/bearing.h"
+
+namespace isopound {
+
+// A rigid floor (or the base slab): plan outline, mass at the centroid + eccentricity.
+struct Diaphragm3DConfig {
+  std::vector<Vec2> plan;  // convex outline, m (building frame)
+  double mass = 0.0;       // kg
+  Vec2 eccentricity;       // (e_x, e_y): centre of mass = centroid + eccentricity, m
+  // Polar moment about the centre of mass, kg m^2; 0: from the plan (THEORY eq. 5.9).
+  double polar_moment = 0.0;
+};
+
+// A column of one storey (THEORY eq. 5.1-5.2): principal axis 1 at `orientation` from x.
+struct Column3DConfig {
+  std::string label;  // e.g. "A1" (grid: letter along x, number along y)
+  Vec2 position;      // m (building frame)
+  double I11 = 0.0;   // m^4, about axis 1 (resists motion along axis 2): k_2 = 12 E I11 / h^3
+  double I22 = 0.0;   // m^4, about axis 2: k_1 = 12 E I22 / h^3
+  double J = 0.0;     // m^4, torsion constant: k_theta = G J / h
+  double orientation = 0.0;  // rad
+  double E = 0.0;            // Pa
+  double G = 0.0;            // Pa
+};
+
+// One storey: its columns and the floor on top of it.
+struct Storey3DConfig {
+  double height = 0.0;  // m
+  std::vector<Column3DConfig> columns;
+  Diaphragm3DConfig floor;
+};
+
+struct Bearing3DConfig {
+  std::string label;
+  Vec2 position;              // m (building frame)
+  double carried_mass = 0.0;  // kg; 0: total mass / number of bearings
+};
+
+struct Damping3DConfig {
+  // kRayleigh: C = a0 M + a1 K of the whole model (bearings at K_post or K_el) with ratio_a at
+  // mode_a and ratio_b at mode_b of that model (thesis: 5 % at mode 1, 2 % at mode 4).
+  // kNonClassical: as the 2D default: Rayleigh of the fixed-base superstructure at its modes
+  // mode_a, mode_b (ratio_a, ratio_b) relative to the base slab, plus an isolation dashpot
+  // c_b = 2 xi_b m_tot omega_b shared by the bearings in proportion to their carried mass.
+  enum class Type { kRayleigh, kNonClassical, kNone };
+  Type type = Type::kRayleigh;
+  double ratio_a = 0.05, ratio_b = 0.02;
+  int mode_a = 1, mode_b = 4;
+  bool initial_bearing_stiffness = false;  // kRayleigh: bearings at K_el instead of K_post
+  double isolation_ratio = 0.05;           // kNonClassical: xi_b
+};
+
+// THEORY eq. 5.9: the polar moment about the centre of mass of an eccentric floor.
+enum class EccentricPolarMoment {
+  kThesis,    // J_CM = m r_g^2 + m (e_x^2 + e_y^2) (thesis eq. 5.9, the default)
+  kCentroid,  // J_CM = m r_g^2 (the slab's own polar moment, unchanged by the eccentricity)
+};
+
+// Column stiffness of a column with rotated principal axes (THEORY eq. 5.1-5.2).
+enum class ColumnCoupling {
+  kThesis,  // diag(k^I, k^II): the (k_1 - k_2) sin r cos r coupling is dropped (thesis)
+  kFull,    // R diag(k_1, k_2) R^T: the full rotated stiffness
+};
+
+struct Building3DConfig {
+  std::string name = "building";
+  Vec2 position;          // m: where the building frame's origin sits in the model's plan frame
+  double rotation = 0.0;  // rad, counter-clockwise, of the building frame
+  bool isolated = true;
+  Diaphragm3DConfig base;  // isolated only
+  std::vector<Storey3DConfig> storeys;
+  BearingConfig bearing;                  // the law of every bearing
+  std::vector<Bearing3DConfig> bearings;  // isolated only; empty: one under each storey-1 column
+  Damping3DConfig damping;
+  EccentricPolarMoment polar_moment_rule = EccentricPolarMoment::kThesis;
+  ColumnCoupling column_coupling = ColumnCoupling::kThesis;
+};
+
+}  // namespace isopound
