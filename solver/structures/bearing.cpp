@@ -118,18 +118,8 @@ std::unique_ptr<BiaxialMaterial> make_bearing_material(const BearingConfig& c, d
       return std::make_unique<LinearBiaxialMaterial>(p.post_yield_stiffness);
     case BearingConfig::Model::kBilinear:
       return std::make_unique<BilinearBiaxialMaterial>(p.elastic_stiffness, p.alpha, p.yield_force);
-    case BearingConfig::Model::kBoucWenCoupled: {
-      BoucWenParameters bw;
-      bw.elastic_stiffness = p.elastic_stiffness;
-      bw.alpha = p.alpha;
-      bw.yield_force = p.yield_force;
-      bw.yield_displacement = p.yield_displacement;
-      bw.A = c.A;
-      bw.beta = c.beta;
-      bw.gamma = c.gamma;
-      bw.n = c.n;
-      return std::make_unique<CoupledBoucWenMaterial>(bw);
-    }
+    case BearingConfig::Model::kBoucWenCoupled:
+      return std::make_unique<CoupledBoucWenMaterial>(bouc_wen_parameters(iso, p));
     case BearingConfig::Model::kBoucWenUncoupled:
       return std::make_unique<UncoupledBiaxialMaterial>(make_isolator_material(iso, m),
                                                         make_isolator_material(iso, m));

@@ -47,6 +47,19 @@ IsolatorProperties isolator_properties(const IsolatorConfig& c, double m) {
   return p;
 }
 
+BoucWenParameters bouc_wen_parameters(const IsolatorConfig& c, const IsolatorProperties& p) {
+  BoucWenParameters bw;
+  bw.elastic_stiffness = p.elastic_stiffness;
+  bw.alpha = p.alpha;
+  bw.yield_force = p.yield_force;
+  bw.yield_displacement = p.yield_displacement;
+  bw.A = c.A;
+  bw.beta = c.beta;
+  bw.gamma = c.gamma;
+  bw.n = c.n;
+  return bw;
+}
+
 std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& c, double m) {
   const IsolatorProperties p = isolator_properties(c, m);
   switch (c.model) {
@@ -54,18 +67,8 @@ std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& c
       return std::make_unique<LinearMaterial>(p.post_yield_stiffness);
     case IsolatorConfig::Model::kBilinear:
       return std::make_unique<BilinearMaterial>(p.elastic_stiffness, p.alpha, p.yield_force);
-    case IsolatorConfig::Model::kBoucWen: {
-      BoucWenParameters bw;
-      bw.elastic_stiffness = p.elastic_stiffness;
-      bw.alpha = p.alpha;
-      bw.yield_force = p.yield_force;
-      bw.yield_displacement = p.yield_displacement;
-      bw.A = c.A;
-      bw.beta = c.beta;
-      bw.gamma = c.gamma;
-      bw.n = c.n;
-      return std::make_unique<BoucWenMaterial>(bw);
-    }
+    case IsolatorConfig::Model::kBoucWen:
+      return std::make_unique<BoucWenMaterial>(bouc_wen_parameters(c, p));
     case IsolatorConfig::Model::kFrictionPendulum:
       throw std::invalid_argument(
           "isolator: the friction pendulum is rate dependent, not a uniaxial law; build it with "

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "solver/core/constants.h"
+#include "solver/materials/bouc_wen.h"
 #include "solver/materials/hysteresis.h"
 #include "solver/structures/config.h"
 
@@ -25,6 +26,10 @@ IsolatorProperties isolator_properties(const IsolatorConfig& config, double carr
 
 // The friction pendulum has no uniaxial law (it is rate dependent): this throws for it; the 2D
 // building uses make_bearing_material and a BearingLink instead.
+// The Bouc-Wen law of these properties with the config's shape (A, beta, gamma, n): the one
+// construction shared by the uniaxial isolator and the coupled biaxial bearing.
+BoucWenParameters bouc_wen_parameters(const IsolatorConfig& config, const IsolatorProperties& p);
+
 std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& config,
                                                          double carried_mass);
 
