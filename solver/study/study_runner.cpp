@@ -267,7 +267,19 @@ int run_sweep(const std::string& study_path, const SweepOptions& options,
   const bool root = ranks.rank() == 0;
   const Study study = load_study_file(study_path);
   const int jobs = options.jobs > 0 ? options.jobs : default_jobs(ranks.local_size());
+  // Validation builds every case's model once: say so, since a large study takes a while here.
+  const bool tell = root && !options.quiet;
+  const Clock::time_point checking = Clock::now();
+  if (tell)
+    std::fprintf(stderr,
+                 "%s: %lld cases; checking that every case builds and every output exists "
+                 "(%d threads)...\n",
+                 study_path.c_str(), static_cast<long long>(study.case_count()), jobs);
   const ValidatedStudy validated = validate_study(study, jobs);
+  if (tell)
+    std::fprintf(stderr, "%s: checked in %.1f s%s\n", study_path.c_str(),
+                 std::chrono::duration<double>(Clock::now() - checking).count(),
+                 options.dry_run ? "; dry run: nothing is computed" : "");
   if (options.dry_run) {
     if (root) describe(study, validated, stdout);
     return 0;
