@@ -9,6 +9,7 @@
 
 #include "solver/core/modes.h"
 #include "solver/io/model_input.h"
+#include "solver/io/report3d.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/job.h"
@@ -139,6 +140,48 @@ TEST(Building3D, QuarterTurnOfThePairSwapsXAndY) {
     EXPECT_NEAR(r[1].probes[p].resultant.value, r[0].probes[p].resultant.value,
                 1e-9 * std::max(r[0].probes[p].resultant.value, 1e-3))
         << p;  // CM and column resultants of a quarter-turn-symmetric building
+}
+
+// summary.json's 3D section uses the one peak shape of the 2D summary ({value, unit, time_s,
+// positive, negative, ...}); its numbers are the analysis' own, and the envelope over columns is
+// the largest column.
+TEST(Building3D, SummaryPeaksHaveTheCommonShape) {
+  ModelConfig c = thesis_config();
+  c.ground_motion = GroundMotionConfig{};  // the built-in pulse pair
+  c.ground_motion.angle = 0.4;
+  c.output.histories = false;
+  const JobResult job = run_job(c);
+  const nlohmann::json j = summary3d_json(job);
+  ASSERT_EQ(j.size(), 1u);
+  const auto expect_peak = [](const nlohmann::json& p, const char* unit, const std::string& where) {
+    ASSERT_TRUE(p.is_object()) << where;
+    EXPECT_EQ(p.at("unit"), unit) << where;
+    for (const char* k : {"value", "time_s", "positive", "negative"})
+      EXPECT_TRUE(p.at(k).is_number()) << where << " " << k;
+    EXPECT_DOUBLE_EQ(p.at("value").get<double>(),
+                     std::max(p.at("positive").get<double>(), -p.at("negative").get<double>()))
+        << where;
+  };
+  const nlohmann::json& base = j[0]["levels"][0];
+  expect_peak(base["u"], "m", "base u");
+  expect_peak(base["theta"], "rad", "base theta");
+  EXPECT_DOUBLE_EQ(base["u"]["value"].get<double>(), job.analysis.displacement[0].value);
+  expect_peak(base["centre_of_mass"]["displacement"]["resultant"], "m", "CM");
+  expect_peak(base["centre_of_mass"]["absolute_acceleration"]["x"], "m/s2", "CM acc");
+  expect_peak(base["corners"][0]["displacement"]["resultant"], "m", "corner");
+  const nlohmann::json& storey = j[0]["storeys"][0];
+  double largest = 0.0;
+  for (const auto& column : storey["columns"]) {
+    expect_peak(column["resultant"], "m", "column");
+    expect_peak(column["drift_ratio"], "-", "column ratio");
+    largest = std::max(largest, column["resultant"]["value"].get<double>());
+  }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_DOUBLE_EQ(storey["envelope_over_columns"]["resultant"]["value"].get<double>(), largest);
+  EXPECT_EQ(storey["corner_columns"].size(), 4u);  // A1, D1, A4, D4
+  const nlohmann::json& bearing = j[0]["bearings"][0];
+  expect_peak(bearing["force"], "N", "bearing force");
+  expect_peak(bearing["deformation"], "m", "bearing deformation");
 }
 
 // Two buildings in one model: one at the origin, one placed at (40 m, 12 m) and turned by 90

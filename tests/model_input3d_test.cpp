@@ -80,6 +80,17 @@ TEST(ModelInput3D, BadInputsNameLineAndKey) {
       {with("    base: {mass: 340 t}\n",
             "    base: {mass: 340 t}\n    bearings: [{at: [20 m, 0 m]}]\n"),
        7, "structures[0].bearings[0].at", "outside"},
+      // The bearing law reads only its own keys (the key rule): friction keys with Bouc-Wen,
+      // Bouc-Wen keys with the friction pendulum, are refused; R is required for the pendulum.
+      {with("bearing: {model: bouc_wen_uncoupled, QW: 10 %}",
+            "bearing: {model: bouc_wen_uncoupled, QW: 10 %, R: 2 m}"),
+       7, "structures[0].bearing.R", "not used"},
+      {with("bearing: {model: bouc_wen_uncoupled, QW: 10 %}",
+            "bearing: {model: friction_pendulum, R: 2 m, mu_slow: 5 %, mu_fast: 5 %, Tb: 2 s}"),
+       7, "structures[0].bearing.Tb", "not used"},
+      {with("bearing: {model: bouc_wen_uncoupled, QW: 10 %}",
+            "bearing: {model: friction_pendulum, mu_slow: 5 %, mu_fast: 5 %}"),
+       7, "structures[0].bearing.R", "missing required key"},
   };
   for (const Bad& c : cases) {
     try {

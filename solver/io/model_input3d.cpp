@@ -162,37 +162,47 @@ BearingConfig read_bearing_law(const InputNode& node) {
   node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
                     "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter"});
   BearingConfig c;
-  if (const auto m = node.find("model"))
-    c.model = m->choice<M>({{"bouc_wen", M::kBoucWenCoupled},
-                            {"bouc_wen_uncoupled", M::kBoucWenUncoupled},
-                            {"bilinear", M::kBilinear},
-                            {"linear", M::kLinear},
-                            {"friction_pendulum", M::kFrictionPendulum}});
-  const bool fp = c.model == M::kFrictionPendulum;
-  for (const char* key : {"Tb", "QW", "n", "A", "beta", "gamma", "strength_is_yield_force"})
-    if (fp && node.has(key))
-      node.find(key)->fail("not used by the friction pendulum (it takes radius, mu_slow, ...)");
-  for (const char* key : {"R", "mu_slow", "mu_fast", "rate_parameter"})
-    if (!fp && node.has(key)) node.find(key)->fail("only used by model: friction_pendulum");
+  node.read_choice<M>("model",
+                      {{"bouc_wen", M::kBoucWenCoupled},
+                       {"bouc_wen_uncoupled", M::kBoucWenUncoupled},
+                       {"bilinear", M::kBilinear},
+                       {"linear", M::kLinear},
+                       {"friction_pendulum", M::kFrictionPendulum}},
+                      c.model);
+  // Only the keys of the chosen law are read; any other is refused as unused (the key rule).
+  node.read_quantity("carried_mass", dim::kMass, Bound::kPositive, c.carried_mass);
+  if (c.model == M::kFrictionPendulum) {      // as the 2D friction pendulum (configs/tutorial.yaml)
+    constexpr Dimension kSlowness{-1, 0, 1};  // s/m
+    c.radius = node.required("R").quantity(dim::kLength, Bound::kPositive);
+    c.mu_slow = node.required("mu_slow").number(Bound::kNonNegative);
+    c.mu_fast = node.required("mu_fast").number(Bound::kNonNegative);
+    if (c.mu_fast != c.mu_slow)
+      c.rate_parameter = node.required("rate_parameter").quantity(kSlowness, Bound::kNonNegative);
+    else
+      node.read_quantity("rate_parameter", kSlowness, Bound::kNonNegative, c.rate_parameter);
+    c.yield_displacement = 5e-4;  // pre-sliding travel, replaced if uy is given
+    node.read_quantity("uy", dim::kLength, Bound::kPositive, c.yield_displacement);
+    return c;
+  }
   node.read_quantity("Tb", dim::kTime, Bound::kPositive, c.period);
+  if (c.model == M::kLinear) return c;  // K_post only: no strength, no yield
   if (const auto qw = node.find("QW")) {
     c.strength_ratio = qw->number(Bound::kNonNegative);
-    if (c.strength_ratio == 0.0 && c.model != M::kLinear)
+    if (c.strength_ratio == 0.0)
       qw->fail("must be > 0 for a yielding bearing (a bearing without strength is model: linear)");
+    if (c.strength_ratio > 1.0)
+      qw->fail("Q/W is a fraction of the weight: did you mean '" + qw->string() + " %'?");
+  } else {
+    node.note_default("QW", "0.05");
   }
   node.read_quantity("uy", dim::kLength, Bound::kPositive, c.yield_displacement);
+  node.read_boolean("strength_is_yield_force", c.strength_is_yield_force);
+  if (c.model == M::kBilinear) return c;
   node.read_number("n", Bound::kPositive, c.n);
   node.read_number("A", Bound::kPositive, c.A);
   node.read_number("beta", Bound::kAny, c.beta);
   node.read_number("gamma", Bound::kAny, c.gamma);
   if (!(c.beta + c.gamma > 0)) node.fail_at_key("gamma", "beta + gamma must be > 0");
-  node.read_boolean("strength_is_yield_force", c.strength_is_yield_force);
-  node.read_quantity("carried_mass", dim::kMass, Bound::kPositive, c.carried_mass);
-  node.read_quantity("R", dim::kLength, Bound::kPositive, c.radius);
-  node.read_number("mu_slow", Bound::kNonNegative, c.mu_slow);
-  node.read_number("mu_fast", Bound::kNonNegative, c.mu_fast);
-  node.read_quantity("rate_parameter", Dimension{-1, 0, 1}, Bound::kNonNegative, c.rate_parameter);
-  if (fp && !(c.radius > 0)) node.fail_at_key("R", "the friction pendulum needs R > 0");
   return c;
 }
 

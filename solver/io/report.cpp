@@ -15,6 +15,16 @@
 
 namespace isopound {
 
+nlohmann::json peak_json(const Peak& p, const std::string& unit) {
+  return {{"value", p.value},
+          {"unit", unit},
+          {"time_s", p.time},
+          {"positive", p.positive},
+          {"positive_time_s", p.time_positive},
+          {"negative", p.negative},
+          {"negative_time_s", p.time_negative}};
+}
+
 namespace {
 
 const char* stepping_name(AnalysisConfig::Stepping s) {
@@ -33,18 +43,6 @@ const char* isolator_name(IsolatorConfig::Model m) {
       return "friction_pendulum";
   }
   return "?";
-}
-
-// Every peak in summary.json has this one shape: |x| max with its time, and the largest positive
-// and negative values with theirs, all in `unit` (SI).
-nlohmann::json peak(const Peak& p, const char* unit) {
-  return {{"value", p.value},
-          {"unit", unit},
-          {"time_s", p.time},
-          {"positive", p.positive},
-          {"positive_time_s", p.time_positive},
-          {"negative", p.negative},
-          {"negative_time_s", p.time_negative}};
 }
 
 bool is_contact(const Element& el) {
@@ -140,9 +138,9 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       const int d = s.level_dofs[k];
       levels.push_back(
           {{"label", model.dofs[d].label},
-           {"displacement", peak(r.displacement[d], "m")},
-           {"velocity", peak(r.velocity[d], "m/s")},
-           {"absolute_acceleration", peak(r.absolute_acceleration[d], "m/s2")},
+           {"displacement", peak_json(r.displacement[d], "m")},
+           {"velocity", peak_json(r.velocity[d], "m/s")},
+           {"absolute_acceleration", peak_json(r.absolute_acceleration[d], "m/s2")},
            {"absolute_acceleration_peak_g", r.absolute_acceleration[d].value / kGravity},
            {"residual_displacement_m", r.final_displacement[d]}});
     }
@@ -153,7 +151,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
       // What is left on the isolators when the shaking (and extra_time) is over.
       js["residual_isolator_displacement_m"] = r.final_displacement[s.level_dofs[0]];
-      js["base_shear"] = peak(r.base_shear[si], "N");
+      js["base_shear"] = peak_json(r.base_shear[si], "N");
       js["base_shear_coefficient"] = weight > 0 ? r.base_shear[si].value / weight : 0.0;
     }
     json stories = json::array();
@@ -163,9 +161,9 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       stories.push_back(
           {{"label", st.label},
            {"height_m", st.height},
-           {"drift", peak(r.drift[story_index], "m")},
-           {"drift_ratio", peak(r.drift_ratio[story_index], "-")},
-           {"shear", peak(r.story_shear[story_index], "N")},
+           {"drift", peak_json(r.drift[story_index], "m")},
+           {"drift_ratio", peak_json(r.drift_ratio[story_index], "-")},
+           {"shear", peak_json(r.story_shear[story_index], "N")},
            {"shear_coefficient", weight > 0 ? r.story_shear[story_index].value / weight : 0.0}});
     }
     js["stories"] = stories;
@@ -184,7 +182,8 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
         je["impacts"] = static_cast<long>(std::lround(r.element_outputs[e][k].value));
         continue;
       }
-      je["peak_" + el.output_name(k)] = peak(r.element_outputs[e][k], el.output_unit(k).c_str());
+      je["peak_" + el.output_name(k)] =
+          peak_json(r.element_outputs[e][k], el.output_unit(k).c_str());
     }
     elements.push_back(je);
   }
@@ -216,8 +215,8 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       const int d = s.level_dofs[k];
       levels.push_back(
           {{"label", model.dofs[d].label},
-           {"unobstructed_displacement", peak(u.displacement[d], "m")},
-           {"unobstructed_absolute_acceleration", peak(u.absolute_acceleration[d], "m/s2")},
+           {"unobstructed_displacement", peak_json(u.displacement[d], "m")},
+           {"unobstructed_absolute_acceleration", peak_json(u.absolute_acceleration[d], "m/s2")},
            {"displacement_amplification", ratio(r.displacement[d].value, u.displacement[d].value)},
            {"acceleration_amplification",
             ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[d].value)}});
@@ -226,7 +225,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     const std::size_t count = s.story_heights.size();
     for (std::size_t k = 0; k < count; ++k)
       stories.push_back({{"label", r.stories[k].label},
-                         {"unobstructed_drift", peak(u.drift[k], "m")},
+                         {"unobstructed_drift", peak_json(u.drift[k], "m")},
                          {"drift_amplification", ratio(r.drift[k].value, u.drift[k].value)}});
     json gaps = json::array();
     for (const ContactGap& c : unobstructed->gaps)

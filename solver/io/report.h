@@ -12,6 +12,10 @@
 
 namespace isopound {
 
+// Every peak in summary.json has this one shape: {value (max |x|), unit, time_s, positive,
+// positive_time_s, negative, negative_time_s}, all in `unit` (SI).
+nlohmann::json peak_json(const Peak& p, const std::string& unit);
+
 // `unobstructed`: the same run without walls and neighbours (or null); adds its peaks and the
 // amplification of each peak of the main building (with pounding / without).
 inline constexpr const char* kIsopoundVersion = "0.1.0";

@@ -1,5 +1,5 @@
 // 3D outputs from the model's plan probes (labels "building/level/point", "building/story k/
-// column") and the bearing elements. Keys end in their units, as in the 2D summary.
+// column") and the bearing elements. Every peak has the 2D summary's shape (report.h, peak_json).
 #include "solver/io/report3d.h"
 
 #include <cstdio>
@@ -9,6 +9,7 @@
 
 #include "solver/core/constants.h"
 #include "solver/core/modes.h"
+#include "solver/io/report.h"
 #include "solver/structures/building3d.h"
 
 namespace isopound {
@@ -24,12 +25,11 @@ Label split(const std::string& label) {
   return {label.substr(0, a), label.substr(a + 1, b - a - 1), label.substr(b + 1)};
 }
 
+// x, y and the resultant sqrt(x^2 + y^2) of a plan point, each a peak of the common shape.
 nlohmann::json peaks(const ProbePeaks& p, const char* unit) {
-  const std::string u = unit;
-  return {{"x_peak_" + u, p.x.value},
-          {"y_peak_" + u, p.y.value},
-          {"resultant_peak_" + u, p.resultant.value},
-          {"resultant_time_s", p.resultant.time}};
+  return {{"x", peak_json(p.x, unit)},
+          {"y", peak_json(p.y, unit)},
+          {"resultant", peak_json(p.resultant, unit)}};
 }
 
 // Grid corner columns: the extreme letters and numbers among labels like "A1", "D4".
@@ -68,9 +68,9 @@ nlohmann::json summary3d_json(const JobResult& job) {
       const std::string level = name.substr(0, name.rfind(' '));
       level_order.push_back(level);
       levels[level] = {{"label", level},
-                       {"u_peak_m", r.displacement[d].value},
-                       {"v_peak_m", r.displacement[d + 1].value},
-                       {"theta_peak_rad", r.displacement[d + 2].value}};
+                       {"u", peak_json(r.displacement[d], "m")},
+                       {"v", peak_json(r.displacement[d + 1], "m")},
+                       {"theta", peak_json(r.displacement[d + 2], "rad")}};
     }
     std::map<std::string, json> stories;
     std::vector<std::string> story_order;
@@ -84,13 +84,13 @@ nlohmann::json summary3d_json(const JobResult& job) {
         const bool acc = probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration;
         json& point = lev[l.point == "CM" ? "centre_of_mass" : "corners"];
         if (l.point == "CM") {
-          point[acc ? "absolute_acceleration" : "displacement"] = peaks(pk, acc ? "m_s2" : "m");
+          point[acc ? "absolute_acceleration" : "displacement"] = peaks(pk, acc ? "m/s2" : "m");
         } else {
           if (!point.is_array()) point = json::array();
           if (!acc)
             point.push_back({{"label", l.point}, {"displacement", peaks(pk, "m")}});
           else
-            point.back()["absolute_acceleration"] = peaks(pk, "m_s2");
+            point.back()["absolute_acceleration"] = peaks(pk, "m/s2");
         }
         continue;
       }
@@ -101,7 +101,7 @@ nlohmann::json summary3d_json(const JobResult& job) {
       }
       json col = peaks(pk, "m");
       col["label"] = l.point;
-      col["drift_ratio_peak"] = pk.ratio.value;
+      col["drift_ratio"] = peak_json(pk.ratio, "-");
       stories[l.part]["columns"].push_back(col);
     }
     json jl = json::array();
@@ -110,15 +110,16 @@ nlohmann::json summary3d_json(const JobResult& job) {
     json js = json::array();
     for (const std::string& name : story_order) {
       json& st = stories[name];
-      json env = {{"x_peak_m", 0.0},
-                  {"y_peak_m", 0.0},
-                  {"resultant_peak_m", 0.0},
-                  {"drift_ratio_peak", 0.0}};
+      // Envelope over columns: for each quantity the peak of the column where it is largest.
+      json env = json::object();
       std::vector<std::string> labels;
       for (const json& c : st["columns"]) {
         labels.push_back(c["label"]);
-        for (const char* k : {"x_peak_m", "y_peak_m", "resultant_peak_m", "drift_ratio_peak"})
-          env[k] = std::max(env[k].get<double>(), c[k].get<double>());
+        for (const char* k : {"x", "y", "resultant", "drift_ratio"})
+          if (!env.contains(k) || c[k]["value"].get<double>() > env[k]["value"].get<double>()) {
+            env[k] = c[k];
+            env[k]["column"] = c["label"];
+          }
       }
       st["envelope_over_columns"] = env;
       json corners = json::object();
@@ -135,7 +136,7 @@ nlohmann::json summary3d_json(const JobResult& job) {
       if (el.label().rfind(s.name + "/bearing ", 0) != 0) continue;
       json je = {{"label", el.label()}};
       for (int k = 0; k < el.output_count(); ++k)
-        je[el.output_name(k) + "_peak_" + el.output_unit(k)] = r.element_outputs[e][k].value;
+        je[el.output_name(k)] = peak_json(r.element_outputs[e][k], el.output_unit(k));
       bearings.push_back(je);
     }
     jb["bearings"] = bearings;
@@ -153,36 +154,36 @@ void print_summary3d(std::ostream& out, const JobResult& job) {
       const auto& cm = l["centre_of_mass"];
       double corner = 0.0;
       for (const auto& c : l["corners"])
-        corner = std::max(corner, c["displacement"]["resultant_peak_m"].get<double>());
+        corner = std::max(corner, c["displacement"]["resultant"]["value"].get<double>());
       std::snprintf(line, sizeof line,
                     "  %-8s CM u %6.2f v %6.2f resultant %6.2f cm, corners %6.2f cm, theta %.2e "
                     "rad, CM abs. acc. %.3f g\n",
                     l["label"].get<std::string>().c_str(),
-                    100 * cm["displacement"]["x_peak_m"].get<double>(),
-                    100 * cm["displacement"]["y_peak_m"].get<double>(),
-                    100 * cm["displacement"]["resultant_peak_m"].get<double>(), 100 * corner,
-                    l["theta_peak_rad"].get<double>(),
-                    cm["absolute_acceleration"]["resultant_peak_m_s2"].get<double>() / kGravity);
+                    100 * cm["displacement"]["x"]["value"].get<double>(),
+                    100 * cm["displacement"]["y"]["value"].get<double>(),
+                    100 * cm["displacement"]["resultant"]["value"].get<double>(), 100 * corner,
+                    l["theta"]["value"].get<double>(),
+                    cm["absolute_acceleration"]["resultant"]["value"].get<double>() / kGravity);
       out << line;
     }
     for (const auto& s : b["storeys"]) {
       std::snprintf(line, sizeof line,
                     "  %-8s drift (envelope over columns) %6.3f cm, ratio %.3f %%",
                     s["label"].get<std::string>().c_str(),
-                    100 * s["envelope_over_columns"]["resultant_peak_m"].get<double>(),
-                    100 * s["envelope_over_columns"]["drift_ratio_peak"].get<double>());
+                    100 * s["envelope_over_columns"]["resultant"]["value"].get<double>(),
+                    100 * s["envelope_over_columns"]["drift_ratio"]["value"].get<double>());
       out << line;
       for (const auto& [name, c] : s["corner_columns"].items()) {
         std::snprintf(line, sizeof line, "  %s %.3f", name.c_str(),
-                      100 * c["resultant_peak_m"].get<double>());
+                      100 * c["resultant"]["value"].get<double>());
         out << line;
       }
       out << '\n';
     }
     double d = 0.0, f = 0.0;
     for (const auto& br : b["bearings"]) {
-      d = std::max(d, br.value("deformation_peak_m", 0.0));
-      f = std::max(f, br.value("force_peak_N", 0.0));
+      if (br.contains("deformation")) d = std::max(d, br["deformation"]["value"].get<double>());
+      if (br.contains("force")) f = std::max(f, br["force"]["value"].get<double>());
     }
     std::snprintf(line, sizeof line,
                   "  bearings (%zu): peak resultant deformation %.2f cm, force %.1f kN\n",
