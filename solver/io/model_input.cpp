@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input3d.h"
 #include "solver/structures/config3d.h"
 
@@ -69,22 +70,6 @@ std::vector<FloorConfig> read_floors(const InputNode& node) {
   return floors;
 }
 
-// Friction pendulum keys (THEORY-notes.md): R, mu_slow, mu_fast, rate_parameter (a, s/m; not
-// needed when mu_slow = mu_fast), friction_hysteresis; uy is the pre-sliding travel (0.5 mm).
-void read_friction_pendulum(const InputNode& node, IsolatorConfig& iso) {
-  constexpr Dimension kSlowness{-1, 0, 1};  // s/m
-  iso.radius = node.required("R").quantity(dim::kLength, Bound::kPositive);
-  iso.mu_slow = node.required("mu_slow").number(Bound::kNonNegative);
-  iso.mu_fast = node.required("mu_fast").number(Bound::kNonNegative);
-  if (iso.mu_fast != iso.mu_slow)
-    iso.rate_parameter = node.required("rate_parameter").quantity(kSlowness, Bound::kNonNegative);
-  else
-    node.read_quantity("rate_parameter", kSlowness, Bound::kNonNegative, iso.rate_parameter);
-  iso.yield_displacement = 5e-4;  // pre-sliding travel, replaced if uy is given
-  if (const auto z = node.find("friction_hysteresis"))
-    iso.smooth_friction = z->choice<bool>({{"plastic", false}, {"bouc_wen", true}});
-}
-
 IsolatorConfig read_isolator(const InputNode& node) {
   using Model = IsolatorConfig::Model;
   node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
@@ -100,7 +85,6 @@ IsolatorConfig read_isolator(const InputNode& node) {
   if (iso.model == Model::kFrictionPendulum) {
     // No Tb, QW or Bouc-Wen shape: they are refused as unused (the pendulum's period is R's).
     read_friction_pendulum(node, iso);
-    node.read_quantity("uy", dim::kLength, Bound::kPositive, iso.yield_displacement);
     node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
     return iso;
   }

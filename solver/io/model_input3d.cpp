@@ -6,6 +6,8 @@
 #include <numbers>
 #include <optional>
 
+#include "solver/io/friction_pendulum_input.h"
+
 namespace isopound {
 namespace {
 
@@ -160,7 +162,8 @@ void read_diaphragm_extras(const InputNode& node, Diaphragm3DConfig& d) {
 BearingConfig read_bearing_law(const InputNode& node) {
   using M = BearingConfig::Model;
   node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
-                    "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter"});
+                    "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter",
+                    "friction_hysteresis"});
   BearingConfig c;
   node.read_choice<M>("model",
                       {{"bouc_wen", M::kBoucWenCoupled},
@@ -171,17 +174,8 @@ BearingConfig read_bearing_law(const InputNode& node) {
                       c.model);
   // Only the keys of the chosen law are read; any other is refused as unused (the key rule).
   node.read_quantity("carried_mass", dim::kMass, Bound::kPositive, c.carried_mass);
-  if (c.model == M::kFrictionPendulum) {      // as the 2D friction pendulum (configs/tutorial.yaml)
-    constexpr Dimension kSlowness{-1, 0, 1};  // s/m
-    c.radius = node.required("R").quantity(dim::kLength, Bound::kPositive);
-    c.mu_slow = node.required("mu_slow").number(Bound::kNonNegative);
-    c.mu_fast = node.required("mu_fast").number(Bound::kNonNegative);
-    if (c.mu_fast != c.mu_slow)
-      c.rate_parameter = node.required("rate_parameter").quantity(kSlowness, Bound::kNonNegative);
-    else
-      node.read_quantity("rate_parameter", kSlowness, Bound::kNonNegative, c.rate_parameter);
-    c.yield_displacement = 5e-4;  // pre-sliding travel, replaced if uy is given
-    node.read_quantity("uy", dim::kLength, Bound::kPositive, c.yield_displacement);
+  if (c.model == M::kFrictionPendulum) {  // the keys of the 2D friction pendulum
+    read_friction_pendulum(node, c);
     return c;
   }
   node.read_quantity("Tb", dim::kTime, Bound::kPositive, c.period);
