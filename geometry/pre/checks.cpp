@@ -1,0 +1,294 @@
+// isopound-pre's model checks. Each problem blames the key it concerns (nodes kept by the scan).
+#include "geometry/pre/checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <span>
+
+#include "geometry/overlap.h"
+#include "solver/structures/config3d.h"
+
+namespace isopound::pre {
+namespace {
+
+constexpr double kLevelTolerance3D = 0.01;  // m: the solver pairs floors at |dz| < 1 cm
+constexpr double kLevelTolerance2D = 1e-3;  // m: pounding2d.cpp pairs levels within 1 mm
+constexpr double kGround = 0.01;            // m: levels below are at the ground
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+std::string metres(double v) {
+  return fmt("%.3f m", v);
+}
+
+ConvexPolygon polygon(const std::vector<Vec2>& v) {
+  return ConvexPolygon(std::span<const Vec2>(v.data(), v.size()));
+}
+
+// The node to blame for a structure's placement: `adjacent`, else `position` of its item.
+std::pair<const InputNode*, std::string> placement_node(const StructureMarks& m) {
+  if (m.adjacent) return {&*m.adjacent, ""};
+  return {&*m.item, "position"};
+}
+
+Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
+  return a + t * d;
+}
+
+}  // namespace
+
+std::string side_name(Vec2 n) {
+  if (std::abs(n.x) >= std::abs(n.y)) return n.x >= 0 ? "east" : "west";
+  return n.y >= 0 ? "north" : "south";
+}
+
+void closest_points(const std::vector<Vec2>& a, const std::vector<Vec2>& b, Vec2& p_a, Vec2& p_b) {
+  double best = std::numeric_limits<double>::infinity();
+  const auto scan = [&](const std::vector<Vec2>& points, const std::vector<Vec2>& edges,
+                        bool points_are_a) {
+    for (Vec2 p : points)
+      for (std::size_t i = 0; i < edges.size(); ++i) {
+        const Vec2 q = closest_on_segment(p, edges[i], edges[(i + 1) % edges.size()]);
+        const double d = dot(q - p, q - p);
+        if (d < best) {
+          best = d;
+          p_a = points_are_a ? p : q;
+          p_b = points_are_a ? q : p;
+        }
+      }
+  };
+  scan(a, b, true);
+  scan(b, a, false);
+}
+
+std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
+                                  const std::vector<StructureProperties>& properties,
+                                  const CheckLimits& limits, ProblemList& problems) {
+  const ModelConfig& config = *model.config;
+  const auto& marks = model.structures;
+  const std::size_t n = config.structures3d.size();
+  std::vector<Clearance> clearances;
+
+  // Structures overlapping at rest, and the nearest approach of every pair (any levels).
+  std::vector<std::vector<double>> nearest(n, std::vector<double>(n, 1e300));
+  for (std::size_t i = 0; i < site.slabs.size(); ++i)
+    for (std::size_t j = i + 1; j < site.slabs.size(); ++j) {
+      const PlanSlab& a = site.slabs[i];
+      const PlanSlab& b = site.slabs[j];
+      if (a.structure == b.structure) continue;
+      const ConvexPolygon pa = polygon(a.plan_W), pb = polygon(b.plan_W);
+      const Separation sep = separation_of(pa, pb);
+      double& near = nearest[a.structure][b.structure];
+      near = std::min(near, sep.distance);
+      nearest[b.structure][a.structure] = near;
+      if (std::abs(a.elevation - b.elevation) < kLevelTolerance3D) {
+        Clearance c{a.name + "/" + a.level,
+                    b.name + "/" + b.level,
+                    side_name(sep.n_AB),
+                    sep.distance,
+                    -1.0,
+                    a.elevation,
+                    {},
+                    {}};
+        if (sep.distance > 0) closest_points(a.plan_W, b.plan_W, c.p_WA, c.p_WB);
+        clearances.push_back(c);
+      }
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      // The largest overlap of any two of their slabs (areas at the same elevation or not: in
+      // plan the two buildings would stand in each other).
+      double area = 0.0, depth = 0.0;
+      std::string where;
+      for (const PlanSlab& a : site.slabs)
+        for (const PlanSlab& b : site.slabs) {
+          if (a.structure != static_cast<int>(i) || b.structure != static_cast<int>(j)) continue;
+          const ConvexPolygon pa = polygon(a.plan_W), pb = polygon(b.plan_W);
+          const Overlap o = overlap_of(pa, pb);
+          if (o.area > area) {
+            area = o.area;
+            depth = -separation_of(pa, pb).distance;
+            where = a.level + " of '" + a.name + "' and " + b.level + " of '" + b.name + "'";
+          }
+        }
+      if (area > 1e-9) {
+        const auto [node, key] = placement_node(marks[j]);
+        problems.error_at(*node, key,
+                          "structures '" + config.structures3d[i].name + "' and '" +
+                              config.structures3d[j].name + "' overlap at rest: " + where +
+                              " share " + fmt("%.3f m2", area) + " (" + metres(depth) + " deep)");
+      }
+    }
+
+  // Floors of pounding pairs at equal levels: every floor of one within the other's height
+  // must meet a floor of the other.
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      if (i == j || nearest[i][j] > limits.reach) continue;
+      double top_j = 0.0;
+      for (const PlanSlab& b : site.slabs)
+        if (b.structure == static_cast<int>(j)) top_j = std::max(top_j, b.elevation);
+      for (const PlanSlab& a : site.slabs) {
+        if (a.structure != static_cast<int>(i) || a.elevation < kGround ||
+            a.elevation > top_j + kLevelTolerance3D)
+          continue;
+        const PlanSlab* partner = nullptr;
+        double dz = 1e300;
+        for (const PlanSlab& b : site.slabs)
+          if (b.structure == static_cast<int>(j) && std::abs(b.elevation - a.elevation) < dz) {
+            dz = std::abs(b.elevation - a.elevation);
+            partner = &b;
+          }
+        if (!partner || dz < kLevelTolerance3D) continue;
+        const StructureMarks& m = marks[i];
+        const int storey = a.level_index - (config.structures3d[i].isolated ? 1 : 0);
+        const InputNode& where =
+            storey >= 0 && storey < static_cast<int>(m.storey.size()) ? m.storey[storey] : *m.item;
+        problems.error_at(
+            where, "",
+            a.level + " of '" + a.name + "' at " + metres(a.elevation) + " has no floor of '" +
+                partner->name + "' at its level (nearest: " + partner->level + " at " +
+                metres(partner->elevation) + "), " + metres(std::max(0.0, nearest[i][j])) +
+                " away: it would pound that building's columns, which the model "
+                "does not represent (floors of pounding pairs must be at equal "
+                "levels)");
+      }
+    }
+
+  // Per structure: stiffness jumps, eccentric mass, bearings.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Building3DConfig& b = config.structures3d[i];
+    const StructureProperties& p = properties[i];
+    const StructureMarks& m = marks[i];
+    const auto storey_node = [&](int storey) -> const InputNode& {
+      if (storey >= 1 && storey <= static_cast<int>(m.storey.size())) return m.storey[storey - 1];
+      return *m.item;
+    };
+    for (std::size_t s = 0; s + 1 < p.storeys.size(); ++s) {
+      const StoreyProperties& lo = p.storeys[s];
+      const StoreyProperties& hi = p.storeys[s + 1];
+      if (lo.storey == 0) continue;  // the isolation layer is meant to be soft
+      for (const auto& [axis, k_lo, k_hi] :
+           {std::tuple{"x", lo.k_x, hi.k_x}, std::tuple{"y", lo.k_y, hi.k_y}}) {
+        const double ratio = std::max(k_lo / k_hi, k_hi / k_lo);
+        if (ratio > limits.stiffness_jump) {
+          problems.warning_at(storey_node(hi.storey), "",
+                              "storey stiffness jumps " + fmt("%.1f", ratio) + "x along " + axis +
+                                  " from " + lo.label + " (" + fmt("%.4g", k_lo / 1e6) +
+                                  " MN/m) to " + hi.label + " (" + fmt("%.4g", k_hi / 1e6) +
+                                  " MN/m): more than " + fmt("%g", limits.stiffness_jump) +
+                                  "x (a soft or stiff storey?)");
+          break;
+        }
+      }
+    }
+    for (const StoreyProperties& s : p.storeys) {
+      const bool ex = std::abs(s.eccentricity.x) > limits.eccentricity_ratio * s.r_x;
+      const bool ey = std::abs(s.eccentricity.y) > limits.eccentricity_ratio * s.r_y;
+      if (!ex && !ey) continue;
+      const InputNode& where = s.storey == 0 ? (m.base ? *m.base : *m.item) : storey_node(s.storey);
+      problems.warning_at(where, "",
+                          "very eccentric mass in " + s.label + " of '" + b.name + "': e = (" +
+                              metres(s.eccentricity.x) + ", " + metres(s.eccentricity.y) +
+                              ") between the centres of mass and stiffness, more than " +
+                              fmt("%.2f", limits.eccentricity_ratio) +
+                              " of the torsional radii (r_x " + metres(s.r_x) + ", r_y " +
+                              metres(s.r_y) + ") (EC8 4.2.3.2(6))");
+    }
+    if (b.isolated && !site.slabs.empty()) {
+      std::vector<Vec2> bearings;
+      for (const PlanSlab& slab : site.slabs)
+        if (slab.structure == static_cast<int>(i) && slab.level == "base")
+          for (const PlanBearing& br : slab.bearings) bearings.push_back(br.p_W);
+      const InputNode& where = m.bearings ? *m.bearings : (m.base ? *m.base : *m.item);
+      if (bearings.size() < 3) {
+        problems.warning_at(where, "",
+                            "only " + std::to_string(bearings.size()) + " bearing" +
+                                (bearings.size() == 1 ? "" : "s") + " under '" + b.name +
+                                "': fewer than 3 cannot resist torsion stably");
+      } else {
+        // Collinear: every bearing within 1e-6 of the slab's size of the line through the two
+        // farthest apart.
+        std::size_t ia = 0, ib = 1;
+        double far = -1;
+        for (std::size_t u = 0; u < bearings.size(); ++u)
+          for (std::size_t v = u + 1; v < bearings.size(); ++v) {
+            const Vec2 d = bearings[v] - bearings[u];
+            if (dot(d, d) > far) far = dot(d, d), ia = u, ib = v;
+          }
+        const Vec2 d = bearings[ib] - bearings[ia];
+        const double len = std::sqrt(far);
+        bool collinear = len > 0;
+        for (Vec2 q : bearings)
+          if (std::abs(cross(d, q - bearings[ia])) / len > 1e-6 * len) collinear = false;
+        if (collinear || len == 0)
+          problems.warning_at(where, "",
+                              "the bearings under '" + b.name +
+                                  "' stand on one line: the isolation layer has no torsional "
+                                  "stiffness about it");
+      }
+    }
+  }
+  return clearances;
+}
+
+void check_model2d(const ScannedModel& model, const CheckLimits& limits, ProblemList& problems) {
+  const ModelConfig& config = *model.config;
+  // Stiffness jumps of the main building's storeys.
+  const BuildingConfig& b = config.building;
+  for (std::size_t s = 0; s + 1 < b.floors.size(); ++s) {
+    const double k_lo = b.floors[s].stiffness, k_hi = b.floors[s + 1].stiffness;
+    const double ratio = std::max(k_lo / k_hi, k_hi / k_lo);
+    if (ratio <= limits.stiffness_jump || !model.floors) continue;
+    const InputNode& where =
+        model.floors->is_sequence() ? model.floors->elements()[s + 1] : *model.floors;
+    problems.warning_at(where, "",
+                        "storey stiffness jumps " + fmt("%.1f", ratio) + "x from storey " +
+                            std::to_string(s + 1) + " (" + fmt("%.4g", k_lo / 1e6) +
+                            " MN/m) to storey " + std::to_string(s + 2) + " (" +
+                            fmt("%.4g", k_hi / 1e6) + " MN/m): more than " +
+                            fmt("%g", limits.stiffness_jump) + "x (a soft or stiff storey?)");
+  }
+  // Neighbours: every level of one within the other's height needs a partner (pounding2d.cpp
+  // pairs levels within 1 mm).
+  const auto elevations = [](const BuildingConfig& x) {
+    std::vector<double> z;
+    double e = 0.0;
+    for (const FloorConfig& f : x.floors) z.push_back(e += f.height);
+    return z;
+  };
+  const std::vector<double> z_main = elevations(b);
+  for (std::size_t k = 0; k < config.neighbours.size() && k < model.neighbours.size(); ++k) {
+    const BuildingConfig& nb = config.neighbours[k].building;
+    const std::vector<double> z_other = elevations(nb);
+    for (int pass = 0; pass < 2; ++pass) {
+      const std::vector<double>& za = pass == 0 ? z_main : z_other;
+      const std::vector<double>& zb = pass == 0 ? z_other : z_main;
+      const std::string& na = pass == 0 ? b.name : nb.name;
+      const std::string& nbn = pass == 0 ? nb.name : b.name;
+      for (std::size_t f = 0; f < za.size(); ++f) {
+        if (za[f] > zb.back() + kLevelTolerance2D) continue;
+        double dz = 1e300, nearest = 0;
+        for (double z : zb)
+          if (std::abs(z - za[f]) < dz) dz = std::abs(z - za[f]), nearest = z;
+        if (dz <= kLevelTolerance2D) continue;
+        problems.error_at(model.neighbours[k], "",
+                          "floor " + std::to_string(f + 1) + " of '" + na + "' at " +
+                              metres(za[f]) + " has no floor of '" + nbn +
+                              "' at its level (nearest " + metres(nearest) +
+                              "): it would pound that building's columns, which the model does "
+                              "not represent (floors of pounding pairs must be at equal levels)");
+      }
+    }
+  }
+}
+
+}  // namespace isopound::pre

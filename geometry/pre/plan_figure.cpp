@@ -1,0 +1,312 @@
+// The plan figure: layout (equal scale in x and y, legend at the right, scale bar below), then
+// shapes in drawing order (walls, slabs, bearings, columns, markers), dimension lines and text.
+#include "geometry/pre/plan_figure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+
+namespace isopound::pre {
+namespace {
+
+using post::Point2;
+using post::Rgb;
+
+constexpr double kLegendWidth = 330;  // px
+constexpr double kMargin = 50;        // px
+constexpr double kTitleHeight = 50;   // px
+constexpr double kBottom = 90;        // px: scale bar
+
+Rgb tint(Rgb c, double f) {
+  const auto mix = [f](unsigned char v) {
+    return static_cast<unsigned char>(std::lround(v + f * (255 - v)));
+  };
+  return {mix(c.r), mix(c.g), mix(c.b)};
+}
+
+std::vector<Point2> circle(Point2 c, double r, int n = 16) {
+  std::vector<Point2> out;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * std::numbers::pi * k / n;
+    out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+  }
+  return out;
+}
+
+std::vector<Point2> square(Point2 c, double r) {
+  return {{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y + r}, {c.x - r, c.y + r}};
+}
+
+std::string length_text(double m) {
+  char buf[64];
+  if (std::abs(m) < 1.0)
+    std::snprintf(buf, sizeof buf, "%.1f cm", 100 * m);
+  else
+    std::snprintf(buf, sizeof buf, "%.2f m", m);
+  return buf;
+}
+
+// 1, 2 or 5 times a power of ten, at most `max`.
+double nice_length(double max) {
+  const double p = std::pow(10.0, std::floor(std::log10(max)));
+  for (double f : {5.0, 2.0, 1.0})
+    if (f * p <= max) return f * p;
+  return p;
+}
+
+void arrow(post::Figure& f, Point2 from, Point2 to, Rgb colour, double width) {
+  f.lines.push_back({{from, to}, colour, width});
+  const double a = std::atan2(to.y - from.y, to.x - from.x), h = 14;
+  for (double s : {-1.0, 1.0})
+    f.lines.push_back({{to, {to.x - h * std::cos(a + s * 0.4), to.y - h * std::sin(a + s * 0.4)}},
+                       colour,
+                       width});
+}
+
+}  // namespace
+
+Rgb slab_fill(int structure) {
+  return tint(post::series_colour(structure), 0.72);
+}
+
+post::Figure plan_figure(const Site& site, const std::vector<StructureProperties>& properties,
+                         const std::vector<Clearance>& clearances, const PlanOptions& options,
+                         PlanView* view_out) {
+  post::Figure f;
+  f.width = options.width;
+  f.height = options.height;
+
+  // Extent of everything drawn, and the scale that fits it into the plot area.
+  Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
+  const auto grow = [&](Vec2 p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  };
+  for (const PlanSlab& s : site.slabs)
+    for (Vec2 p : s.plan_W) grow(p);
+  for (const PlanWall& w : site.walls)
+    for (Vec2 p : w.plan_W) grow(p);
+  for (const PlanColumn& c : site.ground_columns)
+    for (Vec2 p : c.outline_W()) grow(p);
+  if (lo.x > hi.x) lo = hi = {0, 0};
+  const double pad = 0.08 * std::max({hi.x - lo.x, hi.y - lo.y, 1.0});
+  lo = lo - Vec2{pad, pad};
+  hi = hi + Vec2{pad, pad};
+  const double plot_w = f.width - kLegendWidth - 2 * kMargin;
+  const double plot_h = f.height - kTitleHeight - kBottom;
+  PlanView view;
+  view.scale = std::min(plot_w / (hi.x - lo.x), plot_h / (hi.y - lo.y));
+  view.origin_W = 0.5 * (lo + hi);
+  view.origin_px = {kMargin + plot_w / 2, kBottom + plot_h / 2};
+  if (view_out) *view_out = view;
+  const auto px = [&](Vec2 p) { return view.to_px(p); };
+  const auto px_all = [&](const std::vector<Vec2>& v) {
+    std::vector<Point2> out;
+    for (Vec2 p : v) out.push_back(px(p));
+    return out;
+  };
+  const auto closed = [&](const std::vector<Vec2>& v) {
+    std::vector<Point2> out = px_all(v);
+    out.push_back(out.front());
+    return out;
+  };
+
+  // Walls, slabs (lowest level first), bearings, columns.
+  for (const PlanWall& w : site.walls) f.polygons.push_back({px_all(w.plan_W), kWallColour});
+  std::vector<const PlanSlab*> slabs;
+  for (const PlanSlab& s : site.slabs) slabs.push_back(&s);
+  std::stable_sort(slabs.begin(), slabs.end(), [](const PlanSlab* a, const PlanSlab* b) {
+    return a->elevation < b->elevation;
+  });
+  for (const PlanSlab* s : slabs)
+    f.polygons.push_back({px_all(s->plan_W), slab_fill(s->structure)});
+  for (const PlanSlab* s : slabs) {
+    const Rgb edge = post::series_colour(s->structure);
+    f.lines.push_back({closed(s->plan_W), edge, s->level_index == 0 ? 2.5 : 1.0});
+  }
+  for (const PlanSlab& s : site.slabs)
+    for (const PlanBearing& b : s.bearings)
+      f.polygons.push_back({circle(px(b.p_W), std::max(6.0, 0.35 * view.scale)), kBearingColour});
+  const auto draw_column = [&](const PlanColumn& c) {
+    // At least 5 px across so that it shows; its orientation from the axis-1 tick.
+    const double grow_by = std::max(1.0, 5.0 / (view.scale * std::min(c.b, c.h)));
+    PlanColumn big = c;
+    big.b *= grow_by;
+    big.h *= grow_by;
+    f.polygons.push_back({px_all(big.outline_W()), kColumnColour});
+    // Axis 1 as a white stroke through it (the orientation of a square section).
+    const Vec2 a1{std::cos(c.orientation), std::sin(c.orientation)};
+    f.lines.push_back(
+        {{px(c.p_W - 0.45 * big.b * a1), px(c.p_W + 0.45 * big.b * a1)}, {255, 255, 255}, 1.5});
+  };
+  for (const PlanSlab& s : site.slabs)
+    for (const PlanColumn& c : s.columns) draw_column(c);
+  for (const PlanColumn& c : site.ground_columns) draw_column(c);
+
+  // Centres of mass and stiffness (per structure: the whole mass; the bearings' or storey 1's
+  // centre of stiffness).
+  for (std::size_t i = 0; i < properties.size(); ++i) {
+    const StructureProperties& p = properties[i];
+    if (p.storeys.empty()) continue;
+    double m = 0;
+    Vec2 cm;
+    for (const DiaphragmProperties& d : p.diaphragms) {
+      m += d.mass;
+      cm = cm + d.mass * d.p_WM;
+    }
+    cm = (1.0 / m) * cm;
+    const Point2 s = px(p.storeys.front().p_WS), c = px(cm);
+    std::vector<Point2> frame = square(s, 10);
+    frame.push_back(frame.front());
+    f.lines.push_back({frame, kStiffnessColour, 3});
+    f.polygons.push_back({circle(c, 6), kMassColour});
+    f.texts.push_back({{s.x + 10, s.y - 10},
+                       "CS",
+                       12,
+                       kStiffnessColour,
+                       post::HAlign::kLeft,
+                       post::VAlign::kTop});
+    f.texts.push_back(
+        {{c.x + 10, c.y + 10}, "CM", 12, kMassColour, post::HAlign::kLeft, post::VAlign::kBottom});
+  }
+  // Structure names above their top-left corner.
+  std::map<int, Vec2> name_at;
+  for (const PlanSlab& s : site.slabs) {
+    Vec2 top{-1e300, -1e300};
+    for (Vec2 p : s.plan_W)
+      if (p.y > top.y || (p.y == top.y && p.x < top.x)) top = p;
+    name_at[s.structure] = top;
+  }
+  for (const auto& [i, p] : name_at) {
+    std::string name;
+    for (const PlanSlab& s : site.slabs)
+      if (s.structure == i) name = s.name;
+    const Point2 q = px(p);
+    f.texts.push_back({{q.x, q.y + 14},
+                       name,
+                       14,
+                       post::series_colour(i),
+                       post::HAlign::kLeft,
+                       post::VAlign::kBottom,
+                       0.0,
+                       true});
+  }
+
+  // Gaps: one dimension per pair of bodies and side (the lowest level), ticks at both faces.
+  std::map<std::string, const Clearance*> gaps;
+  for (const Clearance& c : clearances) {
+    if (!(c.measured > 0) || c.measured > options.max_dimensioned_gap) continue;
+    const std::string a = c.a.substr(0, c.a.find('/')), b = c.b.substr(0, c.b.find('/'));
+    const std::string key = a + "|" + b + "|" + c.side;
+    if (!gaps.count(key) || c.elevation < gaps[key]->elevation) gaps[key] = &c;
+  }
+  const Rgb dim{0, 0, 0};
+  for (const auto& [key, c] : gaps) {
+    const Point2 a = px(c->p_WA), b = px(c->p_WB);
+    double dx = b.x - a.x, dy = b.y - a.y;
+    const double len = std::hypot(dx, dy);
+    dx = len > 0 ? dx / len : 1;
+    dy = len > 0 ? dy / len : 0;
+    // Extend the dimension line 12 px beyond both faces, so that a small gap still shows.
+    f.lines.push_back({{{a.x - 12 * dx, a.y - 12 * dy}, {b.x + 12 * dx, b.y + 12 * dy}}, dim, 1.5});
+    for (Point2 e : {a, b})
+      f.lines.push_back({{{e.x - 6 * dy, e.y + 6 * dx}, {e.x + 6 * dy, e.y - 6 * dx}}, dim, 1.5});
+    const Point2 mid{0.5 * (a.x + b.x) + 16 * dx - 14 * dy, 0.5 * (a.y + b.y) + 16 * dy + 14 * dx};
+    std::string label = length_text(c->measured);
+    if (c->declared >= 0) label += " (declared " + length_text(c->declared) + ")";
+    f.texts.push_back({mid, label, 12, dim, dx >= 0 ? post::HAlign::kLeft : post::HAlign::kRight,
+                       post::VAlign::kBottom});
+  }
+
+  // Scale bar below the plot.
+  const double bar_m = nice_length(0.25 * plot_w / view.scale);
+  const double bar_px = bar_m * view.scale;
+  const Point2 s0{kMargin, 45}, s1{kMargin + bar_px, 45};
+  f.polygons.push_back(
+      {{{s0.x, s0.y}, {s0.x + bar_px / 2, s0.y}, {s0.x + bar_px / 2, s0.y + 8}, {s0.x, s0.y + 8}},
+       {0, 0, 0}});
+  f.lines.push_back({{s0, s1, {s1.x, s1.y + 8}, {s0.x, s0.y + 8}, s0}, {0, 0, 0}, 1.5});
+  f.texts.push_back({{s0.x, 30}, "0", 12, {0, 0, 0}});
+  char bar_label[32];
+  std::snprintf(bar_label, sizeof bar_label, "%g m", bar_m);
+  f.texts.push_back({{s1.x, 30}, bar_label, 12, {0, 0, 0}});
+  f.texts.push_back(
+      {{s1.x + 50, 49}, "x: east, y: north (plan frame W)", 12, {60, 60, 60}, post::HAlign::kLeft});
+
+  // Legend.
+  const double lx = f.width - kLegendWidth + 10;
+  double ly = f.height - kTitleHeight - 20;
+  const auto entry = [&](const std::vector<Point2>& swatch, Rgb colour, const std::string& text) {
+    std::vector<Point2> moved;
+    for (Point2 p : swatch) moved.push_back({lx + 12 + p.x, ly + p.y});
+    if (!moved.empty()) f.polygons.push_back({moved, colour});
+    f.texts.push_back({{lx + 34, ly}, text, 13, {0, 0, 0}, post::HAlign::kLeft});
+    ly -= 28;
+  };
+  for (const auto& [i, p] : name_at) {
+    std::string name;
+    for (const PlanSlab& s : site.slabs)
+      if (s.structure == i) name = s.name;
+    entry(square({0, 0}, 9), slab_fill(i), "slabs of " + name);
+  }
+  if (!site.walls.empty()) entry(square({0, 0}, 9), kWallColour, "wall");
+  entry(square({0, 0}, 4), kColumnColour, "column (b x h, oriented)");
+  entry(circle({0, 0}, 6), kBearingColour, "bearing");
+  entry(circle({0, 0}, 7), kMassColour, "CM: centre of mass (all floors)");
+  entry({}, kStiffnessColour, "CS: centre of stiffness");
+  {
+    std::vector<Point2> frame = square({lx + 12, ly + 28}, 8);
+    frame.push_back(frame.front());
+    f.lines.push_back({frame, kStiffnessColour, 3});
+  }
+  f.texts.push_back({{lx + 34, ly + 12},
+                     "(bearings; fixed base: storey 1)",
+                     11,
+                     {60, 60, 60},
+                     post::HAlign::kLeft,
+                     post::VAlign::kTop});
+  ly -= 28;
+  if (!gaps.empty()) {
+    f.lines.push_back({{{lx, ly}, {lx + 24, ly}}, dim, 1.5});
+    f.texts.push_back(
+        {{lx + 34, ly}, "gap at rest (measured)", 13, {0, 0, 0}, post::HAlign::kLeft});
+    ly -= 28;
+  }
+  // L direction of the record pair (the arrow below the legend).
+  if (options.angle) {
+    const double a = *options.angle;
+    const Point2 base{lx + 90, ly - 110};
+    const Point2 tip{base.x + 70 * std::cos(a), base.y + 70 * std::sin(a)};
+    const Point2 t_tip{base.x - 45 * std::sin(a), base.y + 45 * std::cos(a)};
+    arrow(f, base, tip, {150, 0, 150}, 3);
+    arrow(f, base, t_tip, {150, 0, 150}, 1);
+    f.texts.push_back({{tip.x + 14 * std::cos(a), tip.y + 14 * std::sin(a)},
+                       "L",
+                       14,
+                       {150, 0, 150},
+                       post::HAlign::kCentre,
+                       post::VAlign::kCentre,
+                       0,
+                       true});
+    f.texts.push_back(
+        {{t_tip.x - 12 * std::sin(a), t_tip.y + 12 * std::cos(a)}, "T", 12, {150, 0, 150}});
+    char text[64];
+    std::snprintf(text, sizeof text, "record L at %.1f\u00b0 from x (T at +90\u00b0)",
+                  *options.angle * 180 / std::numbers::pi);
+    f.lines.push_back({{{lx, ly}, {lx + 24, ly}}, {150, 0, 150}, 3});
+    f.texts.push_back({{lx + 34, ly}, text, 13, {0, 0, 0}, post::HAlign::kLeft});
+  }
+  f.texts.push_back({{f.width / 2.0, f.height - 25.0},
+                     options.title,
+                     16,
+                     {0, 0, 0},
+                     post::HAlign::kCentre,
+                     post::VAlign::kCentre,
+                     0,
+                     true});
+  return f;
+}
+
+}  // namespace isopound::pre

@@ -1,0 +1,94 @@
+// The site in plan from a model's 3D structures: slabs, columns, bearings placed in frame W by
+// each building's (position, rotation), as the solver's building3d.cpp places them.
+#include "geometry/pre/site_plan.h"
+
+#include <cmath>
+#include <span>
+
+#include "solver/structures/building3d.h"
+#include "solver/structures/config3d.h"
+
+namespace isopound::pre {
+
+void column_rectangle(double I11, double I22, double& b, double& h) {
+  // (b h^3)(h b^3) = (bh)^4 = 144 I11 I22 and I11 / I22 = (h / b)^2.
+  const double area = std::pow(144.0 * I11 * I22, 0.25);
+  const double ratio = std::sqrt(I11 / I22);  // h / b
+  b = std::sqrt(area / ratio);
+  h = area / b;
+}
+
+std::vector<Vec2> PlanColumn::outline_W() const {
+  const double c = std::cos(orientation), s = std::sin(orientation);
+  const Vec2 a1{c, s}, a2{-s, c};
+  return {p_W - 0.5 * b * a1 - 0.5 * h * a2, p_W + 0.5 * b * a1 - 0.5 * h * a2,
+          p_W + 0.5 * b * a1 + 0.5 * h * a2, p_W - 0.5 * b * a1 + 0.5 * h * a2};
+}
+
+namespace {
+
+PlanColumn plan_column(const Building3DConfig& b, const Column3DConfig& c) {
+  PlanColumn p;
+  p.label = c.label;
+  p.p_W = to_plan(b, c.position);
+  p.orientation = c.orientation + b.rotation;
+  column_rectangle(c.I11, c.I22, p.b, p.h);
+  return p;
+}
+
+PlanSlab plan_slab(int index, const Building3DConfig& b, const Diaphragm3DConfig& d,
+                   std::string level, int level_index, double elevation) {
+  PlanSlab s;
+  s.structure = index;
+  s.name = b.name;
+  s.level = std::move(level);
+  s.level_index = level_index;
+  s.elevation = elevation;
+  for (Vec2 p : d.plan) s.plan_W.push_back(to_plan(b, p));
+  s.mass = d.mass;
+  const AreaProperties a = area_properties(ConvexPolygon(std::span<const Vec2>(d.plan)));
+  s.p_WM = to_plan(b, a.p_WC + d.eccentricity);
+  return s;
+}
+
+}  // namespace
+
+Site site_plan(const ModelConfig& config) {
+  Site site;
+  for (std::size_t i = 0; i < config.structures3d.size(); ++i) {
+    const Building3DConfig& b = config.structures3d[i];
+    const int index = static_cast<int>(i);
+    double z = 0.0;
+    int level = 0;
+    if (b.isolated) {
+      PlanSlab base = plan_slab(index, b, b.base, "base", level++, 0.0);
+      if (b.bearings.empty()) {
+        for (const Column3DConfig& c : b.storeys.front().columns)
+          base.bearings.push_back({c.label, to_plan(b, c.position)});
+      } else {
+        for (const Bearing3DConfig& br : b.bearings)
+          base.bearings.push_back({br.label, to_plan(b, br.position)});
+      }
+      for (const Column3DConfig& c : b.storeys.front().columns)
+        base.columns.push_back(plan_column(b, c));
+      site.slabs.push_back(base);
+    } else {
+      for (const Column3DConfig& c : b.storeys.front().columns) {
+        site.ground_columns.push_back(plan_column(b, c));
+        site.ground_columns_structure.push_back(index);
+      }
+    }
+    for (std::size_t s = 0; s < b.storeys.size(); ++s) {
+      z += b.storeys[s].height;
+      PlanSlab floor =
+          plan_slab(index, b, b.storeys[s].floor, "floor " + std::to_string(s + 1), level++, z);
+      if (s + 1 < b.storeys.size())
+        for (const Column3DConfig& c : b.storeys[s + 1].columns)
+          floor.columns.push_back(plan_column(b, c));
+      site.slabs.push_back(floor);
+    }
+  }
+  return site;
+}
+
+}  // namespace isopound::pre

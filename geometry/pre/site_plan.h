@@ -1,0 +1,63 @@
+// The site in plan as isopound-pre draws and meshes it: every slab (base slab and floors) of every
+// 3D structure, its columns and bearings, and the walls, in the model's plan frame W (SI).
+// Elevations: the base slab of an isolated building at 0, floor k at the sum of storey heights.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polygon.h"
+#include "solver/structures/config.h"
+
+namespace isopound::pre {
+
+// A column drawn as the rectangle b x h (along its axes 1 and 2) with the column's I11 and I22
+// (b h^3 / 12 and h b^3 / 12: exact for a rectangular section, an equivalent one otherwise).
+struct PlanColumn {
+  std::string label;
+  Vec2 p_W;
+  double b = 0.0, h = 0.0;              // m
+  double orientation = 0.0;             // rad, axis 1 from x, plan frame
+  std::vector<Vec2> outline_W() const;  // 4 corners, counter-clockwise
+};
+
+struct PlanBearing {
+  std::string label;
+  Vec2 p_W;
+};
+
+struct PlanSlab {
+  int structure = 0;       // index in ModelConfig::structures3d
+  std::string name;        // the structure's name
+  std::string level;       // "base", "floor 1", ...
+  int level_index = 0;     // 0 = the lowest slab of the structure
+  double elevation = 0.0;  // m
+  std::vector<Vec2> plan_W;
+  double mass = 0.0;                  // kg
+  Vec2 p_WM;                          // centre of mass
+  std::vector<PlanColumn> columns;    // the columns standing on this slab (the storey above)
+  std::vector<PlanBearing> bearings;  // base slab only
+};
+
+struct PlanWall {
+  std::string name;           // "wall east"
+  std::string structure;      // the building whose base slab it surrounds
+  std::string side;           // "east", ...
+  double declared_gap = 0.0;  // m, as written
+  double height = 0.0;
+  std::vector<Vec2> plan_W;
+};
+
+struct Site {
+  std::vector<PlanSlab> slabs;
+  std::vector<PlanColumn> ground_columns;  // storey-1 columns of fixed-base buildings (z = 0)
+  std::vector<int> ground_columns_structure;
+  std::vector<PlanWall> walls;
+};
+
+Site site_plan(const ModelConfig& config);
+
+// Equivalent rectangle b x h of a column with I11 = b h^3 / 12 and I22 = h b^3 / 12.
+void column_rectangle(double I11, double I22, double& b, double& h);
+
+}  // namespace isopound::pre
