@@ -24,7 +24,7 @@ std::string fmt(const char* f, double v) {
 }
 
 std::string metres(double v) {
-  return fmt("%.3f m", v);
+  return fmt("%.3f m", std::abs(v) < 5e-4 ? 0.0 : v);  // no "-0.000 m"
 }
 
 ConvexPolygon polygon(const std::vector<Vec2>& v) {
@@ -101,6 +101,34 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
         if (sep.distance > 0) closest_points(a.plan_W, b.plan_W, c.p_WA, c.p_WB);
         clearances.push_back(c);
       }
+    }
+  // Pairs of structures with no slabs at equal levels: their nearest approach (any levels).
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      bool listed = false;
+      for (const Clearance& c : clearances)
+        listed = listed || (c.a.rfind(config.structures3d[i].name + "/", 0) == 0 &&
+                            c.b.rfind(config.structures3d[j].name + "/", 0) == 0);
+      if (listed) continue;
+      const PlanSlab *best_a = nullptr, *best_b = nullptr;
+      Separation best{1e300, {}};
+      for (const PlanSlab& a : site.slabs)
+        for (const PlanSlab& b : site.slabs) {
+          if (a.structure != static_cast<int>(i) || b.structure != static_cast<int>(j)) continue;
+          const Separation sep = separation_of(polygon(a.plan_W), polygon(b.plan_W));
+          if (sep.distance < best.distance) best = sep, best_a = &a, best_b = &b;
+        }
+      if (!best_a) continue;
+      Clearance c{best_a->name + "/" + best_a->level,
+                  best_b->name + "/" + best_b->level,
+                  side_name(best.n_AB),
+                  best.distance,
+                  -1.0,
+                  best_a->elevation,
+                  {},
+                  {}};
+      if (best.distance > 0) closest_points(best_a->plan_W, best_b->plan_W, c.p_WA, c.p_WB);
+      clearances.push_back(c);
     }
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
@@ -232,8 +260,8 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
         if (collinear || len == 0)
           problems.warning_at(where, "",
                               "the bearings under '" + b.name +
-                                  "' stand on one line: the isolation layer has no torsional "
-                                  "stiffness about it");
+                                  "' stand on one line (fewer than 3 positions not collinear): "
+                                  "torsion is resisted only by their spread along it");
       }
     }
   }
@@ -248,7 +276,8 @@ void check_model2d(const ScannedModel& model, const CheckLimits& limits, Problem
     const double k_lo = b.floors[s].stiffness, k_hi = b.floors[s + 1].stiffness;
     const double ratio = std::max(k_lo / k_hi, k_hi / k_lo);
     if (ratio <= limits.stiffness_jump || !model.floors) continue;
-    const InputNode& where =
+    // A copy: elements() is a temporary vector.
+    const InputNode where =
         model.floors->is_sequence() ? model.floors->elements()[s + 1] : *model.floors;
     problems.warning_at(where, "",
                         "storey stiffness jumps " + fmt("%.1f", ratio) + "x from storey " +

@@ -70,7 +70,9 @@ void write_text(const fs::path& path, const std::string& text) {
 }
 
 std::string clearances_text(const std::vector<Clearance>& clearances) {
-  std::string out = "Clearances at rest (measured between plan outlines at equal levels):\n";
+  std::string out =
+      "Clearances at rest (measured between plan outlines: floors at equal levels, else the "
+      "nearest approach):\n";
   char line[400];
   for (const Clearance& c : clearances) {
     std::snprintf(line, sizeof line, "  %-28s %-6s of it: %-28s %9.4f m", c.a.c_str(),

@@ -1,0 +1,276 @@
+// Every check of isopound-pre with a model that fails it and the expected message (file:line and
+// key), and a model with five problems that prints all five.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "pre_test_support.h"
+
+namespace isopound::pre::test {
+namespace {
+
+// A one-storey 6 x 6 m building "a" (lines 1-14), isolated on bearings under its columns.
+const std::string kColumns = R"(          - {at: [-3 m, -3 m]}
+          - {at: [3 m, -3 m]}
+          - {at: [3 m, 3 m]}
+          - {at: [-3 m, 3 m]}
+)";
+std::string building_a(const std::string& columns = kColumns, const std::string& tail = "") {
+  return R"(structures:
+  - name: a
+    plan: {rectangle: [6 m, 6 m]}
+    columns: {section: [40 cm, 40 cm], E: 30 GPa, nu: 0.2}
+    storeys:
+      - height: 3 m
+        mass: 100 t
+        columns:
+)" + columns +
+         R"(    base: {mass: 100 t}
+    bearing: {model: linear, Tb: 2 s}
+)" + tail;
+}
+
+// A fixed-base one-storey building "b" at `position`, storey height `height`.
+std::string building_b(const std::string& position, const std::string& height,
+                       const std::string& plan = "{rectangle: [6 m, 6 m]}") {
+  return R"(  - name: b
+    isolated: false
+    position: )" +
+         position + R"(
+    plan: )" +
+         plan + R"(
+    columns: {section: [40 cm, 40 cm], E: 30 GPa, nu: 0.2}
+    damping: {type: none}
+    storeys:
+      - height: )" +
+         height + R"(
+        mass: 100 t
+        columns: [{at: [-2 m, -2 m]}, {at: [2 m, -2 m]}, {at: [2 m, 2 m]}, {at: [-2 m, 2 m]}]
+)";
+}
+
+struct PreRun {
+  int exit_code;
+  std::string output;
+  std::string file;
+};
+
+PreRun check(const std::string& name, const std::string& yaml) {
+  const auto dir = scratch_dir("checks-" + name);
+  const std::string path = write_model(dir, yaml);
+  const auto r = run_pre(path + " -o " + (dir / "out").string() + " --no-plan");
+  std::filesystem::remove_all(dir);
+  return {r.exit_code, r.output, path};
+}
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(PreChecks, ACleanModelPasses) {
+  const PreRun r = check("clean", building_a());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("0 errors, 0 warnings"), std::string::npos) << r.output;
+}
+
+TEST(PreChecks, SlabNotConvex) {
+  const PreRun r =
+      check("convex",
+            building_a() +
+                building_b(
+                    "[20 m, 0 m]", "3 m",
+                    "{polygon: [[-3 m, -3 m], [3 m, -3 m], [3 m, 3 m], [0 m, 1 m], [-3 m, 3 m]]}"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  // The dent (vertex 4, on line 18) is named like the solver names it.
+  EXPECT_NE(r.output.find("error: " + r.file + ":18:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("structures[1].plan.polygon[3]: not a convex polygon"), std::string::npos)
+      << r.output;
+}
+
+TEST(PreChecks, SlabDegenerate) {
+  const PreRun r = check(
+      "degenerate", building_a() + building_b("[20 m, 0 m]", "3 m",
+                                              "{polygon: [[0 m, 0 m], [3 m, 0 m], [6 m, 0 m]]}"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("not a convex polygon"), std::string::npos) << r.output;
+}
+
+TEST(PreChecks, ColumnOutsideItsSlab) {
+  std::string cols = kColumns;
+  cols.replace(cols.find("[3 m, 3 m]"), 10, "[3 m, 3.5 m]");
+  const PreRun r = check("column", building_a(cols));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("error: " + r.file + ":11:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("structures[0].storeys[0].columns[2].at: column C3 (and the bearing "
+                          "under it) is outside the base slab's plan"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(PreChecks, BearingOutsideTheBaseSlab) {
+  const PreRun r = check("bearing", building_a(kColumns, R"(    bearings:
+      - {at: [-3 m, -3 m]}
+      - {at: [3.2 m, -3 m]}
+      - {at: [3 m, 3 m]}
+)"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(r.file + ":17:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("structures[0].bearings[1].at: bearing B2 is outside the base slab's "
+                          "plan"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(PreChecks, StructuresOverlapAtRest) {
+  const PreRun r = check("overlap", building_a() + building_b("[5 m, 0 m]", "3 m"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  // a spans x in [-3, 3], b in [2, 8]: 1 m x 6 m in common, 1 m deep.
+  EXPECT_NE(r.output.find("structures[1].position: structures 'a' and 'b' overlap at rest"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("share 6.000 m2 (1.000 m deep)"), std::string::npos) << r.output;
+}
+
+TEST(PreChecks, FloorsOfPoundingPairsAtDifferentLevels) {
+  // b 0.5 m east of a, its floor at 3.5 m against a's at 3.0 m.
+  const PreRun r = check("levels", building_a() + building_b("[6.5 m, 0 m]", "3.5 m"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(r.file + ":6:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("floor 1 of 'a' at 3.000 m has no floor of 'b' at its level (nearest: "
+                          "floor 1 at 3.500 m), 0.500 m away"),
+            std::string::npos)
+      << r.output;
+  // The clearance is measured and printed per side.
+  EXPECT_NE(r.output.find("b/floor 1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("east"), std::string::npos);
+  // Far apart (beyond 1 m), the same levels are no pounding pair.
+  const PreRun far = check("levels-far", building_a() + building_b("[8 m, 0 m]", "3.5 m"));
+  EXPECT_EQ(far.exit_code, 0) << far.output;
+}
+
+TEST(PreChecks, MassesStiffnessesHeightsPositive) {
+  std::string yaml = building_a();
+  yaml.replace(yaml.find("mass: 100 t"), 11, "mass: -100 t");
+  const PreRun r = check("positive", yaml);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(r.file + ":7:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("structures[0].storeys[0].mass: must be > 0"), std::string::npos)
+      << r.output;
+  std::string h = building_a();
+  h.replace(h.find("height: 3 m"), 11, "height: 0 m");
+  const PreRun rh = check("positive-h", h);
+  EXPECT_NE(rh.output.find("structures[0].storeys[0].height: must be > 0"), std::string::npos)
+      << rh.output;
+}
+
+TEST(PreChecks, StoreyStiffnessJumpWarns) {
+  // Storey 2 with 80 cm columns: k ~ b^4, (80/40)^4 = 16 times storey 1.
+  const std::string yaml = building_a() + R"(      - height: 3 m
+        mass: 100 t
+        columns:
+          - {at: [-3 m, -3 m], section: [80 cm, 80 cm]}
+          - {at: [3 m, -3 m], section: [80 cm, 80 cm]}
+          - {at: [3 m, 3 m], section: [80 cm, 80 cm]}
+          - {at: [-3 m, 3 m], section: [80 cm, 80 cm]}
+)";
+  // Insert storey 2 into the storeys list (before base:).
+  std::string model = building_a();
+  model.insert(model.find("    base:"), yaml.substr(building_a().size()));
+  const PreRun r = check("jump", model);
+  EXPECT_EQ(r.exit_code, 0) << r.output;  // a warning only
+  EXPECT_NE(r.output.find("warning: " + r.file + ":13:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("storey stiffness jumps 16.0x along x from storey 1"), std::string::npos)
+      << r.output;
+}
+
+TEST(PreChecks, VeryEccentricMassWarns) {
+  std::string model = building_a();
+  model.insert(model.find("    storeys:"), "    eccentricity: [2.5 m, 0 m]\n");
+  const PreRun r = check("eccentric", model);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  // Columns at the corners: r = sqrt(sum k (x^2 + y^2) / sum k + GJ/h terms) ~ 4.3 m; 2.5 m is
+  // more than 0.30 r.
+  EXPECT_NE(r.output.find("very eccentric mass in storey 1 of 'a': e = (2.500 m, 0.000 m)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("very eccentric mass in isolation of 'a'"), std::string::npos);
+}
+
+TEST(PreChecks, FewOrCollinearBearingsWarn) {
+  const PreRun two = check("two-bearings", building_a(kColumns, R"(    bearings:
+      - {at: [-3 m, -3 m]}
+      - {at: [3 m, 3 m]}
+)"));
+  EXPECT_EQ(two.exit_code, 0) << two.output;
+  EXPECT_NE(two.output.find(two.file + ":15:"), std::string::npos) << two.output;
+  EXPECT_NE(two.output.find("only 2 bearings under 'a'"), std::string::npos) << two.output;
+  const PreRun line = check("collinear", building_a(kColumns, R"(    bearings:
+      - {at: [-3 m, 0 m]}
+      - {at: [0 m, 0 m]}
+      - {at: [3 m, 0 m]}
+)"));
+  EXPECT_EQ(line.exit_code, 0) << line.output;
+  EXPECT_NE(line.output.find("the bearings under 'a' stand on one line"), std::string::npos)
+      << line.output;
+}
+
+TEST(PreChecks, FiveProblemsPrintAllFive) {
+  std::string cols = kColumns;
+  cols.replace(cols.find("[-3 m, 3 m]"), 11, "[-3.5 m, 3 m]");  // 1: column outside
+  const std::string model =
+      building_a(cols, R"(    bearings:
+      - {at: [-3 m, -3 m]}
+      - {at: [3 m, -3 m]}
+      - {at: [3 m, 3 m]}
+      - {at: [-3 m, 4 m]}
+)") +  // 2: bearing outside
+      // 3: b's plan not convex, 4: b overlaps a, 5: b's floor at 3.5 m against a's at 3 m.
+      building_b("[5 m, 0 m]", "3.5 m",
+                 "{polygon: [[-3 m, -3 m], [3 m, -3 m], [3 m, 3 m], [0 m, 1 m], [-3 m, 3 m]]}");
+  const PreRun r = check("five", model);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("5 errors"), std::string::npos) << r.output;
+  EXPECT_EQ(count(r.output, "error: " + r.file + ":"), 5) << r.output;
+  for (const char* what : {"column C4 of storey 1 is outside its slab's plan",
+                           "bearing B4 is outside the base slab's plan", "not a convex polygon",
+                           "overlap at rest", "has no floor of 'b' at its level"})
+    EXPECT_EQ(count(r.output, what), 1) << what << "\n" << r.output;
+}
+
+// 2D models: the checks that apply (stiffness jumps, neighbour floors at equal levels).
+TEST(PreChecks, TwoDimensionalModels) {
+  const PreRun clean = check("2d", R"(building:
+  name: a
+  base: {mass: 340 t}
+  floors: {count: 3, mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}
+)");
+  EXPECT_EQ(clean.exit_code, 0) << clean.output;
+  EXPECT_NE(clean.output.find("Fixed-base superstructure"), std::string::npos) << clean.output;
+  const PreRun r = check("2d-problems", R"(building:
+  name: a
+  base: {mass: 340 t}
+  floors:
+    - {mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}
+    - {mass: 340 t, stiffness: 100 MN/m, height: 3.2 m}
+neighbours:
+  - side: right
+    gap: 10 cm
+    building:
+      name: n
+      isolated: false
+      floors: {count: 2, mass: 340 t, stiffness: 600 MN/m, height: 3.0 m}
+    impact: {law: kelvin_voigt, k: 2500 kN/mm, e: 0.7}
+)");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(r.file + ":6:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("storey stiffness jumps 6.0x from storey 1"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("neighbours[0]: floor 1 of 'a' at 3.200 m has no floor of 'n'"),
+            std::string::npos)
+      << r.output;
+}
+
+}  // namespace
+}  // namespace isopound::pre::test

@@ -1,0 +1,96 @@
+// plan.png rendered by isopound-pre with no DISPLAY (a private Xvfb), read back: size,
+// non-blank, and known features at the pixels the drawing's scale puts them.
+#include <gtest/gtest.h>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+#include <vtkPointData.h>
+
+#include <cmath>
+#include <set>
+
+#include "geometry/pre/checks.h"
+#include "geometry/pre/model_scan.h"
+#include "geometry/pre/plan_figure.h"
+#include "geometry/pre/properties.h"
+#include "geometry/pre/site_plan.h"
+#include "pre_test_support.h"
+
+namespace isopound::pre::test {
+
+Image read_png(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such PNG");
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* img = reader->GetOutput();
+  int dims[3];
+  img->GetDimensions(dims);
+  Image out;
+  out.width = dims[0];
+  out.height = dims[1];
+  vtkDataArray* s = img->GetPointData()->GetScalars();
+  const int nc = s->GetNumberOfComponents();
+  out.rgb.resize(3 * static_cast<std::size_t>(out.width) * out.height);
+  for (int y = 0; y < out.height; ++y)  // VTK images start at the bottom row
+    for (int x = 0; x < out.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        out.rgb[3 * (static_cast<std::size_t>(out.height - 1 - y) * out.width + x) + c] =
+            static_cast<unsigned char>(s->GetComponent(y * out.width + x, std::min(c, nc - 1)));
+  return out;
+}
+
+namespace {
+
+// The view plan.png was drawn with: the same model through the same steps as the tool.
+PlanView view_of(const std::string& model_path, Site& site) {
+  ProblemList problems;
+  const ScannedModel m = scan_model(model_path, problems);
+  EXPECT_TRUE(m.config.has_value());
+  site = site_plan(*m.config);
+  const auto properties = structure_properties(*m.config);
+  const auto clearances = check_site(m, site, properties, CheckLimits{}, problems);
+  PlanView view;
+  plan_figure(site, properties, clearances, PlanOptions{}, &view);
+  return view;
+}
+
+bool near(const unsigned char* p, post::Rgb c, int tol = 40) {
+  return std::abs(p[0] - c.r) < tol && std::abs(p[1] - c.g) < tol && std::abs(p[2] - c.b) < tol;
+}
+
+TEST(PrePlan, ThesisBuildingPlanWithoutDisplay) {
+  const auto dir = scratch_dir("plan");
+  const std::string model = (source_dir() / "configs/3d-thesis-building.yaml").string();
+  const auto r = run_pre(model + " -o " + dir.string() + " --angle '30 deg'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Image img = read_png((dir / "plan.png").string());
+  ASSERT_EQ(img.width, 1400);
+  ASSERT_EQ(img.height, 1000);
+  std::set<int> colours;
+  for (std::size_t i = 0; i < img.rgb.size(); i += 3)
+    colours.insert(img.rgb[i] << 16 | img.rgb[i + 1] << 8 | img.rgb[i + 2]);
+  EXPECT_GT(colours.size(), 20u);  // not blank: slabs, columns, bearings, text
+
+  Site site;
+  const PlanView view = view_of(model, site);
+  // Scale: the 16.5 m slab is drawn 16.5 * scale px wide; about 800 px in this layout.
+  EXPECT_GT(view.scale * 16.5, 600);
+  const auto pixel = [&](Vec2 p) {
+    const post::Point2 q = view.to_px(p);
+    return img.at(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
+  };
+  // Column A1 at the south-west corner (-8.25, -8.25), a bit off its axis-1 stroke.
+  EXPECT_TRUE(near(pixel({-8.25 + 0.1, -8.25 + 0.1}), kColumnColour)) << "column A1";
+  // Inside the slab between columns: the slab's fill.
+  EXPECT_TRUE(near(pixel({-4.0, -1.5}), slab_fill(0))) << "slab";
+  // 0.6 m west of the west edge, between column lines: background.
+  EXPECT_TRUE(near(pixel({-8.85, -1.5}), {255, 255, 255})) << "outside the slab";
+  // East of the slab: background too (no wall in this model).
+  EXPECT_TRUE(near(pixel({8.85, -1.5}), {255, 255, 255})) << "east of the slab";
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace isopound::pre::test
