@@ -1,7 +1,7 @@
 // isopound-pre: a model file checked and drawn before any analysis (issue 12). Checks (all
 // problems in one run), section and stiffness properties (DIR/properties.json), periods, Gmsh
-// files per level and of the site, plan.png. Exit codes: 0 fine (warnings allowed), 2 the model
-// has errors (each printed as "file:line:col: key: what"), 1 anything else.
+// files per level and of the site, plan.png. Exit codes: 0 fine (warnings allowed unless
+// --strict), 2 the model has errors (each printed as "file:line:col: key: what"), 1 anything else.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -88,7 +88,7 @@ std::string clearances_text(const std::vector<Clearance>& clearances) {
 }
 
 int run(const std::string& model_path, const std::string& out_dir,
-        const std::optional<std::string>& angle_text, bool no_plan) {
+        const std::optional<std::string>& angle_text, bool no_plan, bool strict) {
   ProblemList problems;
   ScannedModel model = scan_model(model_path, problems);
   std::optional<double> angle;
@@ -208,7 +208,7 @@ int run(const std::string& model_path, const std::string& out_dir,
   }
   write_text(fs::path(out_dir) / "properties.json", json.dump(2) + "\n");
   std::cout << "Wrote " << (fs::path(out_dir) / "properties.json").string() << "\n";
-  return problems.errors() > 0 ? kBadInput : kOk;
+  return problems.errors() > 0 || (strict && problems.warnings() > 0) ? kBadInput : kOk;
 }
 
 }  // namespace
@@ -219,16 +219,17 @@ int main(int argc, char** argv) {
       "a plan picture, before any analysis"};
   std::string model_path, out_dir = "isopound-pre-out";
   std::optional<std::string> angle;
-  bool no_plan = false;
+  bool no_plan = false, strict = false;
   app.add_option("model", model_path, "Model file (YAML)")->required();
   app.add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
   app.add_option("--angle", angle,
                  "Direction of the record's L component in the plan, e.g. '30 deg' (default: the "
                  "model's ground_motion.angle)");
   app.add_flag("--no-plan", no_plan, "Skip plan.png (no X server needed)");
+  app.add_flag("--strict", strict, "Warnings also give exit code 2");
   CLI11_PARSE(app, argc, argv);
   try {
-    return run(model_path, out_dir, angle, no_plan);
+    return run(model_path, out_dir, angle, no_plan, strict);
   } catch (const InputError& e) {
     std::cerr << e.what() << '\n';
     return kBadInput;

@@ -183,6 +183,12 @@ TEST(PreChecks, StoreyStiffnessJumpWarns) {
   EXPECT_NE(r.output.find("warning: " + r.file + ":13:"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("storey stiffness jumps 16.0x along x from storey 1"), std::string::npos)
       << r.output;
+  // --strict: warnings count as problems.
+  const auto dir = scratch_dir("strict");
+  const auto strict =
+      run_pre(write_model(dir, model) + " -o " + (dir / "out").string() + " --no-plan --strict");
+  EXPECT_EQ(strict.exit_code, 2) << strict.output;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(PreChecks, VeryEccentricMassWarns) {

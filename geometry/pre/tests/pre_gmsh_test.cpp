@@ -111,13 +111,26 @@ TEST(PreGmsh, FilesOfTheThesisBuildingReadBackWithTheirGroups) {
     gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
     for (int e : entities) EXPECT_GT(elements_of(dim, e), 0u) << dim << " " << e;
   }
-  // One file per level, each with only its own level's groups.
-  const auto base = groups_of((dir / "level-z0.00m.msh").string());
-  EXPECT_EQ(base.size(), 3u);
-  EXPECT_EQ(base.at("building/base/bearing"), std::make_pair(0, 16));
-  const auto roof = groups_of((dir / "level-z9.60m.msh").string());
-  ASSERT_EQ(roof.size(), 1u);
-  EXPECT_EQ(roof.at("building/floor 3/slab"), std::make_pair(2, 1));
+  // One file per level, each with only its own level's groups; every .msh in DIR is read.
+  using G = std::map<std::string, std::pair<int, int>>;
+  const std::map<std::string, G> levels{
+      {"level-z0.00m",
+       {{"building/base/slab", {2, 1}},
+        {"building/base/bearing", {0, 16}},
+        {"building/base/column", {2, 16}}}},
+      {"level-z3.20m", {{"building/floor 1/slab", {2, 1}}, {"building/floor 1/column", {2, 16}}}},
+      {"level-z6.40m", {{"building/floor 2/slab", {2, 1}}, {"building/floor 2/column", {2, 16}}}},
+      {"level-z9.60m", {{"building/floor 3/slab", {2, 1}}}},
+      {"site", expected}};
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".msh") continue;
+    ++files;
+    const std::string stem = entry.path().stem().string();
+    ASSERT_TRUE(levels.count(stem)) << stem;
+    EXPECT_EQ(groups_of(entry.path().string()), levels.at(stem)) << stem;
+  }
+  EXPECT_EQ(files, 5);
   for (const char* stem : {"level-z3.20m", "level-z6.40m", "site", "level-z0.00m"})
     EXPECT_TRUE(std::filesystem::exists(dir / (std::string(stem) + ".geo_unrolled"))) << stem;
   std::filesystem::remove_all(dir);
