@@ -51,22 +51,36 @@ std::string side_name(Vec2 n) {
 }
 
 void closest_points(const std::vector<Vec2>& a, const std::vector<Vec2>& b, Vec2& p_a, Vec2& p_b) {
-  double best = std::numeric_limits<double>::infinity();
+  // Every vertex-edge pair; those within round-off of the smallest distance are averaged, so two
+  // parallel facing edges give the middle of their common stretch (where a dimension belongs).
+  struct Pair {
+    Vec2 a, b;
+    double d;
+  };
+  std::vector<Pair> pairs;
   const auto scan = [&](const std::vector<Vec2>& points, const std::vector<Vec2>& edges,
                         bool points_are_a) {
     for (Vec2 p : points)
       for (std::size_t i = 0; i < edges.size(); ++i) {
         const Vec2 q = closest_on_segment(p, edges[i], edges[(i + 1) % edges.size()]);
-        const double d = dot(q - p, q - p);
-        if (d < best) {
-          best = d;
-          p_a = points_are_a ? p : q;
-          p_b = points_are_a ? q : p;
-        }
+        const double d = std::sqrt(dot(q - p, q - p));
+        pairs.push_back(points_are_a ? Pair{p, q, d} : Pair{q, p, d});
       }
   };
   scan(a, b, true);
   scan(b, a, false);
+  double best = std::numeric_limits<double>::infinity();
+  for (const Pair& p : pairs) best = std::min(best, p.d);
+  Vec2 sa, sb;
+  int n = 0;
+  for (const Pair& p : pairs)
+    if (p.d <= best + 1e-9 * (1.0 + best)) {
+      sa = sa + p.a;
+      sb = sb + p.b;
+      ++n;
+    }
+  p_a = (1.0 / n) * sa;
+  p_b = (1.0 / n) * sb;
 }
 
 std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,

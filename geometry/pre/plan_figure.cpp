@@ -171,24 +171,27 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
     f.texts.push_back(
         {{c.x + 10, c.y + 10}, "CM", 12, kMassColour, post::HAlign::kLeft, post::VAlign::kBottom});
   }
-  // Structure names above their top-left corner.
+  // Structure names above the middle of their highest slab edge (over all their slabs).
   std::map<int, Vec2> name_at;
   for (const PlanSlab& s : site.slabs) {
-    Vec2 top{-1e300, -1e300};
+    double top = -1e300, x_lo = 1e300, x_hi = -1e300;
+    for (Vec2 p : s.plan_W) top = std::max(top, p.y);
     for (Vec2 p : s.plan_W)
-      if (p.y > top.y || (p.y == top.y && p.x < top.x)) top = p;
-    name_at[s.structure] = top;
+      if (p.y > top - 1e-9) x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x);
+    const auto it = name_at.find(s.structure);
+    if (it == name_at.end() || top > it->second.y)
+      name_at[s.structure] = {0.5 * (x_lo + x_hi), top};
   }
   for (const auto& [i, p] : name_at) {
     std::string name;
     for (const PlanSlab& s : site.slabs)
       if (s.structure == i) name = s.name;
     const Point2 q = px(p);
-    f.texts.push_back({{q.x, q.y + 14},
+    f.texts.push_back({{q.x, q.y + 22},
                        name,
                        14,
                        post::series_colour(i),
-                       post::HAlign::kLeft,
+                       post::HAlign::kCentre,
                        post::VAlign::kBottom,
                        0.0,
                        true});

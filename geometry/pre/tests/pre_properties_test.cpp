@@ -5,6 +5,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "geometry/pre/checks.h"
 #include "geometry/pre/model_scan.h"
 #include "geometry/pre/properties.h"
 #include "pre_test_support.h"
@@ -123,6 +124,27 @@ TEST(PreProperties, CentreOfStiffnessOfRotatedColumnsRemovesTheCoupling) {
   EXPECT_NEAR(s2.x, s.x + 10, 1e-9);
   EXPECT_NEAR(s2.y, s.y - 20, 1e-9);
   EXPECT_NEAR(k2, k_theta, 1e-9 * k_theta);
+}
+
+}  // namespace
+}  // namespace isopound::pre::test
+
+namespace isopound::pre::test {
+namespace {
+
+TEST(PreGeometry, ClosestPointsOfFacingEdgesAreTheMiddleOfTheirCommonStretch) {
+  // a = [-3, 3]^2, b = [3.2, 9.2] x [-2, 4]: facing edges x = 3 and x = 3.2 share y in [-2, 3].
+  const std::vector<Vec2> a{{-3, -3}, {3, -3}, {3, 3}, {-3, 3}};
+  const std::vector<Vec2> b{{3.2, -2}, {9.2, -2}, {9.2, 4}, {3.2, 4}};
+  Vec2 pa, pb;
+  closest_points(a, b, pa, pb);
+  EXPECT_NEAR(pa.x, 3.0, 1e-12);
+  EXPECT_NEAR(pb.x, 3.2, 1e-12);
+  EXPECT_NEAR(pa.y, 0.5, 1e-12);
+  EXPECT_NEAR(pb.y, 0.5, 1e-12);
+  EXPECT_EQ(side_name(pb - pa), "east");
+  EXPECT_EQ(side_name(pa - pb), "west");
+  EXPECT_EQ(side_name({0.1, -2}), "south");
 }
 
 }  // namespace
