@@ -11,6 +11,8 @@
 
 #include "geometry/convex_polygon.h"
 #include "solver/io/model_input.h"
+#include "solver/io/model_input3d.h"
+#include "solver/structures/config3d.h"
 
 namespace isopound::pre {
 namespace {
@@ -55,6 +57,13 @@ std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
 }
 
 // The reader's test (model_input3d.cpp): inside or on the boundary, within 1e-9 sqrt(area).
+// The reader's rules between structures (after issue 16): reported by check_site() for all pairs.
+bool between_structures(const std::string& detail) {
+  for (const char* what : {"overlap at rest", "at rest (by", "faces structure"})
+    if (detail.find(what) != std::string::npos) return true;
+  return false;
+}
+
 bool inside(const std::vector<Vec2>& plan, Vec2 p) {
   const ConvexPolygon poly(std::span<const Vec2>(plan.data(), plan.size()));
   const double tol = 1e-9 * std::sqrt(area_properties(poly).area);
@@ -306,12 +315,39 @@ ScannedModel scan_model(const std::string& path, ProblemList& problems) {
         m.neighbours = n->elements();
     }
   }
+  // The structures alone first (read_structures3d: every per-structure rule of the reader),
+  // then the whole model. When the whole model stops only at a rule between structures
+  // (overlap at rest, levels of neighbours), which check_site() reports for every pair, the
+  // rest of the model is read with the first structure alone and the structures put back.
+  std::optional<std::vector<Building3DConfig>> structures;
+  const auto report = [&](const InputError& e) {
+    if (!(scanner.outside_reported && e.detail().find("is outside") != std::string::npos))
+      problems.error(e.what());
+  };
+  if (m.is3d) {
+    try {
+      structures = read_structures3d(m.root->required("structures"));
+    } catch (const InputError& e) {
+      report(e);
+    }
+  }
   try {
     m.config = load_model(root, path, fs::path(path).parent_path().string());
   } catch (const InputError& e) {
-    const std::string detail = e.detail();
-    if (!(scanner.outside_reported && detail.find("is outside") != std::string::npos))
-      problems.error(e.what());
+    if (structures && between_structures(e.detail())) {
+      YAML::Node first = YAML::Clone(root);
+      YAML::Node one(YAML::NodeType::Sequence);
+      one.push_back(first["structures"][0]);
+      first["structures"] = one;
+      try {
+        m.config = load_model(first, path, fs::path(path).parent_path().string());
+        m.config->structures3d = *structures;
+      } catch (const InputError& again) {
+        report(again);
+      }
+    } else {
+      report(e);  // the same message as the structures-alone read's is kept once
+    }
   }
   return m;
 }
