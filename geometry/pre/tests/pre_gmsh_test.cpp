@@ -131,6 +131,9 @@ TEST(PreGmsh, FilesOfTheThesisBuildingReadBackWithTheirGroups) {
     EXPECT_EQ(groups_of(entry.path().string()), levels.at(stem)) << stem;
   }
   EXPECT_EQ(files, 5);
+  // The .geo_unrolled scripts rebuild the same geometry and groups.
+  EXPECT_EQ(groups_of((dir / "site.geo_unrolled").string()), expected);
+  EXPECT_EQ(groups_of((dir / "level-z3.20m.geo_unrolled").string()), levels.at("level-z3.20m"));
   for (const char* stem : {"level-z3.20m", "level-z6.40m", "site", "level-z0.00m"})
     EXPECT_TRUE(std::filesystem::exists(dir / (std::string(stem) + ".geo_unrolled"))) << stem;
   std::filesystem::remove_all(dir);
