@@ -9,6 +9,9 @@
 
 #include "geometry/overlap.h"
 #include "solver/structures/config3d.h"
+#if __has_include("solver/structures/site3d.h")  // walls and adjacency (issue 16)
+#define ISOPOUND_PRE_SITE3D 1
+#endif
 
 namespace isopound::pre {
 namespace {
@@ -41,6 +44,38 @@ Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 d = b - a;
   const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
   return a + t * d;
+}
+
+// Buildings placed by `adjacent: {to, side, gap}`: every clearance measured between the two (floors
+// at equal levels, or their nearest approach) must be the declared gap.
+void check_adjacency(const ModelConfig& config, const std::vector<StructureMarks>& marks,
+                     const CheckLimits& limits, std::vector<Clearance>& clearances,
+                     ProblemList& problems) {
+#ifdef ISOPOUND_PRE_SITE3D
+  for (std::size_t i = 0; i < config.structures3d.size(); ++i) {
+    const Adjacency3DConfig& adj = config.structures3d[i].adjacent;
+    if (adj.to.empty()) continue;
+    for (Clearance& c : clearances) {
+      const int me = static_cast<int>(i);
+      const bool pair =
+          (c.structure_a == me || c.structure_b == me) && c.structure_a != c.structure_b &&
+          config.structures3d.at(c.structure_a == me ? c.structure_b : c.structure_a).name ==
+              adj.to;
+      if (!pair) continue;
+      c.declared = adj.gap;
+      if (std::abs(c.measured - adj.gap) > limits.gap_tolerance) {
+        const InputNode& where = marks[i].adjacent ? *marks[i].adjacent : *marks[i].item;
+        problems.error_at(where, "gap",
+                          "measured clearance between " + c.a + " and " + c.b + " is " +
+                              metres(c.measured) + ", not the declared gap of " + metres(adj.gap) +
+                              " (adjacent places the structures' bounding boxes; their slabs "
+                              "differ in plan)");
+      }
+    }
+  }
+#else
+  (void)config, (void)marks, (void)limits, (void)clearances, (void)problems;
+#endif
 }
 
 }  // namespace
@@ -106,6 +141,8 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
       if (std::abs(a.elevation - b.elevation) < kLevelTolerance3D) {
         Clearance c{a.name + "/" + a.level,
                     b.name + "/" + b.level,
+                    a.structure,
+                    b.structure,
                     side_name(sep.n_AB),
                     sep.distance,
                     -1.0,
@@ -135,6 +172,8 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
       if (!best_a) continue;
       Clearance c{best_a->name + "/" + best_a->level,
                   best_b->name + "/" + best_b->level,
+                  best_a->structure,
+                  best_b->structure,
                   side_name(best.n_AB),
                   best.distance,
                   -1.0,
@@ -169,6 +208,42 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
                               " share " + fmt("%.3f m2", area) + " (" + metres(depth) + " deep)");
       }
     }
+
+  // Walls: the clearance to the base slab they surround, measured per side against the declared
+  // gap; no wall may stand in another structure's slab (up to its height) or on its columns.
+  for (const PlanWall& w : site.walls) {
+    const StructureMarks& m = marks.at(static_cast<std::size_t>(w.building));
+    const InputNode& where = m.walls ? *m.walls : *m.item;
+    for (const PlanSlab& s : site.slabs) {
+      if (s.structure == w.building && s.level == "base") {
+        const Separation sep = separation_of(polygon(s.plan_W), polygon(w.plan_W));
+        Clearance c{s.name + "/base", w.name,         w.building, w.building, w.side,
+                    sep.distance,     w.declared_gap, 0.0,        {},         {}};
+        if (sep.distance > 0) closest_points(s.plan_W, w.plan_W, c.p_WA, c.p_WB);
+        clearances.push_back(c);
+        if (std::abs(sep.distance - w.declared_gap) > limits.gap_tolerance)
+          problems.error_at(where, "gap",
+                            "the " + w.name + " of '" + w.structure + "' stands " +
+                                metres(sep.distance) + " from its base slab (measured), not at " +
+                                "the declared gap of " + metres(w.declared_gap));
+      } else if (s.structure != w.building && s.elevation <= w.height + kLevelTolerance3D) {
+        const Overlap o = overlap_of(polygon(s.plan_W), polygon(w.plan_W));
+        if (o.area > 1e-9)
+          problems.error_at(where, "",
+                            "the " + w.name + " of '" + w.structure + "' overlaps " + s.level +
+                                " of '" + s.name + "' at rest (" + fmt("%.3f m2", o.area) + ")");
+      }
+    }
+    for (std::size_t k = 0; k < site.ground_columns.size(); ++k) {
+      const Overlap o = overlap_of(polygon(site.ground_columns[k].outline_W()), polygon(w.plan_W));
+      if (o.area > 0)
+        problems.error_at(where, "",
+                          "the " + w.name + " of '" + w.structure + "' stands on column " +
+                              site.ground_columns[k].label + " of '" +
+                              config.structures3d.at(site.ground_columns_structure[k]).name + "'");
+    }
+  }
+  check_adjacency(config, marks, limits, clearances, problems);
 
   // Floors of pounding pairs at equal levels: every floor of one within the other's height
   // must meet a floor of the other.

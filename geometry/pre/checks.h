@@ -25,10 +25,11 @@ struct CheckLimits {
 
 // A clearance measured at rest between two bodies at one level (slab-slab or wall-slab).
 struct Clearance {
-  std::string a, b;        // "building/base", "wall east" / "east-neighbour/floor 1"
-  std::string side;        // side of a on which b lies: east, west, north, south
-  double measured = 0.0;   // m (< 0: overlap depth)
-  double declared = -1.0;  // m, < 0 when nothing was declared
+  std::string a, b;  // "building/base", "wall east" / "east-neighbour/floor 1"
+  int structure_a = -1, structure_b = -1;  // indices (a wall: the building it surrounds)
+  std::string side;                        // side of a on which b lies: east, west, north, south
+  double measured = 0.0;                   // m (< 0: overlap depth)
+  double declared = -1.0;                  // m, < 0 when nothing was declared
   double elevation = 0.0;
   Vec2 p_WA, p_WB;  // the closest points (for dimensioning the plan)
 };

@@ -86,7 +86,7 @@ GmshFile write_model(const Site& site, const std::string& dir, const std::string
       add_columns({site.ground_columns[i]}, name + "/ground", 0.0, groups);
     }
     for (const PlanWall& w : site.walls)
-      groups.add(w.name + "/wall/wall", 2, add_polygon(w.plan_W, 0.0, slab_size(w.plan_W)));
+      groups.add(w.structure + "/base/wall", 2, add_polygon(w.plan_W, 0.0, slab_size(w.plan_W)));
   }
   gmsh::model::geo::synchronize();
   GmshFile file{stem, elevation, groups.create()};

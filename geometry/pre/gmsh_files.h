@@ -28,7 +28,10 @@ struct GmshFile {
 
 // Writes DIR/<stem>.geo_unrolled and DIR/<stem>.msh for every level and the site. Roles: slab
 // (plane surface), column (the oriented rectangle b x h, on the level it stands on), bearing
-// (point), wall (plane surface). Entities sit at z = their elevation. Needs a GmshSession.
+// (point), wall (plane surface; the walls around a building's base slab are the group
+// "<building>/base/wall", one surface per side, at z = 0). Entities sit at z = their elevation;
+// fixed-base buildings' storey-1 columns are "<building>/ground/column" at z = 0. Needs a
+// GmshSession.
 std::vector<GmshFile> write_gmsh_files(const Site& site, const std::string& dir);
 
 // Area, centroid and polar moment about the centroid of a convex polygon integrated over a Gmsh

@@ -41,7 +41,8 @@ struct PlanSlab {
 
 struct PlanWall {
   std::string name;           // "wall east"
-  std::string structure;      // the building whose base slab it surrounds
+  int building = 0;           // index of the building whose base slab it surrounds
+  std::string structure;      // that building's name
   std::string side;           // "east", ...
   double declared_gap = 0.0;  // m, as written
   double height = 0.0;
@@ -55,6 +56,8 @@ struct Site {
   std::vector<PlanWall> walls;
 };
 
+// Slabs, columns and bearings placed as building3d.cpp places them; walls from the solver's own
+// site geometry (site_bodies(), solver/structures/site3d.h).
 Site site_plan(const ModelConfig& config);
 
 // Equivalent rectangle b x h of a column with I11 = b h^3 / 12 and I22 = h b^3 / 12.
