@@ -9,14 +9,11 @@
 
 #include "geometry/overlap.h"
 #include "solver/structures/config3d.h"
-#if __has_include("solver/structures/site3d.h")  // walls and adjacency (issue 16)
-#define ISOPOUND_PRE_SITE3D 1
-#endif
+#include "solver/structures/pounding3d.h"  // site_bodies(): walls as the solver builds them
 
 namespace isopound::pre {
 namespace {
 
-constexpr double kLevelTolerance3D = 0.01;  // m: the solver pairs floors at |dz| < 1 cm
 constexpr double kLevelTolerance2D = 1e-3;  // m: pounding2d.cpp pairs levels within 1 mm
 constexpr double kGround = 0.01;            // m: levels below are at the ground
 
@@ -51,7 +48,6 @@ Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
 void check_adjacency(const ModelConfig& config, const std::vector<StructureMarks>& marks,
                      const CheckLimits& limits, std::vector<Clearance>& clearances,
                      ProblemList& problems) {
-#ifdef ISOPOUND_PRE_SITE3D
   for (std::size_t i = 0; i < config.structures3d.size(); ++i) {
     const Adjacency3DConfig& adj = config.structures3d[i].adjacent;
     if (adj.to.empty()) continue;
@@ -73,9 +69,6 @@ void check_adjacency(const ModelConfig& config, const std::vector<StructureMarks
       }
     }
   }
-#else
-  (void)config, (void)marks, (void)limits, (void)clearances, (void)problems;
-#endif
 }
 
 }  // namespace
@@ -138,7 +131,7 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
       double& near = nearest[a.structure][b.structure];
       near = std::min(near, sep.distance);
       nearest[b.structure][a.structure] = near;
-      if (std::abs(a.elevation - b.elevation) < kLevelTolerance3D) {
+      if (std::abs(a.elevation - b.elevation) < limits.level_tolerance) {
         Clearance c{a.name + "/" + a.level,
                     b.name + "/" + b.level,
                     a.structure,
@@ -226,7 +219,7 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
                             "the " + w.name + " of '" + w.structure + "' stands " +
                                 metres(sep.distance) + " from its base slab (measured), not at " +
                                 "the declared gap of " + metres(w.declared_gap));
-      } else if (s.structure != w.building && s.elevation <= w.height + kLevelTolerance3D) {
+      } else if (s.structure != w.building && s.elevation <= w.height + limits.level_tolerance) {
         const Overlap o = overlap_of(polygon(s.plan_W), polygon(w.plan_W));
         if (o.area > 1e-9)
           problems.error_at(where, "",
@@ -255,7 +248,7 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
         if (b.structure == static_cast<int>(j)) top_j = std::max(top_j, b.elevation);
       for (const PlanSlab& a : site.slabs) {
         if (a.structure != static_cast<int>(i) || a.elevation < kGround ||
-            a.elevation > top_j + kLevelTolerance3D)
+            a.elevation > top_j + limits.level_tolerance)
           continue;
         const PlanSlab* partner = nullptr;
         double dz = 1e300;
@@ -264,7 +257,7 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
             dz = std::abs(b.elevation - a.elevation);
             partner = &b;
           }
-        if (!partner || dz < kLevelTolerance3D) continue;
+        if (!partner || dz < limits.level_tolerance) continue;
         const StructureMarks& m = marks[i];
         const int storey = a.level_index - (config.structures3d[i].isolated ? 1 : 0);
         const InputNode& where =

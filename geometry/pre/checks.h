@@ -19,8 +19,9 @@ namespace isopound::pre {
 struct CheckLimits {
   double stiffness_jump = 3.0;       // adjacent storeys' K ratio
   double eccentricity_ratio = 0.30;  // e / r (EC8 4.2.3.2(6))
-  double reach = 1.0;                // m
-  double gap_tolerance = 1e-3;       // m: measured vs declared gap
+  double reach = 2.0;  // m: contact.search_distance (pairs farther apart at rest cannot meet)
+  double level_tolerance = 0.01;  // m: contact.elevation_tolerance (floors this close meet)
+  double gap_tolerance = 1e-3;    // m: measured vs declared gap
 };
 
 // A clearance measured at rest between two bodies at one level (slab-slab or wall-slab).

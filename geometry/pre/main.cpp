@@ -103,8 +103,10 @@ int run(const std::string& model_path, const std::string& out_dir,
   Site site;
   std::vector<StructureProperties> properties;
   std::vector<Clearance> clearances;
-  const CheckLimits limits;
+  CheckLimits limits;
   if (model.config) {
+    limits.reach = model.config->contact3d.search_distance;
+    limits.level_tolerance = model.config->contact3d.elevation_tolerance;
     if (model.is3d) {
       site = site_plan(*model.config);
       properties = structure_properties(*model.config);

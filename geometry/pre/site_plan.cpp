@@ -7,10 +7,7 @@
 
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
-#if __has_include("solver/structures/site3d.h")  // walls and neighbours (issue 16)
-#include "solver/structures/site3d.h"
-#define ISOPOUND_PRE_SITE3D 1
-#endif
+#include "solver/structures/pounding3d.h"  // site_bodies(): walls as the solver builds them
 
 namespace isopound::pre {
 
@@ -92,22 +89,19 @@ Site site_plan(const ModelConfig& config) {
       site.slabs.push_back(floor);
     }
   }
-#ifdef ISOPOUND_PRE_SITE3D
   for (const SiteBody& body : site_bodies(config)) {
     if (body.role != "wall") continue;
     PlanWall w;
     w.name = body.structure;  // "wall east"
-    w.side = w.name.substr(w.name.rfind(' ') + 1);
+    w.side = MoatWalls3DConfig::kSideNames.at(static_cast<std::size_t>(body.wall_side));
     w.height = body.height;
     w.building = body.building;
     for (Vec2 p : body.plan_W.vertices()) w.plan_W.push_back(p);
     const Building3DConfig& b = config.structures3d.at(static_cast<std::size_t>(w.building));
     w.structure = b.name;
-    for (std::size_t k = 0; k < MoatWalls3DConfig::kSideNames.size(); ++k)
-      if (w.side == MoatWalls3DConfig::kSideNames[k]) w.declared_gap = b.walls.gap[k];
+    w.declared_gap = b.walls.gap.at(static_cast<std::size_t>(body.wall_side));
     site.walls.push_back(w);
   }
-#endif
   return site;
 }
 

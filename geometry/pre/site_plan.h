@@ -57,7 +57,7 @@ struct Site {
 };
 
 // Slabs, columns and bearings placed as building3d.cpp places them; walls from the solver's own
-// site geometry (site_bodies(), solver/structures/site3d.h).
+// site geometry (site_bodies(), solver/structures/pounding3d.h).
 Site site_plan(const ModelConfig& config);
 
 // Equivalent rectangle b x h of a column with I11 = b h^3 / 12 and I22 = h b^3 / 12.

@@ -145,8 +145,8 @@ TEST(PreChecks, FloorsOfPoundingPairsAtDifferentLevels) {
   // The clearance is measured and printed per side.
   EXPECT_NE(r.output.find("b/floor 1"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("east"), std::string::npos);
-  // Far apart (beyond 1 m), the same levels are no pounding pair.
-  const PreRun far = check("levels-far", building_a() + building_b("[8 m, 0 m]", "3.5 m"));
+  // Farther apart than contact.search_distance (2 m), the same levels are no pounding pair.
+  const PreRun far = check("levels-far", building_a() + building_b("[10 m, 0 m]", "3.5 m"));
   EXPECT_EQ(far.exit_code, 0) << far.output;
 }
 
