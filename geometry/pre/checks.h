@@ -32,7 +32,8 @@ struct Clearance {
   double measured = 0.0;                   // m (< 0: overlap depth)
   double declared = -1.0;                  // m, < 0 when nothing was declared
   double elevation = 0.0;
-  Vec2 p_WA, p_WB;  // the closest points (for dimensioning the plan)
+  bool same_level = true;  // false: the nearest approach of two structures with no common level
+  Vec2 p_WA, p_WB;         // the closest points (for dimensioning the plan)
 };
 
 // 3D models.

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <numbers>
+#include <span>
 
 namespace isopound::pre {
 namespace {
@@ -171,30 +172,22 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
     f.texts.push_back(
         {{c.x + 10, c.y + 10}, "CM", 12, kMassColour, post::HAlign::kLeft, post::VAlign::kBottom});
   }
-  // Structure names above the middle of their highest slab edge (over all their slabs).
+  // Structure names inside their lowest slab, a sixth of its height below the top (clear of
+  // the gap dimensions at its edges and of the centres at its middle).
   std::map<int, Vec2> name_at;
   for (const PlanSlab& s : site.slabs) {
-    double top = -1e300, x_lo = 1e300, x_hi = -1e300;
-    for (Vec2 p : s.plan_W) top = std::max(top, p.y);
-    for (Vec2 p : s.plan_W)
-      if (p.y > top - 1e-9) x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x);
-    const auto it = name_at.find(s.structure);
-    if (it == name_at.end() || top > it->second.y)
-      name_at[s.structure] = {0.5 * (x_lo + x_hi), top};
+    if (name_at.count(s.structure)) continue;  // slabs are listed bottom-up per structure
+    double top = -1e300, bottom = 1e300;
+    for (Vec2 p : s.plan_W) top = std::max(top, p.y), bottom = std::min(bottom, p.y);
+    const AreaProperties a = area_properties(ConvexPolygon(std::span<const Vec2>(s.plan_W)));
+    name_at[s.structure] = {a.p_WC.x, top - (top - bottom) / 6};
   }
   for (const auto& [i, p] : name_at) {
     std::string name;
     for (const PlanSlab& s : site.slabs)
       if (s.structure == i) name = s.name;
-    const Point2 q = px(p);
-    f.texts.push_back({{q.x, q.y + 22},
-                       name,
-                       14,
-                       post::series_colour(i),
-                       post::HAlign::kCentre,
-                       post::VAlign::kBottom,
-                       0.0,
-                       true});
+    f.texts.push_back({px(p), name, 16, post::series_colour(i), post::HAlign::kCentre,
+                       post::VAlign::kCentre, 0.0, true});
   }
 
   // Gaps: one dimension per pair of bodies and side (the lowest level), ticks at both faces.
@@ -216,11 +209,18 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
     f.lines.push_back({{{a.x - 12 * dx, a.y - 12 * dy}, {b.x + 12 * dx, b.y + 12 * dy}}, dim, 1.5});
     for (Point2 e : {a, b})
       f.lines.push_back({{{e.x - 6 * dy, e.y + 6 * dx}, {e.x + 6 * dy, e.y - 6 * dx}}, dim, 1.5});
-    const Point2 mid{0.5 * (a.x + b.x) + 16 * dx - 14 * dy, 0.5 * (a.y + b.y) + 16 * dy + 14 * dx};
+    // The value on A's side of the gap (inside the slab: readable, clear of walls), beside
+    // the dimension line.
+    const Point2 at{a.x - 16 * dx - 8 * dy, a.y - 16 * dy + 8 * dx};
     std::string label = length_text(c->measured);
     if (c->declared >= 0) label += " (declared " + length_text(c->declared) + ")";
-    f.texts.push_back({mid, label, 12, dim, dx >= 0 ? post::HAlign::kLeft : post::HAlign::kRight,
-                       post::VAlign::kBottom});
+    const post::HAlign h = dx > 0.5    ? post::HAlign::kRight
+                           : dx < -0.5 ? post::HAlign::kLeft
+                                       : post::HAlign::kLeft;
+    const post::VAlign v = dy > 0.5    ? post::VAlign::kTop
+                           : dy < -0.5 ? post::VAlign::kBottom
+                                       : post::VAlign::kBottom;
+    f.texts.push_back({at, label, 12, dim, h, v});
   }
 
   // Scale bar below the plot.
