@@ -224,14 +224,14 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
         clearances.push_back(c);
         if (std::abs(sep.distance - w.declared_gap) > limits.gap_tolerance)
           problems.error_at(where, "gap",
-                            "the " + w.name + " of '" + w.structure + "' stands " +
+                            "the " + w.side + " wall of '" + w.structure + "' stands " +
                                 metres(sep.distance) + " from its base slab (measured), not at " +
                                 "the declared gap of " + metres(w.declared_gap));
       } else if (s.structure != w.building && s.elevation <= w.height + limits.level_tolerance) {
         const Overlap o = overlap_of(polygon(s.plan_W), polygon(w.plan_W));
         if (o.area > 1e-9)
           problems.error_at(where, "",
-                            "the " + w.name + " of '" + w.structure + "' overlaps " + s.level +
+                            "the " + w.side + " wall of '" + w.structure + "' overlaps " + s.level +
                                 " of '" + s.name + "' at rest (" + fmt("%.3f m2", o.area) + ")");
       }
     }
@@ -239,7 +239,7 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
       const Overlap o = overlap_of(polygon(site.ground_columns[k].outline_W()), polygon(w.plan_W));
       if (o.area > 0)
         problems.error_at(where, "",
-                          "the " + w.name + " of '" + w.structure + "' stands on column " +
+                          "the " + w.side + " wall of '" + w.structure + "' stands on column " +
                               site.ground_columns[k].label + " of '" +
                               config.structures3d.at(site.ground_columns_structure[k]).name + "'");
     }

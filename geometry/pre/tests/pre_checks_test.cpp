@@ -245,6 +245,88 @@ TEST(PreChecks, FiveProblemsPrintAllFive) {
     EXPECT_EQ(count(r.output, what), 1) << what << "\n" << r.output;
 }
 
+// Walls (issue 16): measured and printed per side against the declared gaps; a wall may not stand
+// in another structure's slab or on its columns.
+TEST(PreChecks, WallGapsMeasuredPerSide) {
+  const PreRun r = check(
+      "walls",
+      building_a(
+          kColumns,
+          R"(    walls: {sides: all, gap: {east: 20 cm, west: 25 cm, north: 30 cm, south: 35 cm}}
+)"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const char* line :
+       {"a/base                       east   of it: wall east                       0.2000 m  "
+        "(declared 0.2000 m)",
+        "west   of it: wall west                       0.2500 m  (declared 0.2500 m)",
+        "north  of it: wall north                      0.3000 m",
+        "south  of it: wall south                      0.3500 m"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
+}
+
+TEST(PreChecks, WallInAnotherStructure) {
+  // b's base slab (isolated, 6 x 6 m at x = 6.5) begins 0.5 m from a's east face, inside a's
+  // 1 m thick east wall at 0.2 m.
+  std::string b = building_b("[6.5 m, 0 m]", "3 m");
+  b.replace(b.find("    isolated: false\n"), 20, "");
+  b.replace(b.find("    damping: {type: none}\n"), 26,
+            "    base: {mass: 100 t}\n    bearing: {model: linear, Tb: 2 s}\n");
+  const PreRun r =
+      check("wall-in", building_a(kColumns, "    walls: {sides: [east], gap: 20 cm}\n") + b);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(r.file + ":15:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("structures[0].walls: the east wall of 'a' overlaps base of 'b' at rest"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(PreChecks, WallOnColumnsOfAFixedBaseNeighbour) {
+  // b (fixed base) 0.5 m east of a: its west columns at x = 3.5 + 1 = 4.5 m stand in a's east
+  // wall (x from 3.2 to 4.2 m)? No: at 4.5 m they are clear; with a 1.5 m wall they are not.
+  const PreRun clear =
+      check("wall-clear", building_a(kColumns, "    walls: {sides: [east], gap: 20 cm}\n") +
+                              building_b("[6.5 m, 0 m]", "3 m"));
+  EXPECT_EQ(count(clear.output, "stands on column"), 0) << clear.output;
+  const PreRun r =
+      check("wall-on",
+            building_a(kColumns, "    walls: {sides: [east], gap: 20 cm, thickness: 1.5 m}\n") +
+                building_b("[6.5 m, 0 m]", "3 m"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("the east wall of 'a' stands on column C1 of 'b'"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("the east wall of 'a' stands on column C4 of 'b'"), std::string::npos)
+      << r.output;
+}
+
+TEST(PreChecks, AdjacentNeighbourAtItsDeclaredGap) {
+  // b adjacent east of a at 20 cm: measured 0.200 m between the floors that meet.
+  std::string b = building_b("[0 m, 0 m]", "3 m");
+  b.replace(b.find("    position: [0 m, 0 m]\n"), 25,
+            "    adjacent: {to: a, side: east, gap: 20 cm}\n");
+  const PreRun ok = check("adjacent", building_a() + b);
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_NE(ok.output.find("a/floor 1                    east   of it: b/floor 1                   "
+                           "    0.2000 m  (declared 0.2000 m)"),
+            std::string::npos)
+      << ok.output;
+  // b's second floor overhangs 0.3 m to the west: `adjacent` places the bounding boxes, so the
+  // floors that meet (floor 1 of both, at 3 m) end up 0.5 m apart, not 0.2 m.
+  std::string two = b;
+  two += R"(      - height: 3 m
+        mass: 100 t
+        plan: {polygon: [[-3.3 m, -3 m], [3 m, -3 m], [3 m, 3 m], [-3.3 m, 3 m]]}
+        columns: [{at: [-2 m, -2 m]}, {at: [2 m, -2 m]}, {at: [2 m, 2 m]}, {at: [-2 m, 2 m]}]
+)";
+  const PreRun r = check("adjacent-off", building_a() + two);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(r.file + ":17:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("structures[1].adjacent.gap: the floors of 'b' and 'a' that meet are "
+                          "0.500 m apart at the closest (a/floor 1 and b/floor 1), not at the "
+                          "declared gap of 0.200 m"),
+            std::string::npos)
+      << r.output;
+}
+
 // 2D models: the checks that apply (stiffness jumps, neighbour floors at equal levels).
 TEST(PreChecks, TwoDimensionalModels) {
   const PreRun clean = check("2d", R"(building:
