@@ -139,5 +139,19 @@ TEST(PreGmsh, FilesOfTheThesisBuildingReadBackWithTheirGroups) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(PreGmsh, WallsOfTheXY5SiteAreOneGroupOnTheGroundLevel) {
+  const auto dir = scratch_dir("gmsh-xy5");
+  const auto r = run_pre((source_dir() / "configs/3d-xy5.yaml").string() + " -o " + dir.string() +
+                         " --no-plan");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  GmshSession session;
+  const auto base = groups_of((dir / "level-z0.00m.msh").string());
+  EXPECT_EQ(base.at("building/base/wall"), std::make_pair(2, 4));
+  EXPECT_EQ(base.at("building/base/bearing"), std::make_pair(0, 16));
+  EXPECT_EQ(groups_of((dir / "site.msh").string()).at("building/base/wall"), std::make_pair(2, 4));
+  EXPECT_EQ(groups_of((dir / "level-z3.20m.msh").string()).count("building/base/wall"), 0u);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace isopound::pre::test

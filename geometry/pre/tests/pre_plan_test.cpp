@@ -92,5 +92,30 @@ TEST(PrePlan, ThesisBuildingPlanWithoutDisplay) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(PrePlan, EastWallOfTheXY5SiteRightOfTheSlab) {
+  // configs/3d-xy5.yaml: the thesis building (slab x in [-8.25, 8.25] m) in 1 m walls at 20 cm.
+  const auto dir = scratch_dir("plan-xy5");
+  const std::string model = (source_dir() / "configs/3d-xy5.yaml").string();
+  const auto r = run_pre(model + " -o " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Image img = read_png((dir / "plan.png").string());
+  ASSERT_EQ(img.width, 1400);
+  Site site;
+  const PlanView view = view_of(model, site);
+  ASSERT_EQ(site.walls.size(), 4u);
+  const auto pixel = [&](Vec2 p) {
+    const post::Point2 q = view.to_px(p);
+    return img.at(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
+  };
+  // Along y = -1.5 m from west to east: slab, the 20 cm gap (background), the wall.
+  EXPECT_TRUE(near(pixel({7.9, -1.5}), slab_fill(0))) << "slab";
+  EXPECT_TRUE(near(pixel({8.35, -1.5}), {255, 255, 255})) << "gap";
+  EXPECT_TRUE(near(pixel({8.95, -1.5}), kWallColour)) << "east wall";
+  EXPECT_TRUE(near(pixel({-8.95, -1.5}), kWallColour)) << "west wall";
+  // Beyond the wall: background again.
+  EXPECT_TRUE(near(pixel({9.7, -1.5}), {255, 255, 255})) << "east of the wall";
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace isopound::pre::test
