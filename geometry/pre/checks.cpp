@@ -31,10 +31,11 @@ ConvexPolygon polygon(const std::vector<Vec2>& v) {
   return ConvexPolygon(std::span<const Vec2>(v.data(), v.size()));
 }
 
-// The node to blame for a structure's placement: `adjacent`, else `position` of its item.
-std::pair<const InputNode*, std::string> placement_node(const StructureMarks& m) {
-  if (m.adjacent) return {&*m.adjacent, ""};
-  return {&*m.item, "position"};
+// The node to blame for a structure's placement: `adjacent`, `position`, else its item.
+std::pair<InputNode, std::string> placement_node(const StructureMarks& m) {
+  if (m.adjacent) return {*m.adjacent, ""};
+  if (const auto p = m.item->find("position")) return {*p, ""};
+  return {*m.item, "position"};
 }
 
 Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
@@ -198,7 +199,7 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
         }
       if (area > 1e-9) {
         const auto [node, key] = placement_node(marks[j]);
-        problems.error_at(*node, key,
+        problems.error_at(node, key,
                           "structures '" + config.structures3d[i].name + "' and '" +
                               config.structures3d[j].name + "' overlap at rest: " + where +
                               " share " + fmt("%.3f m2", area) + " (" + metres(depth) + " deep)");
@@ -270,14 +271,15 @@ std::vector<Clearance> check_site(const ScannedModel& model, const Site& site,
         const int storey = a.level_index - (config.structures3d[i].isolated ? 1 : 0);
         const InputNode& where =
             storey >= 0 && storey < static_cast<int>(m.storey.size()) ? m.storey[storey] : *m.item;
-        problems.error_at(
-            where, "",
-            a.level + " of '" + a.name + "' at " + metres(a.elevation) + " has no floor of '" +
-                partner->name + "' at its level (nearest: " + partner->level + " at " +
-                metres(partner->elevation) + "), " + metres(std::max(0.0, nearest[i][j])) +
-                " away: it would pound that building's columns, which the model "
-                "does not represent (floors of pounding pairs must be at equal "
-                "levels)");
+        problems.error_at(where, "",
+                          a.level + " of '" + a.name + "' at " + metres(a.elevation) +
+                              " has no floor of '" + partner->name + "' at its level (nearest: " +
+                              partner->level + " at " + metres(partner->elevation) + "), " +
+                              (nearest[i][j] > 0 ? metres(nearest[i][j]) + " away"
+                                                 : std::string("overlapping it")) +
+                              ": it would pound that building's columns, which the model "
+                              "does not represent (floors of pounding pairs must be at equal "
+                              "levels)");
       }
     }
 

@@ -127,6 +127,7 @@ TEST(PreChecks, StructuresOverlapAtRest) {
   const PreRun r = check("overlap", building_a() + building_b("[5 m, 0 m]", "3 m"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   // a spans x in [-3, 3], b in [2, 8]: 1 m x 6 m in common, 1 m deep.
+  EXPECT_NE(r.output.find(r.file + ":17:"), std::string::npos) << r.output;  // b's position
   EXPECT_NE(r.output.find("structures[1].position: structures 'a' and 'b' overlap at rest"),
             std::string::npos)
       << r.output;
