@@ -63,7 +63,7 @@ double c0(double v) {
 }
 
 nlohmann::ordered_json point(Vec2 p) {
-  return nlohmann::ordered_json::array({p.x, p.y});
+  return nlohmann::ordered_json::array({c0(p.x), c0(p.y)});
 }
 
 }  // namespace
