@@ -116,6 +116,10 @@ std::string divergence_message(const Model& model, const NewmarkStepper& stepper
 }  // namespace
 
 double shortest_period(Model& model) {
+  return max_step_period(model, AnalysisConfig::MaxStepRule::kAllModes, 0.0);
+}
+
+double max_step_period(Model& model, AnalysisConfig::MaxStepRule rule, double threshold) {
   const int n = model.size();
   Eigen::MatrixXd k = model.stiffness;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
@@ -124,11 +128,28 @@ double shortest_period(Model& model) {
     e->add_tangent(k, 0.0);
     e->revert();
   }
+  Modes modes;
   try {
-    return compute_modes(k, model.mass, model.influence).period.minCoeff();
+    modes = compute_modes(k, model.mass, model.influence);
   } catch (const std::invalid_argument&) {
     return 0.0;  // a mechanism at rest (e.g. only contacts hold a DOF): no period rule
   }
+  if (rule == AnalysisConfig::MaxStepRule::kAllModes) return modes.period.minCoeff();
+  // Effective mass ratio of each mode along each ground direction that moves mass; a mode
+  // counts if either ratio reaches the threshold. The ratios of one direction sum to 1, so
+  // at least one mode (the first of them) always counts.
+  Eigen::VectorXd ratio = modes.effective_mass_ratio;
+  if (model.influence_y.size() == n) {
+    const Eigen::VectorXd m_iota_y = model.mass * model.influence_y;
+    const double total_y = model.influence_y.dot(m_iota_y);
+    if (total_y > 0)
+      ratio = ratio.cwiseMax((modes.shape.transpose() * m_iota_y).cwiseAbs2() / total_y);
+  }
+  double period = 0.0;
+  for (int j = 0; j < n; ++j)
+    if (ratio[j] >= threshold && (period == 0.0 || modes.period[j] < period))
+      period = modes.period[j];
+  return period > 0.0 ? period : modes.period.minCoeff();
 }
 
 AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunOptions& options) {
@@ -174,8 +195,10 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   // Analysis interval H divides the record interval so that H <= the largest step.
   const bool adaptive = cfg.stepping == AnalysisConfig::Stepping::kAdaptive;
   double max_step = cfg.dt;
-  if (adaptive && max_step <= 0 && cfg.steps_per_period > 0)
-    max_step = shortest_period(model) / cfg.steps_per_period;
+  if (adaptive && max_step <= 0 && cfg.steps_per_period > 0) {
+    res.stats.step_period = max_step_period(model, cfg.max_step_rule, cfg.participation_threshold);
+    max_step = res.stats.step_period / cfg.steps_per_period;
+  }
   int per_sample = 1;
   if (max_step > 0)
     per_sample = std::max(1, static_cast<int>(std::ceil(motion.dt / max_step - 1e-9)));
