@@ -272,14 +272,30 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   double initial_energy = -1.0;  // kinetic + recoverable energy of the initial conditions
   double stored_at_start = 0.0;  // element work is counted from 0, their energy from here
 
+  // The probes' terms in one contiguous list (the record runs every step): probe p's x terms
+  // are [probe_begin[2p], probe_begin[2p + 1]), its y terms [probe_begin[2p + 1], probe_begin[2p
+  // + 2]).
+  std::vector<int> probe_dof;
+  std::vector<double> probe_coefficient;
+  std::vector<std::size_t> probe_begin{0};
+  for (const PlanProbe& probe : model.probes)
+    for (const auto* terms : {&probe.x_terms, &probe.y_terms}) {
+      for (const auto& [dof, c] : *terms) {
+        probe_dof.push_back(dof);
+        probe_coefficient.push_back(c);
+      }
+      probe_begin.push_back(probe_dof.size());
+    }
+
   auto record = [&](double t, const GroundAcceleration& ag, double h) {
     const Eigen::VectorXd& u = stepper.u();
     const Eigen::VectorXd& v = stepper.v();
     const Eigen::VectorXd& a = stepper.a();
+    for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);  // absolute acceleration
     for (int i = 0; i < n; ++i) {
       update(res.displacement[i], u[i], t);
       update(res.velocity[i], v[i], t);
-      update(res.absolute_acceleration[i], a[i] + rigid(i, ag), t);
+      update(res.absolute_acceleration[i], work[i], t);
     }
     for (std::size_t s = 0; s < res.stories.size(); ++s) {
       const Story& st = res.stories[s];
@@ -287,7 +303,6 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       update(res.drift[s], drift, t);
       update(res.drift_ratio[s], drift / st.height, t);
     }
-    for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);
     inertia.noalias() = model.mass * work;
     for (std::size_t s = 0; s < above_story.size(); ++s) {
       double shear = 0.0;
@@ -316,13 +331,17 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
     for (std::size_t p = 0; p < model.probes.size(); ++p) {
       const PlanProbe& probe = model.probes[p];
-      const bool abs_acc = probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration;
-      const auto sum = [&](const std::vector<std::pair<int, double>>& terms) {
+      // work holds the absolute accelerations until the energy terms below.
+      const double* value =
+          probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration ? work.data() : u.data();
+      const auto sum = [&](std::size_t begin, std::size_t end) {
         double x = 0.0;
-        for (const auto& [dof, c] : terms) x += c * (abs_acc ? a[dof] + rigid(dof, ag) : u[dof]);
+        for (std::size_t k = begin; k < end; ++k) x += probe_coefficient[k] * value[probe_dof[k]];
         return x;
       };
-      const double x = sum(probe.x_terms), y = sum(probe.y_terms), r = std::sqrt(x * x + y * y);
+      const double x = sum(probe_begin[2 * p], probe_begin[2 * p + 1]);
+      const double y = sum(probe_begin[2 * p + 1], probe_begin[2 * p + 2]);
+      const double r = std::sqrt(x * x + y * y);
       ProbePeaks& pk = res.probes[p];
       update(pk.x, x, t);
       update(pk.y, y, t);
@@ -338,8 +357,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     // Energy.
     double p_in = -v.dot(m_iota.col(0)) * ag.x;
     if (ag.y != 0.0) p_in -= v.dot(m_iota.col(1)) * ag.y;
-    work.noalias() = model.damping * v;
-    const double p_visc = v.dot(work);
+    const double p_visc = v.dot(damping_force);  // C v, computed for the base shear
     double p_elem = 0.0, stored = 0.0;
     for (const auto& el : model.elements) {
       p_elem += el->power(v);
