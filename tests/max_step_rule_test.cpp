@@ -108,6 +108,56 @@ TEST(MaxStepRule, EccentricBuildingStepFollowsTheFirstParticipatingMode) {
   EXPECT_DOUBLE_EQ(r_all.stats.interval, 0.005 / 3);
 }
 
+// Worst relative difference over the peaks the 3D summary prints (displacements of every DOF,
+// translational absolute accelerations, drifts, the plan probes, the bearings' outputs).
+double worst_peak_difference(const Model& model, const AnalysisResult& a, const AnalysisResult& b) {
+  double worst = 0.0;
+  const auto compare = [&](const Peak& p, const Peak& q) {
+    if (q.value > 1e-9) worst = std::max(worst, std::abs(p.value - q.value) / q.value);
+  };
+  for (int i = 0; i < model.size(); ++i) {
+    compare(a.displacement[i], b.displacement[i]);
+    if (model.dofs[i].kind != DofKind::kRotation)
+      compare(a.absolute_acceleration[i], b.absolute_acceleration[i]);
+  }
+  for (std::size_t s = 0; s < a.drift.size(); ++s) compare(a.drift[s], b.drift[s]);
+  for (std::size_t p = 0; p < a.probes.size(); ++p) {
+    compare(a.probes[p].x, b.probes[p].x);
+    compare(a.probes[p].y, b.probes[p].y);
+    compare(a.probes[p].resultant, b.probes[p].resultant);
+  }
+  for (std::size_t e = 0; e < a.element_outputs.size(); ++e)
+    for (std::size_t k = 0; k < a.element_outputs[e].size(); ++k)
+      compare(a.element_outputs[e][k], b.element_outputs[e][k]);
+  return worst;
+}
+
+// The accuracy point at the participating rule's default step (2.5 ms), on the first
+// 10 s of the RSN1084 pair (the strong motion; the whole record is measured in
+// bench/RESULTS.md): every printed peak within 0.5 % of a fixed 1e-4 s run (which agrees with
+// fixed 5e-5 s to 6e-6 on the whole record), and the energy balance within 0.1 %.
+TEST(MaxStepRule, EccentricBuildingPeaksAtTheParticipatingStepMatchAFineFixedStep) {
+  ISOPOUND_REQUIRE_RECORDS();
+  const ModelConfig c = config_file("3d-eccentric-v30.yaml");
+  GroundMotion motion = load_ground_motion(c.ground_motion, true);
+  const std::size_t samples = static_cast<std::size_t>(std::lround(10.0 / motion.dt)) + 1;
+  motion.acceleration.resize(samples);
+  motion.acceleration_y.resize(samples);
+  RunOptions options = run_options(c);
+  options.output.histories = false;
+  Model model = build_model(c);
+  const AnalysisResult fast = run_analysis(model, motion, options);
+  EXPECT_DOUBLE_EQ(fast.stats.interval, 0.0025);
+  options.analysis.stepping = AnalysisConfig::Stepping::kFixed;
+  options.analysis.dt = 1e-4;
+  Model fine_model = build_model(c);
+  const AnalysisResult fine = run_analysis(fine_model, motion, options);
+  const double worst = worst_peak_difference(model, fast, fine);
+  EXPECT_LT(worst, 5e-3);
+  EXPECT_GT(worst, 1e-5);  // the two runs do differ: the comparison is not vacuous
+  EXPECT_LT(fast.energy.relative_error, 1e-3);
+}
+
 TEST(MaxStepRule, TwoDimensionalBuildingKeepsEveryModeAndItsStep) {
   const ModelConfig c = config_file("thesis-3storey-bw.yaml");
   EXPECT_EQ(c.analysis.max_step_rule, Rule::kAllModes);  // 2D default: the rule of before
