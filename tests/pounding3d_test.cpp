@@ -125,6 +125,25 @@ TEST(Pounding3D, FaceOnReducesToThe2DKelvinVoigtWalls) {
   }
 }
 
+// Critical gap per wall (--compare-unobstructed): along x only the slab does not turn, so the
+// east wall's critical gap is the base's largest +x displacement and the west wall's its
+// largest −x one, both from the unobstructed run (an independent reading of its peaks).
+TEST(Pounding3D, CriticalGapPerWallIsTheUnobstructedClosing) {
+  ModelConfig c = load_text(walled_building("{sides: [east, west], gap: 1.5 m}", "{}"));
+  JobResult pounding;
+  pounding.motion = make_pulse(PulseParameters{});  // along x only
+  const UnobstructedResult free_run = run_unobstructed(c, pounding);
+  ASSERT_EQ(free_run.gaps.size(), 2u);
+  const Peak& u_base = free_run.job.analysis.displacement[0];  // building/base (x)
+  EXPECT_GT(u_base.positive, 0.05);
+  EXPECT_EQ(free_run.gaps[0].label, "building/base|wall east");
+  EXPECT_NEAR(free_run.gaps[0].critical_gap, u_base.positive, 1e-12);
+  EXPECT_NEAR(free_run.gaps[1].critical_gap, -u_base.negative, 1e-12);
+  EXPECT_DOUBLE_EQ(free_run.gaps[0].gap, 1.5);
+  // No contact element in the unobstructed model: 16 bearings only.
+  EXPECT_EQ(free_run.job.model.elements.size(), 16u);
+}
+
 TEST(Pounding3D, PairSearchFindsWallsAndEqualLevels) {
   ModelConfig c =
       load_text(walled_building("{sides: all, gap: {east: 20 cm, west: 25 cm, north: 20 cm, "

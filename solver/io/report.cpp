@@ -232,7 +232,9 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                   "isolator_hysteretic + impact_dissipated (+ friction_dissipated in 3D "
                   "pounding)"}};
   if (friction) j["energy"]["friction_dissipated_J"] = *friction;
-  if (unobstructed) {
+  if (unobstructed && !config.structures3d.empty()) {
+    j["unobstructed_3d"] = unobstructed3d_json(job, *unobstructed);  // report3d.cpp
+  } else if (unobstructed) {
     // The main building is structure 0 in both runs, with the same DOF and story numbering.
     const AnalysisResult& u = unobstructed->job.analysis;
     const StructureInfo& s = model.structures[0];
@@ -444,7 +446,7 @@ namespace isopound {
 
 void print_unobstructed(std::ostream& out, const ModelConfig& config, const JobResult& job,
                         const UnobstructedResult& unobstructed) {
-  (void)config;
+  if (!config.structures3d.empty()) return print_unobstructed3d(out, job, unobstructed);
   const AnalysisResult& r = job.analysis;
   const AnalysisResult& u = unobstructed.job.analysis;
   const Model& model = job.model;

@@ -170,6 +170,7 @@ struct ModelConfig {
     double elevation_tolerance = 0.01;  // m: two floors closer in elevation than this meet
     // m: pairs farther apart at rest than this cannot meet and get no contact element.
     double search_distance = 2.0;
+    bool pounding = true;  // false: no contact elements (the unobstructed comparison)
   } contact3d;
   std::vector<NeighbourConfig> neighbours;
   GroundMotionConfig ground_motion;

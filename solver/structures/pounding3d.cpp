@@ -155,6 +155,7 @@ std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
 }
 
 void add_pounding3d(Model& model, const ModelConfig& config) {
+  if (!config.contact3d.pounding) return;
   const std::vector<SiteBody> bodies = site_bodies(config);
   for (const ContactPair3D& pair : contact_pairs3d(bodies, config.contact3d)) {
     const auto body = [&](const SiteBody& s) {
