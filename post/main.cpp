@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "post/animation.h"
+#include "post/animation3d.h"
 #include "post/headless.h"
 #include "post/plot_run.h"
 #include "post/polar_study.h"
@@ -274,7 +275,8 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   if (preview >= 0.0) {
     std::fflush(stdout);
     const PrivateDisplay display;
-    render_png(frame_figure(animation_frame(run, preview, opt), opt.scale),
+    const FrameMesh frame = animation_frame(run, preview, opt);
+    render_png(run.three_d ? frame_figure3d(frame, opt.scale) : frame_figure(frame, opt.scale),
                (out_dir / "preview.png").string());
     std::printf("Wrote %s/preview.png (t = %g s)\n", out_dir.string().c_str(), preview);
   }

@@ -56,6 +56,18 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
   frame.width = std::max(10.0, w - ml - mr);
   frame.height = std::max(10.0, h - mb - mt);
   range_of(panel, frame.x_lo, frame.x_hi, frame.y_lo, frame.y_hi);
+  if (panel.equal_axes) {
+    // Widen the range that has fewer pixels per unit, about its centre.
+    const double per_x = (frame.x_hi - frame.x_lo) / frame.width;
+    const double per_y = (frame.y_hi - frame.y_lo) / frame.height;
+    if (per_x > per_y) {
+      const double c = 0.5 * (frame.y_lo + frame.y_hi), half = 0.5 * per_x * frame.height;
+      frame.y_lo = c - half, frame.y_hi = c + half;
+    } else {
+      const double c = 0.5 * (frame.x_lo + frame.x_hi), half = 0.5 * per_y * frame.width;
+      frame.x_lo = c - half, frame.x_hi = c + half;
+    }
+  }
   const double L = frame.left, B = frame.bottom, R = L + frame.width, T = B + frame.height;
 
   for (double t : nice_ticks(frame.x_lo, frame.x_hi, 7)) {
