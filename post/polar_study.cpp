@@ -260,22 +260,21 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     if (band && groups.size() == 1) {
       // One curve: member 0 (the model as given) thin, the ensemble mean thick, min-max shaded.
       e.title += " (ensemble)";
-      e.curves.push_back({"member 0 (as given)", angles, v[0], Rgb{31, 119, 180}, 1.5});
-      if (ens_mean) e.mean = PolarCurve{"ensemble mean", angles, mean_e[0], Rgb{0, 0, 0}, 3.0};
-      e.bands.push_back({"ensemble min–max", angles, lo[0], hi[0], Rgb{198, 214, 238}});
+      e.curves.push_back({"member 0", angles, v[0], Rgb{31, 119, 180}, 1.5});
+      if (ens_mean) e.mean = PolarCurve{"ens. mean", angles, mean_e[0], Rgb{0, 0, 0}, 3.0};
+      e.bands.push_back({"ens. min–max", angles, lo[0], hi[0], Rgb{198, 214, 238}});
       csv << "," << name(0) << ",min,mean,max";
     } else if (band) {
       // Several curves: each its ensemble mean (member 0 without one) over its own min-max band
       // in a light tint of its colour; the mean over the curves as before, without a band.
-      e.title += " (ensemble)";
+      e.title += ens_mean ? " (ensemble means, min–max)" : " (ensemble min–max)";
       for (std::size_t g = 0; g < groups.size(); ++g) {
         const Rgb c = series_colour(static_cast<int>(g));
         const Rgb tint{static_cast<unsigned char>(c.r + (255 - c.r) * 3 / 4),
                        static_cast<unsigned char>(c.g + (255 - c.g) * 3 / 4),
                        static_cast<unsigned char>(c.b + (255 - c.b) * 3 / 4)};
-        e.curves.push_back({name(g) + (ens_mean ? " (ensemble mean)" : ""), angles,
-                            ens_mean ? mean_e[g] : v[g], c, 1.8});
-        e.bands.push_back({g == 0 ? "ensemble min–max" : "", angles, lo[g], hi[g], tint});
+        e.curves.push_back({name(g), angles, ens_mean ? mean_e[g] : v[g], c, 1.8});
+        e.bands.push_back({g == 0 ? "ens. min–max" : "", angles, lo[g], hi[g], tint});
         csv << "," << name(g) << "," << name(g) << "_min," << name(g) << "_mean," << name(g)
             << "_max";
       }
