@@ -247,27 +247,46 @@ Figure frame_figure3d(const FrameMesh& mesh, double scale, int width, int height
     if (a.name == "block") block = &a;
   static constexpr Rgb kColours[] = {{31, 119, 180}, {90, 90, 90},  {44, 160, 44}, {150, 60, 40},
                                      {214, 39, 40},  {230, 0, 200}, {255, 140, 0}};
-  // Faces and lines (as thin quads) back to front, largest depth first, so nearer slabs hide
-  // the columns behind them.
+  // A layered scene seen from above: what is higher hides what is lower within its outline, so
+  // items are drawn by mean height, then back to front. Lines are cut in pieces, each sorted on
+  // its own (a column runs the height of its storey).
   struct Item {
-    double depth;
+    double z, depth;
     std::size_t cell;
+    double s0 = 0.0, s1 = 1.0;  // the piece of a line
   };
+  constexpr int kPieces = 8;
   std::vector<Item> items;
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
-    if (mesh.cells[c].points.size() < 2) continue;
-    double d = 0.0;
-    for (int i : mesh.cells[c].points) d += depth[i];
-    items.push_back({d / mesh.cells[c].points.size(), c});
+    const std::vector<int>& p = mesh.cells[c].points;
+    if (p.size() == 2) {
+      for (int k = 0; k < kPieces; ++k) {
+        const double s0 = static_cast<double>(k) / kPieces, s1 = (k + 1.0) / kPieces;
+        const double mid = 0.5 * (s0 + s1);
+        const auto& a = mesh.points[p[0]];
+        const auto& b = mesh.points[p[1]];
+        items.push_back({a[2] + mid * (b[2] - a[2]),
+                         depth[p[0]] + mid * (depth[p[1]] - depth[p[0]]), c, s0, s1});
+      }
+      continue;
+    }
+    if (p.size() < 3) continue;
+    double d = 0.0, z = 0.0;
+    for (int i : p) d += depth[i], z += mesh.points[i][2];
+    items.push_back({z / p.size(), d / p.size(), c});
   }
-  std::stable_sort(items.begin(), items.end(),
-                   [](const Item& a, const Item& b) { return a.depth > b.depth; });
+  std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
+    return a.z != b.z ? a.z < b.z : a.depth > b.depth;
+  });
   for (const Item& item : items) {
     const MeshCell& cell = mesh.cells[item.cell];
     const int b = block ? std::clamp(static_cast<int>(block->values[item.cell]), 0, 6) : 0;
     std::vector<Point2> pts;
     for (int i : cell.points) pts.push_back(px(i));
     if (pts.size() == 2) {
+      const Point2 a = pts[0], d{pts[1].x - pts[0].x, pts[1].y - pts[0].y};
+      pts = {{a.x + item.s0 * d.x, a.y + item.s0 * d.y},
+             {a.x + item.s1 * d.x, a.y + item.s1 * d.y}};
       const double w = (b >= 5 ? 3.0 : 1.6) / 2;
       const double dx = pts[1].x - pts[0].x, dy = pts[1].y - pts[0].y;
       const double len = std::max(std::hypot(dx, dy), 1e-9);
