@@ -110,7 +110,10 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     const PlanBody& body = run.site.bodies[i];
     const BodyState& st = states[i];
     const bool wall = body.role == "wall";
-    const double z1 = body.elevation, z0 = wall ? body.elevation - body.height : z1 - H;
+    // A slab hangs below its level; a wall stands from the underside of the base slab it faces
+    // (its base, elevation 0, minus the slab thickness) so the slab's edge faces it.
+    const double z0 = body.elevation - H;
+    const double z1 = wall ? z0 + body.height : body.elevation;
     CellValues v;
     v.block = wall ? Block::kWall : Block::kSlab;
     v.structure = st.structure;

@@ -11,7 +11,8 @@ namespace isopound::post {
 
 // The frame at time t of a 3D run (histories interpolated linearly between rows). Drawn
 // coordinates: x, y plan (W), z up; a slab occupies [elevation − thickness, elevation], a wall
-// [elevation − height, elevation] (its top flush with the ground, where the base slab's top is).
+// [elevation − thickness, elevation − thickness + height] (from the base slab's underside, so
+// the slab's edge faces it).
 //   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s2)
 //   cell data:  block (Block), structure (index in run.structures, -1 walls), drift_ratio
 //               (columns: |relative displacement of the column's ends| / storey height),

@@ -1,6 +1,7 @@
-// Plan geometry of a 3D model at rest (see site3d.h). Until the solver's site_bodies() exists
-// this follows its conventions: levels bottom to top, base slab top at 0, floor k's top at the
-// sum of storeys 1..k, outlines placed in W by the building's position and rotation.
+// Plan geometry of a 3D model at rest (see site3d.h). Slabs, columns and bearings from the
+// buildings (levels bottom to top, base slab at 0, floor k at the sum of storeys 1..k, outlines
+// placed in W by the building's position and rotation); walls from the solver's site_bodies()
+// (solver/structures/pounding3d.h), whose slabs must be these (checked: one geometry).
 #include "post/site3d.h"
 
 #include <cmath>
@@ -9,6 +10,10 @@
 
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
+#if __has_include("solver/structures/pounding3d.h")
+#include "solver/structures/pounding3d.h"
+#define ISOPOUND_POST_HAVE_SITE_BODIES 1
+#endif
 
 namespace isopound::post {
 namespace {
@@ -70,6 +75,28 @@ Site3D site_geometry(const ModelConfig& config) {
       below = upper;
     }
   }
+#ifdef ISOPOUND_POST_HAVE_SITE_BODIES
+  for (const SiteBody& b : site_bodies(config)) {
+    if (b.role != "wall") {
+      // The solver's slab: the same outline and level as the one drawn.
+      const int i = site.find(b.label());
+      if (i < 0 || std::abs(site.bodies[i].elevation - b.elevation) > 1e-9 ||
+          site.bodies[i].plan_W.size() != b.plan_W.vertices().size())
+        throw std::invalid_argument("post: slab '" + b.label() +
+                                    "' of the solver's site differs from the drawn one");
+      continue;
+    }
+    PlanBody w;
+    w.structure = b.structure;
+    w.level = b.level;
+    w.role = "wall";
+    w.elevation = b.elevation;
+    w.height = b.height;
+    w.plan_W.assign(b.plan_W.vertices().begin(), b.plan_W.vertices().end());
+    w.p_WCM = area_properties(b.plan_W).p_WC;
+    site.bodies.push_back(std::move(w));
+  }
+#endif
   return site;
 }
 

@@ -16,8 +16,8 @@ struct PlanBody {
   std::string structure;     // "building", "east-neighbour", "wall east"
   std::string level;         // "base", "floor 1", ..., "wall"
   std::string role;          // "slab" | "wall"
-  double elevation = 0.0;    // m: a slab's top; a wall's top (the ground, 0)
-  double height = 0.0;       // m: a wall's height (drawn down from its top); slab: 0
+  double elevation = 0.0;    // m: a slab's level (base slab 0); a wall's base (0)
+  double height = 0.0;       // m: a wall's height; a slab 0
   std::vector<Vec2> plan_W;  // outline, counter-clockwise (validated as a ConvexPolygon)
   Vec2 p_WCM;                // centre of mass at rest (slabs; walls: centroid)
   std::string dof_label;     // history label of its DOFs ("building/floor 1"), "" when fixed
@@ -49,8 +49,9 @@ struct Site3D {
   int find(const std::string& key) const;  // body index by key(), -1 when absent
 };
 
-// Slabs, columns and bearings of every 3D structure of the model, and its walls when the model
-// has them. Throws std::invalid_argument for a non-convex plan (the solver would not have run).
+// Slabs, columns and bearings of every 3D structure of the model, and its moat walls (from the
+// solver's site_bodies() when the solver has it). Throws std::invalid_argument for a non-convex
+// plan (the solver would not have run).
 Site3D site_geometry(const ModelConfig& config);
 
 }  // namespace isopound::post
