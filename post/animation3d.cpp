@@ -176,7 +176,8 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     v.structure = A.structure;
     v.normal_force = e->normal_force;
     v.tangential_force = e->tangential_force;
-    const Vec2 force = e->normal_force * n + e->tangential_force * tangent;
+    // The force on B (THEORY-notes, polygon contact): F_N n_AB − F_T t_AB.
+    const Vec2 force = e->normal_force * n - e->tangential_force * tangent;
     v.contact_force = {force.x, force.y, 0.0};
     v.area = e->area;
     v.penetration = e->indentation;
@@ -202,7 +203,7 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     const Vec2 c{e->x_C, e->y_C};
     for (const auto& [block, dir, size] :
          {std::tuple{Block::kNormalForce, n, e->normal_force},
-          std::tuple{Block::kTangentialForce, tangent, e->tangential_force}}) {
+          std::tuple{Block::kTangentialForce, tangent, -e->tangential_force}}) {
       CellValues fv = v;
       fv.block = block;
       const Vec2 tip = c + (per_newton * size) * dir;

@@ -17,7 +17,7 @@ namespace isopound::post {
 //   cell data:  block (Block), structure (index in run.structures, -1 walls), drift_ratio
 //               (columns: |relative displacement of the column's ends| / storey height),
 //               bearing_force (bearings: resultant, N), contact_force (3, N, the force on B of
-//               the pair "A|B": F_N n_AB + F_T t_AB), normal_force, tangential_force (N),
+//               the pair "A|B": F_N n_AB − F_T t_AB), normal_force, tangential_force (N),
 //               area (m2), penetration (indentation δ_N, m)
 // Contact blocks (the overlap polygon of A and B recomputed at the frame's state, drawn on A's
 // top, or a vertex at the logged centroid when the interpolated state does not overlap, plus the

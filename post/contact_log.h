@@ -15,7 +15,7 @@ struct ContactEvent {
   std::string event;  // onset | contact | separation
   bool in_contact = false, slipping = false;
   double area = 0.0, indentation = 0.0;               // m2, m
-  double normal_force = 0.0, tangential_force = 0.0;  // N (tangential along t_AB = n_AB + 90°)
+  double normal_force = 0.0, tangential_force = 0.0;  // N; the force on B: F_N n_AB − F_T t_AB
   double x_C = 0.0, y_C = 0.0;                        // m, centroid of the overlap (plan W)
   double n_x = 0.0, n_y = 0.0;                        // unit normal n_AB, from A into B
 };

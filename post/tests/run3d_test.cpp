@@ -225,7 +225,8 @@ TEST(PostRun3D, AnimateFramesReadBackWithRangesAndContactBlocksExactlyWhileInCon
       if (b == 4) {
         EXPECT_GE(fn->GetComponent(c, 0), 4e5);
         EXPECT_NEAR(force->GetComponent(c, 0), fn->GetComponent(c, 0), 1e-6);  // n = +x
-        EXPECT_NEAR(force->GetComponent(c, 1), -1e5, 1e-6);                    // F_T along t = +y
+        EXPECT_NEAR(force->GetComponent(c, 1), 1e5,
+                    1e-6);  // on B: F_N n - F_T t, F_T = -1e5, t = +y
       }
     }
     // Contact blocks: one overlap/centroid cell and two force lines per pair in contact.
@@ -342,7 +343,7 @@ TEST(PostRun3D, ContactBlockIsTheRecomputedOverlapWithForceLinesAtTheCentroid) {
   }
   EXPECT_NEAR(0.5 * area2, 0.15 * 4.0, 1e-12);
   // Force lines: from the centroid (2, 0) along n (+x) by 4 m (the largest force) and along
-  // t = +y by 4 x 0.5/2 = 1 m.
+  // -t = -y by 4 x 0.5/2 = 1 m (the force on B is F_N n - F_T t).
   ASSERT_GE(normal, 0);
   ASSERT_GE(tangential, 0);
   const auto& n0 = m.points[m.cells[normal].points[0]];
@@ -352,7 +353,7 @@ TEST(PostRun3D, ContactBlockIsTheRecomputedOverlapWithForceLinesAtTheCentroid) {
   EXPECT_NEAR(n1[1] - n0[1], 0.0, 1e-12);
   const auto& t0 = m.points[m.cells[tangential].points[0]];
   const auto& t1 = m.points[m.cells[tangential].points[1]];
-  EXPECT_NEAR(t1[1] - t0[1], 1.0, 1e-12);
+  EXPECT_NEAR(t1[1] - t0[1], -1.0, 1e-12);
   EXPECT_NEAR(t1[0] - t0[0], 0.0, 1e-12);
   // After separation: no contact cells.
   ContactEvent off = on;
