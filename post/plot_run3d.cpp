@@ -206,6 +206,40 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
                    xy_figure(loops, 3, 1500, 480, "Bearings: " + run.dir.filename().string())});
   }
 
+  // ---- contacts: F_N against the indentation δ_N and F_T against F_N per pair (event log)
+  if (!run.contact_log.pairs.empty()) {
+    std::vector<Panel> contact_panels;
+    for (const auto& [pair, rows] : run.contact_log.pairs) {
+      double peak = 0.0;
+      for (const ContactEvent& e : rows)
+        peak = std::max({peak, std::abs(e.normal_force), std::abs(e.tangential_force)});
+      std::string unit;
+      const double div = force_scale(peak, unit);
+      Panel pn{pair, "indentation δ_N [mm]", "F_N [" + unit + "]", {}, false, false, true};
+      Panel pt{pair, "F_N [" + unit + "]", "F_T [" + unit + "]", {}, false, true};
+      // One line per episode (onset to separation), so that episodes are not joined.
+      Series n_line{"", {}, {}, Rgb{214, 39, 40}, 1.2}, t_line{"", {}, {}, Rgb{255, 127, 14}, 1.2};
+      const auto flush = [&] {
+        if (!n_line.x.empty()) pn.series.push_back(n_line), pt.series.push_back(t_line);
+        n_line.x.clear(), n_line.y.clear(), t_line.x.clear(), t_line.y.clear();
+      };
+      for (const ContactEvent& e : rows) {
+        if (e.event == "onset") flush();
+        if (!e.in_contact) continue;
+        n_line.x.push_back(1e3 * e.indentation);
+        n_line.y.push_back(e.normal_force / div);
+        t_line.x.push_back(e.normal_force / div);
+        t_line.y.push_back(e.tangential_force / div);
+      }
+      flush();
+      contact_panels.push_back(pn);
+      contact_panels.push_back(pt);
+    }
+    const int rows_c = static_cast<int>(contact_panels.size() / 2);
+    out.push_back({"contacts.png", xy_figure(contact_panels, 2, 1100, 360 * rows_c + 40,
+                                             "Contacts: " + run.dir.filename().string())});
+  }
+
   // ---- base slab in plan: at true scale with the walls, and its displacements with the
   // walls' clearance lines {d : d . n = gap} (n: from the slab at rest towards the wall).
   Panel plan{short_label(base.label, run) + " in plan (true scale)", "x [m]", "y [m]", {}, true};

@@ -11,7 +11,9 @@
 
 namespace isopound::post {
 
-// time_histories.png, hysteresis.png (when the run has bearings) and trajectory.png.
+// time_histories.png, hysteresis.png (when the run has bearings), contacts.png (when the event
+// log has pairs: F_N against δ_N and F_T against F_N per pair, one line per episode) and
+// trajectory.png.
 std::vector<NamedFigure> run_figures3d(const RunData& run);
 
 // The worst corner of a storey: the corner of the upper floor's plan whose drift ratio peaks

@@ -263,6 +263,9 @@ TEST(PostRun3D, AnimateFramesReadBackWithRangesAndContactBlocksExactlyWhileInCon
   const test::Image hy = test::read_png((dir / "plot" / "hysteresis.png").string());
   EXPECT_EQ(hy.width, 1500);
   EXPECT_GT(hy.variance(), 100.0);
+  const test::Image ct = test::read_png((dir / "plot" / "contacts.png").string());
+  EXPECT_EQ(ct.height, 360 * 3 + 40);  // three pairs in the log, one row each
+  EXPECT_GT(ct.variance(), 50.0);
   const test::Image tr = test::read_png((dir / "plot" / "trajectory.png").string());
   EXPECT_EQ(tr.width, 1400);
   EXPECT_GT(tr.variance(), 50.0);
