@@ -111,10 +111,9 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     const PlanBody& body = run.site.bodies[i];
     const BodyState& st = states[i];
     const bool wall = body.role == "wall";
-    // A slab hangs below its level; a wall stands from the underside of the base slab it faces
-    // (its base, elevation 0, minus the slab thickness) so the slab's edge faces it.
-    const double z0 = body.elevation - H;
-    const double z1 = wall ? z0 + body.height : body.elevation;
+    // A slab hangs below its level; a wall's top is flush with the ground, the base slab's level
+    // (the moat wall retains the soil around the isolation level): [-height, 0].
+    const double z1 = body.elevation, z0 = z1 - (wall ? body.height : H);
     CellValues v;
     v.block = wall ? Block::kWall : Block::kSlab;
     v.structure = st.structure;

@@ -11,8 +11,8 @@ namespace isopound::post {
 
 // The frame at time t of a 3D run (histories interpolated linearly between rows). Drawn
 // coordinates: x, y plan (W), z up; a slab occupies [elevation − thickness, elevation], a wall
-// [elevation − thickness, elevation − thickness + height] (from the base slab's underside, so
-// the slab's edge faces it).
+// (the solver's site puts its base at 0) [−height, 0]: its top flush with the ground, the base
+// slab's level, as a moat wall retaining the soil around the isolation level.
 //   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s2)
 //   cell data:  block (Block), structure (index in run.structures, -1 walls), drift_ratio
 //               (columns: |relative displacement of the column's ends| / storey height),

@@ -162,8 +162,9 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
         ft.push_back(e.tangential_force / div);
       }
       tt.push_back(t.back()), fn.push_back(0.0), ft.push_back(0.0);
-      forces.series.push_back({pair + " F_N", tt, fn, series_colour(2 * k), 1.5});
-      forces.series.push_back({pair + " F_T", tt, ft, series_colour(2 * k + 1), 1.0});
+      const std::string name = short_label(pair, run);
+      forces.series.push_back({name + " F_N", tt, fn, series_colour(2 * k), 1.5});
+      forces.series.push_back({name + " F_T", tt, ft, series_colour(2 * k + 1), 1.0});
       ++k;
     }
     panels.push_back(forces);
@@ -215,8 +216,14 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
         peak = std::max({peak, std::abs(e.normal_force), std::abs(e.tangential_force)});
       std::string unit;
       const double div = force_scale(peak, unit);
-      Panel pn{pair, "indentation δ_N [mm]", "F_N [" + unit + "]", {}, false, false, true};
-      Panel pt{pair, "F_N [" + unit + "]", "F_T [" + unit + "]", {}, false, true};
+      Panel pn{short_label(pair, run),
+               "indentation δ_N [mm]",
+               "F_N [" + unit + "]",
+               {},
+               false,
+               false,
+               true};
+      Panel pt{short_label(pair, run), "F_N [" + unit + "]", "F_T [" + unit + "]", {}, false, true};
       // One line per episode (onset to separation), so that episodes are not joined.
       Series n_line{"", {}, {}, Rgb{214, 39, 40}, 1.2}, t_line{"", {}, {}, Rgb{255, 127, 14}, 1.2};
       const auto flush = [&] {
