@@ -92,9 +92,9 @@ std::string synthetic_log() {
 
 // The log's rule, computed here independently: in contact at t iff the pair's last row with
 // time <= t has in_contact 1.
-std::map<std::string, bool> in_contact_at(double t) {
+std::map<std::string, bool> in_contact_at(double t, const std::string& log = synthetic_log()) {
   std::map<std::string, std::pair<double, bool>> last;
-  std::istringstream in(synthetic_log());
+  std::istringstream in(log);
   std::string line;
   std::getline(in, line);
   while (std::getline(in, line)) {
@@ -364,6 +364,84 @@ TEST(PostRun3D, ContactBlockIsTheRecomputedOverlapWithForceLinesAtTheCentroid) {
   run.contact_log.pairs["a/floor 1|b/floor 1"].push_back(off);
   const FrameMesh later = animation_frame3d(run, 1.5, o);
   for (double b : later.cell_data[0].values) EXPECT_LT(b, 4.0);
+}
+
+// A real short pounding run: the isolated building of the first test inside moat walls on all
+// four sides at 4 cm, the pulse from 3 s, stopped at 4.2 s (t_end) after about a dozen impacts
+// per wall. Frames every 10 ms (on history rows) from 3.4 s: contact blocks exactly where the
+// solver's own contact_events.csv says in contact; the walls are drawn; logged forces and areas
+// within the summary's contacts_3d peaks.
+TEST(PostRun3D, RealWallRunHasContactBlocksExactlyWhereItsEventLogSaysInContact) {
+  const auto dir = test::scratch_dir("walls3d");
+  std::string yaml = kTwoBuildings;
+  yaml = yaml.substr(0, yaml.find("  - name: east"));
+  yaml += "    walls: {sides: all, gap: 4 cm}\n";
+  yaml += std::string(kTwoBuildings).substr(std::string(kTwoBuildings).find("ground_motion:"));
+  yaml.replace(yaml.find("  extra_time: 2 s\n"), 17, "");
+  yaml.replace(yaml.find("output: {interval: 0.01 s}"), 26,
+               "analysis: {t_end: 4.2 s}\noutput: {interval: 0.005 s}");
+  std::ofstream(dir / "walls.yaml") << yaml;
+  auto r =
+      test::run_solver("run " + (dir / "walls.yaml").string() + " -o " + (dir / "run").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output << yaml;
+  r = test::run_post("animate " + (dir / "run").string() + " --start 3.4 --end 4.2 --fps 100 -o " +
+                     (dir / "anim").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+
+  std::ifstream log_file(dir / "run" / "contact_events.csv");
+  std::stringstream log;
+  log << log_file.rdbuf();
+  std::ifstream sj(dir / "run" / "summary.json");
+  const auto summary = nlohmann::json::parse(sj);
+  ASSERT_EQ(summary["contacts_3d"].size(), 4u);
+  double peak_fn = 0.0, peak_area = 0.0;
+  int impacts = 0;
+  for (const auto& c : summary["contacts_3d"]) {
+    peak_fn = std::max(peak_fn, peak_value(c["normal_force"]));
+    peak_area = std::max(peak_area, peak_value(c["area"]));
+    impacts += c["impacts"].get<int>();
+  }
+  ASSERT_GT(impacts, 8) << "the run must pound";
+
+  int frames_in_contact = 0, polygons = 0;
+  double max_fn = 0.0, max_area = 0.0;
+  for (int k = 0; k <= 80; ++k) {
+    const double t = 3.4 + k / 100.0;
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06d.vtu", k);
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((dir / "anim" / name).string().c_str());
+    reader->Update();
+    vtkUnstructuredGrid* g = reader->GetOutput();
+    vtkDataArray* block = g->GetCellData()->GetArray("block");
+    vtkDataArray* fn = g->GetCellData()->GetArray("normal_force");
+    vtkDataArray* area = g->GetCellData()->GetArray("area");
+    ASSERT_TRUE(block && fn && area) << name;
+    std::map<int, int> count;
+    for (vtkIdType c = 0; c < block->GetNumberOfTuples(); ++c) {
+      const int b = static_cast<int>(block->GetComponent(c, 0));
+      ++count[b];
+      if (b == 4) {
+        polygons += g->GetCellType(c) == VTK_POLYGON;
+        max_fn = std::max(max_fn, fn->GetComponent(c, 0));
+        max_area = std::max(max_area, area->GetComponent(c, 0));
+      }
+    }
+    int expected = 0;
+    for (const auto& [pair, in] : in_contact_at(t, log.str())) expected += in;
+    EXPECT_EQ(count[4], expected) << "t = " << t;
+    EXPECT_EQ(count[5], expected) << "t = " << t;
+    EXPECT_EQ(count[6], expected) << "t = " << t;
+    EXPECT_EQ(count[3], 4 * 6) << "four walls, each 6 faces";
+    frames_in_contact += expected > 0;
+  }
+  EXPECT_GT(frames_in_contact, 3);
+  EXPECT_GT(polygons, 0) << "some recomputed overlaps are polygons";
+  // The log holds 9 significant digits of what the summary's peak holds in full.
+  EXPECT_LE(max_fn, peak_fn * (1 + 1e-8));
+  EXPECT_LE(max_area, peak_area * (1 + 1e-8));
+  EXPECT_GT(max_fn, 0.0);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
