@@ -247,8 +247,11 @@ Figure frame_figure3d(const FrameMesh& mesh, double scale, int width, int height
     return Point2{ox + (screen[i].x - x0) * s, margin + (screen[i].y - y0) * s};
   };
   const MeshArray* block = nullptr;
-  for (const MeshArray& a : mesh.cell_data)
+  const MeshArray* structure = nullptr;
+  for (const MeshArray& a : mesh.cell_data) {
     if (a.name == "block") block = &a;
+    if (a.name == "structure") structure = &a;
+  }
   static constexpr Rgb kColours[] = {{31, 119, 180}, {90, 90, 90},  {44, 160, 44}, {150, 60, 40},
                                      {214, 39, 40},  {230, 0, 200}, {255, 140, 0}};
   // A layered scene seen from above: what is higher hides what is lower within its outline, so
@@ -311,7 +314,9 @@ Figure frame_figure3d(const FrameMesh& mesh, double scale, int width, int height
     if (area2 <= 0.0 && b != 4) continue;  // facing away (closed slabs and walls): hidden
     // Tops and bottoms in the block colour, sides darker (a light from above).
     const double light = cell.vtk_type == 7 ? 1.0 : 0.6;
-    const Rgb base = kColours[b];
+    // Slabs of the other structures (neighbours) in a paler blue.
+    const bool other = b == 0 && structure && structure->values[item.cell] > 0.0;
+    const Rgb base = other ? Rgb{130, 160, 200} : kColours[b];
     fig.polygons.push_back(
         {pts,
          {static_cast<unsigned char>(base.r * light), static_cast<unsigned char>(base.g * light),
