@@ -76,7 +76,7 @@ DisplayUnit unit_from_study(const StudyStore& store, const std::string& column) 
 EnsembleColumns ensemble_columns(const std::vector<std::string>& outputs,
                                  const std::string& quantity) {
   const auto find = [&](const std::string& stat) {
-    for (const char* infix : {"_", ".", "_ens_", "_ensemble_"}) {
+    for (const char* infix : {"_ens_", "_", ".", "_ensemble_"}) {
       const auto it = std::find(outputs.begin(), outputs.end(), quantity + infix + stat);
       if (it != outputs.end()) return static_cast<int>(it - outputs.begin());
     }

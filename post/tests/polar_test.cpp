@@ -199,7 +199,7 @@ TEST(PostPolar, CommandErrorsNameTheProblem) {
 }
 
 // An ensemble study: axes record x angle (rad), outputs u_base (member 0) and its ensemble
-// statistics u_base_min, u_base_mean, u_base_max, u_base_std, values from formulas (SI, m).
+// statistics u_base_ens_min, _mean, _max, _std and the horizon, values from formulas (SI, m).
 double ens_mean(double a_deg, int record) {
   return 0.20 + 0.05 * std::cos((a_deg - 75.0) * kPi / 180) + 0.03 * record;
 }
@@ -207,7 +207,9 @@ std::string make_ensemble_study(const std::filesystem::path& dir, int records,
                                 bool member0 = true) {
   StoreLayout layout;
   layout.axes = {"record", "angle"};
-  layout.outputs = {"u_base", "u_base_min", "u_base_mean", "u_base_max", "u_base_std"};
+  // The study engine's naming (docs/studies.md, `ensemble: N`): c_ens_min, _mean, _max, _std.
+  layout.outputs = {"u_base",         "u_base_ens_min", "u_base_ens_mean",
+                    "u_base_ens_max", "u_base_ens_std", "ens_horizon_s"};
   if (!member0) layout.outputs[0] = "other";
   const std::int64_t na = 24, count = records * na;
   const auto cells = [&](std::int64_t c) {
@@ -223,7 +225,7 @@ std::string make_ensemble_study(const std::filesystem::path& dir, int records,
     RunRecord r;
     r.case_id = c;
     r.ok = true;
-    r.values = {m + 0.01, m - 0.04, m, m + 0.06, 0.02};
+    r.values = {m + 0.01, m - 0.04, m, m + 0.06, 0.02, 3.5};
     runs.push_back(r);
   }
   store.commit(runs, store.begin_session(1, 1, false, count));
@@ -322,11 +324,11 @@ TEST(PostPolar, EnsembleBandIsShadedBetweenMinAndMaxWithTheMeanLineOnIt) {
 TEST(PostPolar, ATableWithOnlyEnsembleStatisticsDrawsTheEnsembleMean) {
   const auto dir = test::scratch_dir("polarensonly");
   PolarStudyOptions opt;
-  opt.quantity = "u_base";  // only u_base_min, _mean, _max, _std are columns
+  opt.quantity = "u_base";  // only u_base_ens_min, _mean, _max, _std are columns
   const std::string db = make_ensemble_study(dir, 1, false);
   const PolarStudyResult r = read_polar_study(db, opt);
   ASSERT_EQ(r.notes.size(), 1u);
-  EXPECT_NE(r.notes[0].find("its ensemble mean 'u_base_mean' is drawn"), std::string::npos);
+  EXPECT_NE(r.notes[0].find("its ensemble mean 'u_base_ens_mean' is drawn"), std::string::npos);
   ASSERT_EQ(r.envelope.bands.size(), 1u);
   EXPECT_NEAR(r.envelope.curves[0].value[3], ens_mean(45.0, 0), 1e-12);
   // A name with no column and no statistics is still an error listing the columns.
@@ -335,7 +337,7 @@ TEST(PostPolar, ATableWithOnlyEnsembleStatisticsDrawsTheEnsembleMean) {
     read_polar_study(db, opt);
     ADD_FAILURE() << "no error";
   } catch (const PolarStudyError& e) {
-    EXPECT_NE(std::string(e.what()).find("its quantities are: other, u_base_min"),
+    EXPECT_NE(std::string(e.what()).find("its quantities are: other, u_base_ens_min"),
               std::string::npos)
         << e.what();
   }
