@@ -150,8 +150,19 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
         peak = std::max({peak, std::abs(e.normal_force), std::abs(e.tangential_force)});
     std::string unit;
     const double div = force_scale(peak, unit);
-    Panel forces{"Contact forces (event log)", "time [s]", "force [" + unit + "]", {}, true, true};
-    int k = 0;
+    Panel normal{"Normal contact forces F_N (event log)",
+                 "time [s]",
+                 "F_N [" + unit + "]",
+                 {},
+                 true,
+                 false,
+                 true};
+    Panel tangential{"Tangential contact forces F_T (event log; on B: F_N n − F_T t)",
+                     "time [s]",
+                     "F_T [" + unit + "]",
+                     {},
+                     true,
+                     true};
     for (const auto& [pair, rows] : run.contact_log.pairs) {
       // Zero from the start and between episodes (the log holds in-contact and separation rows).
       std::vector<double> tt{t.front()}, fn{0.0}, ft{0.0};
@@ -163,11 +174,11 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
       }
       tt.push_back(t.back()), fn.push_back(0.0), ft.push_back(0.0);
       const std::string name = short_label(pair, run);
-      forces.series.push_back({name + " F_N", tt, fn, series_colour(2 * k), 1.5});
-      forces.series.push_back({name + " F_T", tt, ft, series_colour(2 * k + 1), 1.0});
-      ++k;
+      normal.series.push_back(line_series(name, tt, fn));
+      tangential.series.push_back(line_series(name, tt, ft));
     }
-    panels.push_back(forces);
+    panels.push_back(normal);
+    panels.push_back(tangential);
   }
   out.push_back(
       {"time_histories.png", xy_figure(panels, 1, 1000, 230 * static_cast<int>(panels.size()) + 40,

@@ -258,7 +258,7 @@ TEST(PostRun3D, AnimateFramesReadBackWithRangesAndContactBlocksExactlyWhileInCon
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const test::Image th = test::read_png((dir / "plot" / "time_histories.png").string());
   EXPECT_EQ(th.width, 1000);
-  EXPECT_EQ(th.height, 230 * 4 + 40);  // base, drifts, accelerations, contact forces
+  EXPECT_EQ(th.height, 230 * 5 + 40);  // base, drifts, accelerations, F_N, F_T
   EXPECT_GT(th.variance(), 100.0);
   const test::Image hy = test::read_png((dir / "plot" / "hysteresis.png").string());
   EXPECT_EQ(hy.width, 1500);
