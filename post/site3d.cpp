@@ -10,10 +10,7 @@
 
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
-#if __has_include("solver/structures/pounding3d.h")
 #include "solver/structures/pounding3d.h"
-#define ISOPOUND_POST_HAVE_SITE_BODIES 1
-#endif
 
 namespace isopound::post {
 namespace {
@@ -75,7 +72,6 @@ Site3D site_geometry(const ModelConfig& config) {
       below = upper;
     }
   }
-#ifdef ISOPOUND_POST_HAVE_SITE_BODIES
   for (const SiteBody& b : site_bodies(config)) {
     if (b.role != "wall") {
       // The solver's slab: the same outline and level as the one drawn.
@@ -96,7 +92,6 @@ Site3D site_geometry(const ModelConfig& config) {
     w.p_WCM = area_properties(b.plan_W).p_WC;
     site.bodies.push_back(std::move(w));
   }
-#endif
   return site;
 }
 

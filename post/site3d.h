@@ -50,8 +50,8 @@ struct Site3D {
 };
 
 // Slabs, columns and bearings of every 3D structure of the model, and its moat walls (from the
-// solver's site_bodies() when the solver has it). Throws std::invalid_argument for a non-convex
-// plan (the solver would not have run).
+// solver's site_bodies(), whose slabs are checked against these). Throws std::invalid_argument for
+// a non-convex plan (the solver would not have run).
 Site3D site_geometry(const ModelConfig& config);
 
 }  // namespace isopound::post
