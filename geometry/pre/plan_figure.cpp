@@ -209,18 +209,20 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
     f.lines.push_back({{{a.x - 12 * dx, a.y - 12 * dy}, {b.x + 12 * dx, b.y + 12 * dy}}, dim, 1.5});
     for (Point2 e : {a, b})
       f.lines.push_back({{{e.x - 6 * dy, e.y + 6 * dx}, {e.x + 6 * dy, e.y - 6 * dx}}, dim, 1.5});
-    // The value on A's side of the gap (inside the slab: readable, clear of walls), beside
-    // the dimension line.
-    const Point2 at{a.x - 16 * dx - 8 * dy, a.y - 16 * dy + 8 * dx};
+    // The value on A's side of the gap (inside the slab: readable, clear of walls), written
+    // along the slab's edge: vertical for a gap to the east or west, so that the values of two
+    // gaps across a narrow slab do not meet.
     std::string label = length_text(c->measured);
     if (c->declared >= 0) label += " (declared " + length_text(c->declared) + ")";
-    const post::HAlign h = dx > 0.5    ? post::HAlign::kRight
-                           : dx < -0.5 ? post::HAlign::kLeft
-                                       : post::HAlign::kLeft;
-    const post::VAlign v = dy > 0.5    ? post::VAlign::kTop
-                           : dy < -0.5 ? post::VAlign::kBottom
-                                       : post::VAlign::kBottom;
-    f.texts.push_back({at, label, 12, dim, h, v});
+    if (std::abs(dx) >= std::abs(dy)) {
+      const Point2 at{a.x - 14 * dx, a.y};
+      f.texts.push_back({at, label, 12, dim, post::HAlign::kCentre,
+                         dx > 0 ? post::VAlign::kBottom : post::VAlign::kTop, 90.0});
+    } else {
+      const Point2 at{a.x + 8, a.y - 14 * dy};
+      f.texts.push_back({at, label, 12, dim, post::HAlign::kLeft,
+                         dy > 0 ? post::VAlign::kTop : post::VAlign::kBottom});
+    }
   }
 
   // Scale bar below the plot.
