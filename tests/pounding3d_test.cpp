@@ -84,9 +84,6 @@ TEST(Pounding3D, FaceOnReducesToThe2DKelvinVoigtWalls) {
     RunOptions o;
     o.output.histories = false;
     o.analysis.t_end = 3.3;
-    // The onset of the tension-keeping law needs steps below the default floor (1.7 ms / 2^16)
-    // here; see the closing note of issue 16.
-    o.analysis.max_halvings = 24;
     if (fixed) {
       o.analysis.stepping = AnalysisConfig::Stepping::kFixed;  // the same steps in both
       o.analysis.dt = 1e-3;
