@@ -154,6 +154,9 @@ TEST(EnsembleStatistics, PeakStatisticsWalkEveryPeakOfTheSummary) {
   EXPECT_DOUBLE_EQ(disp->value.stddev, std::sqrt(14.0 / 3.0));
   EXPECT_DOUBLE_EQ(disp->value.spread(), 5.0 / 3.0);
   EXPECT_DOUBLE_EQ(disp->negative.mean, -1.5);
+  // Round-off is no spread: a symmetric building's rotation, ~1e-19 rad in every member.
+  EXPECT_EQ(member_statistics({2e-19, 5e-19, 3e-19}).spread(), 0.0);
+  EXPECT_DOUBLE_EQ(member_statistics({2e-9, 5e-9, 3e-9}).spread(), 0.9);  // 3e-9 / (10e-9 / 3)
   for (const PeakStatistics& p : s) {
     if (p.pointer == "/elements/0/peak_force") {
       EXPECT_EQ(p.headline, HeadlinePeak::kContactForce);
@@ -190,6 +193,37 @@ TEST(EnsembleRun, LinearModelWithoutWallsHasNoSpreadAndAFullHorizon) {
   EXPECT_LT(r.max_separation, 1e-4);
   EXPECT_GT(r.max_separation, 1e-7) << "the members must differ at all";
   EXPECT_EQ(ensemble_warning(r, options), "");
+}
+
+// 3D (the tutorial building under its pulse pair, shortened to 8 s): the slab corners are tracked,
+// the headline peaks are found in buildings_3d, and without walls nothing spreads.
+TEST(EnsembleRun, ThreeDimensionalModelTracksCornersAndDoesNotSpread) {
+  ModelConfig config = load_model_file((test::source_dir() / "configs/tutorial-3d.yaml").string());
+  config.output.histories = false;
+  for (GroundMotionConfig& c : config.ground_motion.components) c.pulse.duration = 8.0;
+  EnsembleOptions options;
+  options.members = 4;
+  options.jobs = 2;
+  const EnsembleResult r = run_ensemble(config, options);
+  int corners = 0;  // every level's plan corners
+  for (const PlanProbe& p : r.member0.model.probes)
+    corners += p.quantity == PlanProbe::Quantity::kDisplacement &&
+               p.label.find("/corner ") != std::string::npos;
+  EXPECT_GT(corners, 0);
+  EXPECT_EQ(r.tracked_points, static_cast<std::size_t>(corners));
+  int base = 0, drift = 0, rotation = 0;
+  for (const PeakStatistics& p : r.peaks) {
+    base += p.headline == HeadlinePeak::kBaseDisplacement;
+    drift += p.headline == HeadlinePeak::kCornerDriftRatio;
+    rotation += p.headline == HeadlinePeak::kRotation;
+    EXPECT_LT(p.value.spread(), 1e-4) << p.label;
+  }
+  EXPECT_EQ(base, 5);  // centre of mass and four corners of the base slab
+  EXPECT_GT(drift, 0);
+  EXPECT_EQ(rotation, static_cast<int>(r.member0.model.structures[0].level_dofs.size()));
+  EXPECT_FALSE(r.horizon_reached);
+  EXPECT_NEAR(r.horizon, 8.0, 1e-9);
+  EXPECT_GT(r.max_separation, 1e-7);
 }
 
 // Rattling between walls 2 cm away: a few um grow past a millimetre before the record ends.

@@ -36,7 +36,9 @@ Eigen::VectorXd ensemble_initial_displacement(const Model& model, int member, in
 }
 
 double MemberStatistics::spread() const {
-  if (max == min) return 0.0;
+  // Round-off: differences below 1e-12 of the SI unit (or of the mean, if larger) are no spread,
+  // e.g. the rotation of a symmetric building, ~1e-19 rad in every member.
+  if (max - min <= 1e-12 * std::max(1.0, std::abs(mean))) return 0.0;
   return mean != 0.0 ? (max - min) / std::abs(mean) : INFINITY;
 }
 
@@ -91,14 +93,37 @@ std::string entry_name(const json& entry, std::size_t index) {
 }
 
 struct Found {
-  std::string pointer, label, unit;
+  std::string pointer, label, unit, name;
   std::vector<std::string> tokens;  // pointer tokens, unescaped
 };
+
+// The short name of a peak: the names of the list entries it lies in, '/'-joined (an entry
+// whose name extends the previous one replaces it: "b", "b/base" -> "b/base"), then the object
+// keys after the last list entry.
+std::string short_name(const json& summary, const std::vector<std::string>& tokens) {
+  std::string entries, keys;
+  const json* j = &summary;
+  for (const std::string& tok : tokens) {
+    if (j->is_array()) {
+      const std::string name = entry_name((*j)[std::stoul(tok)], std::stoul(tok));
+      if (entries.empty() || name.rfind(entries + "/", 0) == 0)
+        entries = name;
+      else
+        entries += "/" + name;
+      keys.clear();
+      j = &(*j)[std::stoul(tok)];
+    } else {
+      keys += (keys.empty() ? "" : " ") + tok;
+      j = &(*j)[tok];
+    }
+  }
+  return entries.empty() ? keys : entries + " " + keys;
+}
 
 void walk(const json& j, std::vector<std::string>& tokens, const std::string& pointer,
           const std::string& label, std::vector<Found>& out) {
   if (is_peak(j)) {
-    out.push_back({pointer, label, j.value("unit", std::string()), tokens});
+    out.push_back({pointer, label, j.value("unit", std::string()), "", tokens});
     return;
   }
   const auto join = [&](const std::string& name) {
@@ -274,6 +299,7 @@ std::vector<PeakStatistics> peak_statistics(const std::vector<json>& summaries) 
     PeakStatistics s;
     s.pointer = f.pointer;
     s.label = f.label;
+    s.name = short_name(summaries[0], f.tokens);
     s.unit = f.unit;
     s.headline = classify(summaries[0], f.tokens);
     s.value = member_statistics(value);
@@ -425,7 +451,8 @@ json ensemble_json(const EnsembleResult& r, const EnsembleOptions& options) {
           {"samples_compared", r.samples},
           {"statistics_note",
            "per peak of summary.json (pointer into it): member 0's value and the members' min, "
-           "mean, max, sample standard deviation (N - 1) and spread = (max - min) / |mean|"},
+           "mean, max, sample standard deviation (N - 1) and spread = (max - min) / |mean| (0 "
+           "when max - min <= 1e-12 max(1, |mean|) in SI units: round-off)"},
           {"spread_warning", warning.empty() ? json(nullptr) : json(warning)},
           {"peaks", peaks}};
 }
@@ -486,19 +513,24 @@ void print_ensemble(std::ostream& out, const EnsembleResult& r, const EnsembleOp
                 "Ensemble of %d members (offset %.3g um of the first structure's lowest level):\n",
                 r.members, 1e6 * r.offset);
   out << line;
-  std::snprintf(line, sizeof line, "  %-52s %-5s %11s %11s %11s %11s %10s %8s\n", "peak", "unit",
-                "member 0", "min", "mean", "max", "std", "spread");
+  int width = 4;
+  for (const PeakStatistics& p : r.peaks)
+    if (p.headline != HeadlinePeak::kNone) width = std::max(width, static_cast<int>(p.name.size()));
+  width = std::min(width, 64);
+  std::snprintf(line, sizeof line, "  %-*s %-4s %11s %11s %11s %11s %9s %9s\n", width, "peak",
+                "unit", "member 0", "min", "mean", "max", "std", "spread");
   out << line;
   for (const PeakStatistics& p : r.peaks) {
     if (p.headline == HeadlinePeak::kNone) continue;
-    std::string label = p.label;
-    if (label.size() > 52) label = "..." + label.substr(label.size() - 49);
+    std::string name = p.name;
+    if (static_cast<int>(name.size()) > width) name = "..." + name.substr(name.size() - width + 3);
     const MemberStatistics& s = p.value;
-    std::snprintf(line, sizeof line, "  %-52s %-5s %11.5g %11.5g %11.5g %11.5g %10.3g %7.3f%%\n",
-                  label.c_str(), p.unit.c_str(), s.member0, s.min, s.mean, s.max, s.stddev,
-                  100 * s.spread());
+    std::snprintf(line, sizeof line, "  %-*s %-4s %11.5g %11.5g %11.5g %11.5g %9.3g %9.2e\n", width,
+                  name.c_str(), p.unit.c_str(), s.member0, s.min, s.mean, s.max, s.stddev,
+                  s.spread());
     out << line;
   }
+  out << "  (spread = (max - min) / |mean|; every peak of summary.json is in ensemble.csv)\n";
   if (r.horizon_reached)
     std::snprintf(line, sizeof line,
                   "  predictability horizon %.4g s: first time two members differ by more than "

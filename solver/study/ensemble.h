@@ -40,7 +40,8 @@ Eigen::VectorXd ensemble_initial_displacement(const Model& model, int member, in
 // standard deviation (N - 1 in the denominator; 0 for one member).
 struct MemberStatistics {
   double member0 = 0.0, min = 0.0, mean = 0.0, max = 0.0, stddev = 0.0;
-  double spread() const;  // (max - min) / |mean| (0 when max == min)
+  // (max - min) / |mean|; 0 when max - min <= 1e-12 max(1, |mean|) (round-off, in SI units).
+  double spread() const;
 };
 MemberStatistics member_statistics(const std::vector<double>& values);
 
@@ -59,6 +60,7 @@ struct PeakStatistics {
   std::string
       pointer;        // JSON pointer into summary.json, e.g. "/structures/0/levels/0/displacement"
   std::string label;  // readable path with the labels of list entries, '.'-separated
+  std::string name;   // short, for the console: "building/base/corner 1 displacement resultant"
   std::string unit;
   HeadlinePeak headline = HeadlinePeak::kNone;
   MemberStatistics value, positive, negative;
