@@ -170,6 +170,33 @@ TEST(EnsembleStatistics, PeakStatisticsWalkEveryPeakOfTheSummary) {
   EXPECT_THROW(peak_statistics(summaries), std::logic_error);
 }
 
+// The warning: one line, only for headline peaks (not rotations, not other peaks), above 5 %.
+TEST(EnsembleStatistics, WarningNamesTheWidestHeadlinePeakAbove5Percent) {
+  EnsembleResult r;
+  r.members = 8;
+  const auto peak = [](const char* label, HeadlinePeak h, std::vector<double> values) {
+    PeakStatistics p;
+    p.label = label;
+    p.headline = h;
+    p.value = member_statistics(values);
+    return p;
+  };
+  const EnsembleOptions options;                                           // 5 %
+  r.peaks = {peak("drift", HeadlinePeak::kCornerDriftRatio, {1.0, 1.04}),  // 3.9 %: quiet
+             peak("theta", HeadlinePeak::kRotation, {1.0, 2.0}),           // rotations do not warn
+             peak("velocity", HeadlinePeak::kNone, {1.0, 2.0})};
+  EXPECT_EQ(ensemble_warning(r, options), "");
+  r.peaks.push_back(peak("wall F_N", HeadlinePeak::kContactForce, {1.0, 1.1}));   // 9.5 %
+  r.peaks.push_back(peak("base", HeadlinePeak::kBaseDisplacement, {1.0, 1.06}));  // 5.8 %
+  const std::string w = ensemble_warning(r, options);
+  EXPECT_EQ(w.find('\n'), std::string::npos);
+  EXPECT_NE(w.find("2 headline peaks"), std::string::npos) << w;
+  EXPECT_NE(w.find("wall F_N, 9.5 %"), std::string::npos) << w;
+  EXPECT_NE(w.find("the ensemble statistics, not the single run, are the result"),
+            std::string::npos)
+      << w;
+}
+
 // Without walls the response is a smooth function of the initial state: 1-4 um of offset on
 // peaks of centimetres changes each by far less than 1e-4 (the linear model's peaks move by at
 // most the offset itself, ~1e-5 relative), and no two members ever differ by a millimetre.
