@@ -243,8 +243,7 @@ class PointTracker : public HistorySink {
 
 struct MemberOutput {
   json summary;
-  std::vector<double> times, xy;
-  std::vector<std::string> point_labels;
+  EnsembleTrack track;
   double analysed = 0.0;
   JobResult job;  // member 0 only
 };
@@ -253,29 +252,76 @@ MemberOutput run_member(const ModelConfig& config, const GroundMotion& motion,
                         const GroundMotionPeaks& motion_peaks, int member,
                         const EnsembleOptions& options, HistorySink* histories,
                         std::function<void(double, double)> progress) {
+  EnsembleMember run =
+      run_ensemble_member(config, motion, member, options, histories, std::move(progress));
   JobResult job;
   job.motion = motion;
   job.motion_peaks = motion_peaks;
-  job.model = build_model(config);
-  RunOptions run = run_options(config);
-  run.initial_displacement =
-      ensemble_initial_displacement(job.model, member, options.members, options.offset);
-  run.output.histories = true;  // the tracker needs the rows; only member 0's reach a file
-  PointTracker tracker(job.model, config.output.histories ? histories : nullptr);
-  run.history_sink = &tracker;
-  run.progress = std::move(progress);
-  job.analysis = run_analysis(job.model, job.motion, run);
+  job.model = std::move(run.model);
+  job.analysis = std::move(run.analysis);
   MemberOutput out;
   out.summary = summary_json(config, job);
-  out.times = tracker.times();
-  out.xy = tracker.xy();
-  for (const TrackedPoint& p : tracker.points()) out.point_labels.push_back(p.label);
+  out.track = std::move(run.track);
   out.analysed = job.analysis.stats.duration;
   if (member == 0) out.job = std::move(job);
   return out;
 }
 
 }  // namespace
+
+EnsembleMember run_ensemble_member(const ModelConfig& config, const GroundMotion& motion,
+                                   int member, const EnsembleOptions& options,
+                                   HistorySink* histories,
+                                   std::function<void(double, double)> progress) {
+  EnsembleMember out;
+  out.model = build_model(config);
+  RunOptions run = run_options(config);
+  run.initial_displacement =
+      ensemble_initial_displacement(out.model, member, options.members, options.offset);
+  run.output.histories = true;  // the tracker needs the rows; only member 0's reach a file
+  PointTracker tracker(out.model, config.output.histories ? histories : nullptr);
+  run.history_sink = &tracker;
+  run.progress = std::move(progress);
+  out.analysis = run_analysis(out.model, motion, run);
+  out.track.times = tracker.times();
+  out.track.xy = tracker.xy();
+  for (const TrackedPoint& p : tracker.points()) out.track.points.push_back(p.label);
+  return out;
+}
+
+Horizon predictability_horizon(const std::vector<const EnsembleTrack*>& tracks, double analysed,
+                               double distance) {
+  // The first output sample at which any two members' point is farther apart than `distance`
+  // (all pairs: the members' own spread, not only the distance to member 0).
+  Horizon h;
+  h.time = analysed;
+  if (tracks.empty()) return h;
+  const std::size_t points = tracks[0]->points.size();
+  std::size_t rows = tracks[0]->times.size();
+  for (const EnsembleTrack* t : tracks) rows = std::min(rows, t->times.size());
+  h.points = points;
+  h.samples = rows;
+  const std::size_t n = tracks.size();
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t p = 0; p < points; ++p) {
+      const std::size_t i = 2 * (r * points + p);
+      double widest = 0.0;
+      for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = a + 1; b < n; ++b) {
+          const double dx = tracks[a]->xy[i] - tracks[b]->xy[i];
+          const double dy = tracks[a]->xy[i + 1] - tracks[b]->xy[i + 1];
+          widest = std::max(widest, std::hypot(dx, dy));
+        }
+      h.max_separation = std::max(h.max_separation, widest);
+      if (!h.reached && widest > distance) {
+        h.reached = true;
+        h.time = tracks[0]->times[r];
+        h.point = tracks[0]->points[p];
+      }
+    }
+  }
+  return h;
+}
 
 std::vector<PeakStatistics> peak_statistics(const std::vector<json>& summaries) {
   std::vector<PeakStatistics> result;
@@ -357,32 +403,15 @@ EnsembleResult run_ensemble(const ModelConfig& config, const EnsembleOptions& op
   for (MemberOutput& o : outputs) summaries.push_back(std::move(o.summary));
   result.peaks = peak_statistics(summaries);
 
-  // Horizon: the first output sample at which any two members' point is farther apart than
-  // horizon_distance (all pairs: the members' own spread, not only the distance to member 0).
-  const std::size_t points = outputs[0].point_labels.size();
-  std::size_t rows = outputs[0].times.size();
-  for (const MemberOutput& o : outputs) rows = std::min(rows, o.times.size());
-  result.tracked_points = points;
-  result.samples = rows;
-  result.horizon = result.analysed;
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (std::size_t p = 0; p < points; ++p) {
-      const std::size_t i = 2 * (r * points + p);
-      double widest = 0.0;
-      for (int a = 0; a < n; ++a)
-        for (int b = a + 1; b < n; ++b) {
-          const double dx = outputs[a].xy[i] - outputs[b].xy[i];
-          const double dy = outputs[a].xy[i + 1] - outputs[b].xy[i + 1];
-          widest = std::max(widest, std::hypot(dx, dy));
-        }
-      result.max_separation = std::max(result.max_separation, widest);
-      if (!result.horizon_reached && widest > options.horizon_distance) {
-        result.horizon_reached = true;
-        result.horizon = outputs[0].times[r];
-        result.horizon_point = outputs[0].point_labels[p];
-      }
-    }
-  }
+  std::vector<const EnsembleTrack*> tracks;
+  for (const MemberOutput& o : outputs) tracks.push_back(&o.track);
+  const Horizon h = predictability_horizon(tracks, result.analysed, options.horizon_distance);
+  result.horizon = h.time;
+  result.horizon_reached = h.reached;
+  result.horizon_point = h.point;
+  result.max_separation = h.max_separation;
+  result.tracked_points = h.points;
+  result.samples = h.samples;
   result.member0 = std::move(outputs[0].job);
   return result;
 }

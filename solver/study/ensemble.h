@@ -71,6 +71,40 @@ struct PeakStatistics {
 // a peak of member 0.
 std::vector<PeakStatistics> peak_statistics(const std::vector<nlohmann::json>& summaries);
 
+// What a member's run keeps for the horizon: per output sample its time and the (x, y)
+// displacement of every tracked point (3D: every slab corner, the probes "<level>/corner k"; 2D:
+// every level, y = 0).
+struct EnsembleTrack {
+  std::vector<double> times;
+  std::vector<double> xy;           // row-major: 2 per point per sample
+  std::vector<std::string> points;  // labels
+};
+
+// One member: its model (elements in their final state), its analysis (no histories kept: they
+// went to `histories` if given and config.output.histories) and its track. Throws what
+// run_analysis throws.
+struct EnsembleMember {
+  Model model;
+  AnalysisResult analysis;
+  EnsembleTrack track;
+};
+EnsembleMember run_ensemble_member(const ModelConfig& config, const GroundMotion& motion,
+                                   int member, const EnsembleOptions& options,
+                                   HistorySink* histories = nullptr,
+                                   std::function<void(double, double)> progress = {});
+
+// The first output time at which two tracks' same point is more than `distance` apart (compared
+// sample by sample over the samples all tracks have), else `analysed` with reached = false.
+struct Horizon {
+  double time = 0.0;  // s
+  bool reached = false;
+  std::string point;            // the point that first separated
+  double max_separation = 0.0;  // m, over all samples, points and pairs
+  std::size_t points = 0, samples = 0;
+};
+Horizon predictability_horizon(const std::vector<const EnsembleTrack*>& tracks, double analysed,
+                               double distance);
+
 struct EnsembleResult {
   int members = 0;
   double offset = 0.0;            // m
