@@ -15,7 +15,7 @@
 
 #include "solver/io/model_input.h"
 #include "solver/study/ensemble.h"
-#include "tests/test_support.h"
+#include "tests/study_test_support.h"
 
 namespace isopound {
 namespace {
@@ -308,6 +308,68 @@ TEST(EnsembleCli, MemberZeroIsTheNormalRunAndTheStatisticsAreWritten) {
   EXPECT_EQ(rows, 3 * static_cast<int>(summary["ensemble"]["peaks"].size()));
   const auto bad = test::run_isopound("run " + model + " --ensemble 0 -o " + (dir / "x").string());
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  fs::remove_all(dir);
+}
+
+// `ensemble: N` in a study: per case member 0's peak and the members' min, mean, max, std, and the
+// horizon; byte-identical tables for -j 1 and -j 2; N < 2 is bad input.
+TEST(EnsembleStudy, CasesStoreMemberStatisticsAndTheHorizon) {
+  const fs::path dir = test::study_scratch("ensemble");
+  const std::string study = "name: ens\nmodel: " + test::thesis_model() + R"(
+set:
+  ground_motion.pulse: {amplitude: 0.8 m/s, period: 2 s, duration: 6 s, dt: 0.01 s}
+axes:
+  - {path: building.isolator.QW, values: [5 %, 10 %]}
+outputs: [base.displacement, isolator.force]
+ensemble: 3
+)";
+  test::write_file(dir / "study.yaml", study);
+  for (const char* jobs : {"1", "2"}) {
+    const std::string db = (dir / ("j" + std::string(jobs) + ".db")).string();
+    const auto r = test::run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q -j " +
+                                      jobs + " --db '" + db + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto e = test::run_isopound("export '" + db + "' -o '" +
+                                      (dir / ("j" + std::string(jobs))).string() + "'");
+    ASSERT_EQ(e.exit_code, 0) << e.output;
+  }
+  const std::string runs = test::read_file(dir / "j1" / "runs.csv");
+  EXPECT_EQ(runs, test::read_file(dir / "j2" / "runs.csv"));
+  std::istringstream lines(runs);
+  std::string header, row;
+  std::getline(lines, header);
+  EXPECT_EQ(header,
+            "case_id,QW,status,steps,base_displacement,isolator_force,base_displacement_ens_min,"
+            "base_displacement_ens_mean,base_displacement_ens_max,base_displacement_ens_std,"
+            "isolator_force_ens_min,isolator_force_ens_mean,isolator_force_ens_max,"
+            "isolator_force_ens_std,ens_horizon_s,error");
+  int rows = 0;
+  while (std::getline(lines, row)) {
+    ++rows;
+    std::vector<std::string> cells;
+    std::stringstream split(row);
+    for (std::string cell; std::getline(split, cell, ',');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 15u) << row;
+    EXPECT_EQ(cells[2], "done");
+    for (const int column : {4, 5}) {  // the peak, then min, mean, max, std of it
+      const int stats = 6 + 4 * (column - 4);
+      const double value = std::stod(cells[column]), min = std::stod(cells[stats]),
+                   mean = std::stod(cells[stats + 1]), max = std::stod(cells[stats + 2]),
+                   std = std::stod(cells[stats + 3]);
+      EXPECT_LE(min, value);
+      EXPECT_GE(max, value);
+      EXPECT_LT((max - min) / mean, 1e-4) << row;  // Bouc-Wen without walls: not sensitive
+      EXPECT_GT(max - min, 0.0) << "the members must differ";
+      EXPECT_GT(std, 0.0);
+    }
+    EXPECT_DOUBLE_EQ(std::stod(cells[14]), 6.0) << "no separation: the analysed length";
+  }
+  EXPECT_EQ(rows, 2);
+  test::write_file(dir / "bad.yaml", study.substr(0, study.find("ensemble: 3")) + "ensemble: 1\n");
+  const auto bad = test::run_isopound("sweep '" + (dir / "bad.yaml").string() + "' -q --db '" +
+                                      (dir / "bad.db").string() + "'");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("ensemble"), std::string::npos) << bad.output;
   fs::remove_all(dir);
 }
 
