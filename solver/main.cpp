@@ -91,18 +91,21 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
     histories = (fs::path(out_dir) / "histories.csv").string();
     writer = std::make_unique<CsvHistoryWriter>(histories);  // rows stream while it runs
   }
+  const std::string events = (fs::path(out_dir) / "contact_events.csv").string();
+  fs::remove(events);  // a stale log of an earlier run would be read as this run's
   JobResult job;
   std::optional<EnsembleResult> ensemble;
   try {
     ProgressLine progress(!quiet);
     if (ensemble_options) {
-      ensemble = run_ensemble(config, *ensemble_options, writer.get(), std::ref(progress));
+      ensemble = run_ensemble(config, *ensemble_options, writer.get(), std::ref(progress), events);
       job = std::move(ensemble->member0);
     } else {
-      job = run_job(config, writer.get(), std::ref(progress));
+      job = run_job(config, writer.get(), std::ref(progress), events);
     }
   } catch (...) {
-    // No partial histories.csv from a run that failed (it would look like a result).
+    // No partial histories.csv from a run that failed (it would look like a result); the event
+    // log is kept: it shows the contacts up to the failure.
     writer.reset();
     if (!histories.empty()) fs::remove(histories);
     throw;
@@ -122,8 +125,9 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
     if (free_run) print_unobstructed(std::cout, config, job, *free_run);
     if (ensemble) print_ensemble(std::cout, *ensemble, *ensemble_options);
     std::cout << "Wrote " << summary;
-    if (!histories.empty()) std::cout << " and " << histories;
-    if (ensemble) std::cout << " and " << (fs::path(out_dir) / "ensemble.csv").string();
+    if (!histories.empty()) std::cout << ", " << histories;
+    if (fs::exists(events)) std::cout << ", " << events;
+    if (ensemble) std::cout << ", " << (fs::path(out_dir) / "ensemble.csv").string();
     std::cout << '\n';
   } else if (ensemble) {
     const std::string warning = ensemble_warning(*ensemble, *ensemble_options);
@@ -217,6 +221,9 @@ int main(int argc, char** argv) {
   run->add_flag("--no-histories", no_histories, "Skip histories.csv");
   run->add_flag("--compare-unobstructed", compare_unobstructed,
                 "Also run without walls and neighbours; report each peak's amplification");
+  double until = 0.0;
+  run->add_option("--until", until, "Stop the analysis at this time, s (analysis.t_end)")
+      ->check(CLI::PositiveNumber);
   EnsembleOptions ensemble;
   ensemble.members = 0;
   ensemble.jobs = std::max(1u, std::thread::hardware_concurrency());
@@ -273,6 +280,7 @@ int main(int argc, char** argv) {
       config.ground_motion.record_path = record_path;
     }
     if (no_histories) config.output.histories = false;
+    if (until > 0) config.analysis.t_end = until;
     if (*run)
       return run_and_write(config, out_dir, quiet, compare_unobstructed,
                            ensemble.members > 0 ? &ensemble : nullptr);

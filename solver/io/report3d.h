@@ -14,6 +14,9 @@ namespace isopound {
 // displacement and absolute acceleration x, y, resultant), storeys (each column's drift x, y,
 // resultant and ratio; the envelope over columns; the corner columns), bearings (peaks).
 nlohmann::json summary3d_json(const JobResult& job);
+// "contacts_3d": per polygon contact pair, impacts, first-impact time, peaks of F_N, F_T, area,
+// δ_N and impact velocity, time in stick and slip, friction- and impact-dissipated energy.
+nlohmann::json contacts3d_json(const JobResult& job);
 // The console summary of 3D buildings (after the ground-motion line).
 void print_summary3d(std::ostream& out, const JobResult& job);
 // `isopound modes` for 3D buildings: fixed-base and isolated (bearings at K_post and at K_el)

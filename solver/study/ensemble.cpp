@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "solver/io/report.h"
+#include "solver/structures/contact_log.h"
 
 namespace isopound {
 
@@ -251,14 +252,16 @@ struct MemberOutput {
 MemberOutput run_member(const ModelConfig& config, const GroundMotion& motion,
                         const GroundMotionPeaks& motion_peaks, int member,
                         const EnsembleOptions& options, HistorySink* histories,
-                        std::function<void(double, double)> progress) {
-  EnsembleMember run =
-      run_ensemble_member(config, motion, member, options, histories, std::move(progress));
+                        std::function<void(double, double)> progress,
+                        const std::string& event_log) {
+  EnsembleMember run = run_ensemble_member(config, motion, member, options, histories,
+                                           std::move(progress), event_log);
   JobResult job;
   job.motion = motion;
   job.motion_peaks = motion_peaks;
   job.model = std::move(run.model);
   job.analysis = std::move(run.analysis);
+  job.first_impact_time = std::move(run.first_impact_time);
   MemberOutput out;
   out.summary = summary_json(config, job);
   out.track = std::move(run.track);
@@ -272,7 +275,8 @@ MemberOutput run_member(const ModelConfig& config, const GroundMotion& motion,
 EnsembleMember run_ensemble_member(const ModelConfig& config, const GroundMotion& motion,
                                    int member, const EnsembleOptions& options,
                                    HistorySink* histories,
-                                   std::function<void(double, double)> progress) {
+                                   std::function<void(double, double)> progress,
+                                   const std::string& event_log) {
   EnsembleMember out;
   out.model = build_model(config);
   RunOptions run = run_options(config);
@@ -282,7 +286,11 @@ EnsembleMember run_ensemble_member(const ModelConfig& config, const GroundMotion
   PointTracker tracker(out.model, config.output.histories ? histories : nullptr);
   run.history_sink = &tracker;
   run.progress = std::move(progress);
+  ContactEventLog log(out.model, event_log);  // as run_job (job.cpp)
+  if (!log.empty()) run.observer = &log;
   out.analysis = run_analysis(out.model, motion, run);
+  log.close();
+  out.first_impact_time = log.first_impact_times(out.model);
   out.track.times = tracker.times();
   out.track.xy = tracker.xy();
   for (const TrackedPoint& p : tracker.points()) out.track.points.push_back(p.label);
@@ -358,7 +366,8 @@ std::vector<PeakStatistics> peak_statistics(const std::vector<json>& summaries) 
 
 EnsembleResult run_ensemble(const ModelConfig& config, const EnsembleOptions& options,
                             HistorySink* member0_histories,
-                            std::function<void(double, double)> progress) {
+                            std::function<void(double, double)> progress,
+                            const std::string& member0_event_log) {
   if (options.members < 1)
     throw std::invalid_argument("--ensemble: the number of members must be >= 1");
   if (options.jobs < 1) throw std::invalid_argument("-j: the number of threads must be >= 1");
@@ -377,7 +386,8 @@ EnsembleResult run_ensemble(const ModelConfig& config, const EnsembleOptions& op
       try {
         outputs[m] = run_member(config, motion, motion_peaks, m, options,
                                 m == 0 ? member0_histories : nullptr,
-                                m == 0 ? progress : std::function<void(double, double)>());
+                                m == 0 ? progress : std::function<void(double, double)>(),
+                                m == 0 ? member0_event_log : std::string());
       } catch (...) {
         errors[m] = std::current_exception();
       }

@@ -83,15 +83,19 @@ struct EnsembleTrack {
 // One member: its model (elements in their final state), its analysis (no histories kept: they
 // went to `histories` if given and config.output.histories) and its track. Throws what
 // run_analysis throws.
+// `event_log`: where its contact_events.csv goes ("" = nowhere; the first-impact times are kept
+// anyway).
 struct EnsembleMember {
   Model model;
   AnalysisResult analysis;
+  std::vector<double> first_impact_time;  // as JobResult::first_impact_time
   EnsembleTrack track;
 };
 EnsembleMember run_ensemble_member(const ModelConfig& config, const GroundMotion& motion,
                                    int member, const EnsembleOptions& options,
                                    HistorySink* histories = nullptr,
-                                   std::function<void(double, double)> progress = {});
+                                   std::function<void(double, double)> progress = {},
+                                   const std::string& event_log = "");
 
 // The first output time at which two tracks' same point is more than `distance` apart (compared
 // sample by sample over the samples all tracks have), else `analysed` with reached = false.
@@ -124,12 +128,14 @@ struct EnsembleResult {
 };
 
 // Runs the ensemble on `options.jobs` threads. Member 0's history rows go to `member0_histories`
-// (if not null and config.output.histories), other members keep only what the horizon needs;
-// `progress` is called for member 0 only. Throws what run_job throws (the failing member with the
+// (if not null and config.output.histories) and its contact events to `member0_event_log` (if
+// not ""), other members keep only what the horizon needs; `progress` is called for member 0
+// only. Throws what run_job throws (the failing member with the
 // lowest index wins) and std::invalid_argument for members < 1 or jobs < 1.
 EnsembleResult run_ensemble(const ModelConfig& config, const EnsembleOptions& options,
                             HistorySink* member0_histories = nullptr,
-                            std::function<void(double, double)> progress = {});
+                            std::function<void(double, double)> progress = {},
+                            const std::string& member0_event_log = "");
 
 // The "ensemble" block of summary.json (no timing or thread count: identical for any -j).
 nlohmann::json ensemble_json(const EnsembleResult& result, const EnsembleOptions& options);
