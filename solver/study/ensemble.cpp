@@ -401,20 +401,32 @@ EnsembleResult run_ensemble(const ModelConfig& config, const EnsembleOptions& op
     for (int k = 0; k < threads; ++k) pool.emplace_back(work);
     for (std::thread& t : pool) t.join();
   }
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
-
+  // Member 0 is the run as given: its failure is the run's. A later member that diverges is
+  // reported and left out of the statistics (a divergence is itself a finding about the model).
   EnsembleResult result;
+  for (int m = 0; m < n; ++m) {
+    if (!errors[m]) continue;
+    if (m == 0) std::rethrow_exception(errors[m]);
+    try {
+      std::rethrow_exception(errors[m]);
+    } catch (const AnalysisError& e) {
+      result.failed.push_back({m, e.time(), e.what()});
+    }
+  }
+
   result.members = n;
   result.offset = options.offset;
   result.horizon_distance = options.horizon_distance;
   result.analysed = outputs[0].analysed;
   std::vector<json> summaries;
-  for (MemberOutput& o : outputs) summaries.push_back(std::move(o.summary));
+  std::vector<const EnsembleTrack*> tracks;
+  for (int m = 0; m < n; ++m) {
+    if (errors[m]) continue;
+    summaries.push_back(std::move(outputs[m].summary));
+    tracks.push_back(&outputs[m].track);
+  }
   result.peaks = peak_statistics(summaries);
 
-  std::vector<const EnsembleTrack*> tracks;
-  for (const MemberOutput& o : outputs) tracks.push_back(&o.track);
   const Horizon h = predictability_horizon(tracks, result.analysed, options.horizon_distance);
   result.horizon = h.time;
   result.horizon_reached = h.reached;
@@ -467,7 +479,12 @@ json ensemble_json(const EnsembleResult& r, const EnsembleOptions& options) {
     peaks.push_back(jp);
   }
   const std::string warning = ensemble_warning(r, options);
+  json failed = json::array();
+  for (const FailedMember& f : r.failed)
+    failed.push_back({{"member", f.member}, {"time_s", f.time}, {"error", f.error}});
   return {{"members", r.members},
+          {"members_in_statistics", r.members - static_cast<int>(r.failed.size())},
+          {"failed_members", failed},
           {"offset_m", r.offset},
           {"offset_rule",
            "member 0 as given; member k > 0 starts with the lowest level of the first structure "
@@ -541,8 +558,9 @@ std::string ensemble_warning(const EnsembleResult& r, const EnsembleOptions& opt
                 "warning: %d headline peak%s spread more than %.0f %% across the %d members "
                 "(largest: %s, %.1f %%): the ensemble statistics, not the single run, are the "
                 "result",
-                count, count == 1 ? "" : "s", 100 * options.spread_warning, r.members,
-                worst->label.c_str(), 100 * worst->value.spread());
+                count, count == 1 ? "" : "s", 100 * options.spread_warning,
+                r.members - static_cast<int>(r.failed.size()), worst->name.c_str(),
+                100 * worst->value.spread());
   return line;
 }
 
@@ -581,6 +599,13 @@ void print_ensemble(std::ostream& out, const EnsembleResult& r, const EnsembleOp
                   "differ by %.3g mm (largest difference %.3g mm)\n",
                   r.horizon, 1e3 * r.horizon_distance, 1e3 * r.max_separation);
   out << line;
+  for (const FailedMember& f : r.failed) {
+    std::snprintf(line, sizeof line,
+                  "warning: member %d diverged at t = %.6g s and is left out of the statistics "
+                  "and the horizon (%d of %d members used)\n",
+                  f.member, f.time, r.members - static_cast<int>(r.failed.size()), r.members);
+    out << line;
+  }
   const std::string warning = ensemble_warning(r, options);
   if (!warning.empty()) out << warning << '\n';
 }

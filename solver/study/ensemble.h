@@ -109,6 +109,13 @@ struct Horizon {
 Horizon predictability_horizon(const std::vector<const EnsembleTrack*>& tracks, double analysed,
                                double distance);
 
+// A member k > 0 whose analysis diverged (AnalysisError): left out of statistics and horizon.
+struct FailedMember {
+  int member = 0;
+  double time = 0.0;  // s
+  std::string error;
+};
+
 struct EnsembleResult {
   int members = 0;
   double offset = 0.0;            // m
@@ -122,16 +129,18 @@ struct EnsembleResult {
   std::string horizon_point;    // the point that first separated ("" if none)
   double max_separation = 0.0;  // m, largest distance of two members' points over the run
   std::size_t tracked_points = 0;
-  std::size_t samples = 0;  // output samples compared
-  std::vector<PeakStatistics> peaks;
+  std::size_t samples = 0;            // output samples compared
+  std::vector<PeakStatistics> peaks;  // over the members that did not fail
+  std::vector<FailedMember> failed;
   JobResult member0;  // member 0 as a normal run (its histories went to the sink given)
 };
 
 // Runs the ensemble on `options.jobs` threads. Member 0's history rows go to `member0_histories`
 // (if not null and config.output.histories) and its contact events to `member0_event_log` (if
 // not ""), other members keep only what the horizon needs; `progress` is called for member 0
-// only. Throws what run_job throws (the failing member with the
-// lowest index wins) and std::invalid_argument for members < 1 or jobs < 1.
+// only. Throws what run_job throws for member 0, and for a later member anything but an
+// AnalysisError (lowest index first; a diverged member k > 0 goes to EnsembleResult::failed),
+// and std::invalid_argument for members < 1 or jobs < 1.
 EnsembleResult run_ensemble(const ModelConfig& config, const EnsembleOptions& options,
                             HistorySink* member0_histories = nullptr,
                             std::function<void(double, double)> progress = {},
