@@ -1,5 +1,6 @@
 // Animation frames of 2D runs (see animation.h).
 #include "post/animation.h"
+#include "post/animation3d.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,6 +88,7 @@ std::vector<double> frame_times(const RunData& run, double fps, double start, do
 }
 
 FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& o) {
+  if (run.three_d) return animation_frame3d(run, t, o);
   FrameBuilder f(t);
   const double W = o.slab_width, H = o.slab_thickness, S = o.scale;
   const auto u_of = [&](const Level& l) { return value_at(run, l.u, t); };

@@ -28,7 +28,16 @@ struct MeshArray {
 // no dimension: a 3D frame builder adds hexahedra (VTK type 12) for extruded slabs, polygons (7)
 // for contact overlaps and vertices with vector arrays for forces, new Block values after these,
 // and the writer, the .pvd and the tests' reader stay as they are.
-enum class Block { kSlab = 0, kColumn = 1, kBearing = 2, kWall = 3, kContact = 4 };
+// 3D frames add the contact force vectors as lines from the overlap's centroid.
+enum class Block {
+  kSlab = 0,
+  kColumn = 1,
+  kBearing = 2,
+  kWall = 3,
+  kContact = 4,
+  kNormalForce = 5,
+  kTangentialForce = 6
+};
 
 struct FrameMesh {
   double time = 0.0;                          // s
@@ -45,6 +54,7 @@ struct AnimationOptions {
   double end = -1.0;            // s, last frame at or before it; < 0: the end of the run
   double slab_width = 12.0;     // m, drawn width of a floor slab
   double slab_thickness = 0.4;  // m
+  double force_length = 3.0;    // m, 3D: drawn length of the largest contact force of the run
 };
 
 // Frame times: start, start + 1/fps, start + 2/fps, ... up to `end` or the last history row
@@ -52,7 +62,8 @@ struct AnimationOptions {
 std::vector<double> frame_times(const RunData& run, double fps, double start = 0.0,
                                 double end = -1.0);
 
-// The frame at time t (histories interpolated linearly between rows). Arrays:
+// The frame at time t (histories interpolated linearly between rows); a 3D run's frame is
+// animation_frame3d's (animation3d.h). 2D arrays:
 //   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s^2)
 //   cell data:  block, drift_ratio (columns), bearing_force (bearings, N), contact_force (3, N,
 //               on the body, contacts), penetration (contacts, m)

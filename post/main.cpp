@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "post/animation.h"
+#include "post/animation3d.h"
 #include "post/headless.h"
 #include "post/plot_run.h"
 #include "post/polar_study.h"
@@ -247,6 +248,8 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
                 const AnimationOptions& opt, double preview) {
   if (!(opt.scale > 0.0) || !std::isfinite(opt.scale)) throw BadInput("--scale: must be > 0");
   if (!(opt.fps > 0.0) || !std::isfinite(opt.fps)) throw BadInput("--fps: must be > 0");
+  if (!(opt.force_length > 0.0) || !std::isfinite(opt.force_length))
+    throw BadInput("--force-length: must be > 0");
   const RunData run = load_run(dir, model);
   const fs::path out_dir = out.empty() ? fs::path(dir) / "animation" : fs::path(out);
   fs::create_directories(out_dir);
@@ -274,7 +277,8 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   if (preview >= 0.0) {
     std::fflush(stdout);
     const PrivateDisplay display;
-    render_png(frame_figure(animation_frame(run, preview, opt), opt.scale),
+    const FrameMesh frame = animation_frame(run, preview, opt);
+    render_png(run.three_d ? frame_figure3d(frame, opt.scale) : frame_figure(frame, opt.scale),
                (out_dir / "preview.png").string());
     std::printf("Wrote %s/preview.png (t = %g s)\n", out_dir.string().c_str(), preview);
   }
@@ -352,6 +356,8 @@ int main(int argc, char** argv) {
   animate->add_option("--end", ao.end, "time of the last frame [s] (default: end of the run)");
   animate->add_option("--preview", preview, "also write preview.png of the frame at this time [s]");
   animate->add_option("--model", model, "model file (default: the one named in summary.json)");
+  animate->add_option("--force-length", ao.force_length,
+                      "3D: drawn length of the run's largest contact force [m] (default 3)");
 
   std::string db;
   PolarStudyOptions po;

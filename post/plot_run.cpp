@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "post/plot_run3d.h"
 #include "post/xy_plot.h"
 #include "solver/core/constants.h"
 
@@ -43,6 +44,7 @@ double force_scale(double peak_newton, std::string& unit) {
 }
 
 std::vector<NamedFigure> run_figures(const RunData& run) {
+  if (run.three_d) return run_figures3d(run);
   const std::vector<double>& t = run.time();
   std::vector<Panel> panels;
   const Structure& main = run.structures.front();

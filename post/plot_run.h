@@ -16,7 +16,8 @@ struct NamedFigure {
   Figure figure;
 };
 
-// time_histories.png and hysteresis.png (the latter only when the run has isolators or contacts).
+// time_histories.png and hysteresis.png (the latter only when the run has isolators or contacts);
+// a 3D run's figures are run_figures3d's (plot_run3d.h).
 std::vector<NamedFigure> run_figures(const RunData& run);
 
 // Force unit for a peak |F| in N: kN below 10 MN, else MN. Returns the divisor and sets unit.

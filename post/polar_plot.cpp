@@ -90,6 +90,7 @@ Figure polar_envelope_figure(const PolarEnvelopeData& data, int width, int heigh
   for (const PolarCurve& c : data.curves) grow(c.value);
   if (data.mean) grow(data.mean->value);
   grow(data.band_hi);
+  for (const PolarBand& b : data.bands) grow(b.hi);
   if (!(vmax > 0.0)) vmax = 1.0;
   std::vector<double> ticks = nice_ticks(0.0, vmax, 4);
   const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : vmax;
@@ -104,22 +105,33 @@ Figure polar_envelope_figure(const PolarEnvelopeData& data, int width, int heigh
   f.r_hi = ticks.back();
   if (f.centre.x - f.radius_px < 40) f.centre.x = f.radius_px + 40;
 
-  // Band: quads between lo and hi at neighbouring angles (convex enough at small steps).
-  for (std::size_t i = 0; i + 1 < data.band_angle_deg.size(); ++i) {
-    if (i + 1 >= data.band_lo.size() || i + 1 >= data.band_hi.size()) break;
-    const double a0 = data.band_angle_deg[i], a1 = data.band_angle_deg[i + 1];
-    // Subdivide in angle so the polygons follow the circle.
-    for (int s = 0; s < 4; ++s) {
-      const double t0 = s / 4.0, t1 = (s + 1) / 4.0;
-      const auto lerp = [](double x, double y, double t) { return x + (y - x) * t; };
-      fig.polygons.push_back(
-          {{f.to_pixel(lerp(a0, a1, t0), lerp(data.band_lo[i], data.band_lo[i + 1], t0)),
-            f.to_pixel(lerp(a0, a1, t1), lerp(data.band_lo[i], data.band_lo[i + 1], t1)),
-            f.to_pixel(lerp(a0, a1, t1), lerp(data.band_hi[i], data.band_hi[i + 1], t1)),
-            f.to_pixel(lerp(a0, a1, t0), lerp(data.band_hi[i], data.band_hi[i + 1], t0))},
-           {222, 228, 240}});
+  // Bands: quads between lo and hi at neighbouring angles, subdivided in angle so the polygons
+  // follow the circle (each piece is convex at these small steps); closed when the angles cover
+  // the circle (last angle + step = first angle + 360).
+  const auto shade = [&](std::vector<double> angle, std::vector<double> lo, std::vector<double> hi,
+                         Rgb colour) {
+    const std::size_t n = std::min({angle.size(), lo.size(), hi.size()});
+    if (n > 2 && std::abs(angle[n - 1] + (angle[1] - angle[0]) - (angle[0] + 360.0)) <
+                     1e-6 * std::abs(angle[1] - angle[0])) {
+      angle.resize(n), lo.resize(n), hi.resize(n);
+      angle.push_back(angle[0] + 360.0), lo.push_back(lo[0]), hi.push_back(hi[0]);
     }
-  }
+    const auto lerp = [](double x, double y, double t) { return x + (y - x) * t; };
+    for (std::size_t i = 0; i + 1 < std::min({angle.size(), lo.size(), hi.size()}); ++i) {
+      if (!std::isfinite(lo[i] + lo[i + 1] + hi[i] + hi[i + 1])) continue;
+      const double a0 = angle[i], a1 = angle[i + 1];
+      for (int s = 0; s < 4; ++s) {
+        const double t0 = s / 4.0, t1 = (s + 1) / 4.0;
+        fig.polygons.push_back({{f.to_pixel(lerp(a0, a1, t0), lerp(lo[i], lo[i + 1], t0)),
+                                 f.to_pixel(lerp(a0, a1, t1), lerp(lo[i], lo[i + 1], t1)),
+                                 f.to_pixel(lerp(a0, a1, t1), lerp(hi[i], hi[i + 1], t1)),
+                                 f.to_pixel(lerp(a0, a1, t0), lerp(hi[i], hi[i + 1], t0))},
+                                colour});
+      }
+    }
+  };
+  for (const PolarBand& b : data.bands) shade(b.angle_deg, b.lo, b.hi, b.colour);
+  shade(data.band_angle_deg, data.band_lo, data.band_hi, {222, 228, 240});
   draw_polar_axes(f, ticks, data.quantity, fig);
   int index = 0;
   std::vector<std::pair<std::string, Rgb>> legend;
@@ -134,6 +146,8 @@ Figure polar_envelope_figure(const PolarEnvelopeData& data, int width, int heigh
     legend.push_back({data.mean->label.empty() ? "mean" : data.mean->label, colour});
   }
   if (!data.band_angle_deg.empty()) legend.push_back({"min–max", {200, 210, 230}});
+  for (const PolarBand& b : data.bands)
+    if (!b.label.empty()) legend.push_back({b.label, b.colour});
   double y = height - top - 10;
   const double lx = f.centre.x + f.radius_px + 40;
   for (const auto& [label, colour] : legend) {

@@ -26,13 +26,22 @@ struct PolarCurve {
   double width = 1.5;
 };
 
+// A shaded band between lo and hi per angle (an ensemble's min-max), drawn under the curves.
+struct PolarBand {
+  std::string label;  // legend text ("" = not in the legend)
+  std::vector<double> angle_deg, lo, hi;
+  Rgb colour{222, 228, 240};
+};
+
 struct PolarEnvelopeData {
   std::string title;
   std::string quantity;            // radial axis title with unit, e.g. "base displacement [cm]"
   std::vector<PolarCurve> curves;  // per record or case
   std::optional<PolarCurve> mean;  // drawn thick and black
-  // Optional band (ensemble min-max), shaded: lower and upper value per band angle.
+  // Optional band (the min-max over the curves), shaded: lower and upper value per band angle.
   std::vector<double> band_angle_deg, band_lo, band_hi;
+  // Further bands (ensemble min-max per curve), shaded in their colours under everything.
+  std::vector<PolarBand> bands;
 };
 
 Figure polar_envelope_figure(const PolarEnvelopeData& data, int width = 800, int height = 700,

@@ -73,6 +73,18 @@ DisplayUnit unit_from_study(const StudyStore& store, const std::string& column) 
 
 }  // namespace
 
+EnsembleColumns ensemble_columns(const std::vector<std::string>& outputs,
+                                 const std::string& quantity) {
+  const auto find = [&](const std::string& stat) {
+    for (const char* infix : {"_ens_", "_", ".", "_ensemble_"}) {
+      const auto it = std::find(outputs.begin(), outputs.end(), quantity + infix + stat);
+      if (it != outputs.end()) return static_cast<int>(it - outputs.begin());
+    }
+    return -1;
+  };
+  return {find("min"), find("mean"), find("max"), find("std")};
+}
+
 double unit_divisor(const std::string& unit) {
   static const std::map<std::string, double> kUnits{
       {"m", 1.0},  {"cm", 0.01}, {"mm", 1e-3}, {"m/s", 1.0}, {"g", 9.81}, {"m/s2", 1.0},
@@ -113,11 +125,20 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
                                              "incidence or *angle)")
                                : "axis '" + opt.angle_axis + "'") +
                           "; its axes are: " + join(layout.axes));
+  // Ensemble statistics beside the quantity (a study run with `ensemble: N`). A table holding
+  // only the statistics draws the ensemble mean as the quantity.
+  const EnsembleColumns ens = ensemble_columns(layout.outputs, opt.quantity);
   const auto q = std::find(layout.outputs.begin(), layout.outputs.end(), opt.quantity);
-  if (q == layout.outputs.end())
+  if (q == layout.outputs.end() && ens.mean < 0)
     throw PolarStudyError(db_path + ": quantity '" + opt.quantity +
                           "' is not in the table; its quantities are: " + join(layout.outputs));
-  const std::size_t qi = static_cast<std::size_t>(q - layout.outputs.begin());
+  const std::size_t qi = q != layout.outputs.end()
+                             ? static_cast<std::size_t>(q - layout.outputs.begin())
+                             : static_cast<std::size_t>(ens.mean);
+  if (q == layout.outputs.end())
+    result.notes.push_back("'" + opt.quantity +
+                           "' itself is not in the table: its ensemble mean '" +
+                           layout.outputs[qi] + "' is drawn");
   const auto axis_index = [&](const std::string& name, const char* what) {
     const auto it = std::find(layout.axes.begin(), layout.axes.end(), name);
     if (it == layout.axes.end())
@@ -143,10 +164,17 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
                                             : DisplayUnit{opt.unit, unit_divisor(opt.unit)};
   // Rows that pass the filters, finished.
   bool degrees = false;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   struct Row {
     double angle_deg, radius;
     std::string group;
     double value;
+    double lo, mean, hi;  // ensemble min, mean, max (NaN without them)
+  };
+  const auto stat = [&](const RunRow& r, int column) {
+    return column >= 0 && static_cast<std::size_t>(column) < r.values.size()
+               ? r.values[column] / unit.divisor
+               : nan;
   };
   std::vector<Row> rows;
   for (const RunRow& r : store->read_runs()) {
@@ -156,7 +184,13 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
       if (cell_text(r.axes[axis]) != label) keep = false;
     if (!keep) continue;
     if (!r.axes[angle].numeric) throw PolarStudyError(db_path + ": angle axis holds labels");
-    Row row{r.axes[angle].number, 0.0, "", r.values[qi] / unit.divisor};
+    Row row{r.axes[angle].number,
+            0.0,
+            "",
+            r.values[qi] / unit.divisor,
+            stat(r, ens.min),
+            stat(r, ens.mean),
+            stat(r, ens.max)};
     if (std::abs(row.angle_deg) > 2 * std::numbers::pi + 1e-9) degrees = true;
     if (radial >= 0) row.radius = r.axes[radial].numeric ? r.axes[radial].number : 0.0;
     // Group: the --per axis, or every other axis (case) except angle and radial.
@@ -190,14 +224,24 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
   csv.precision(10);
 
   if (radial < 0) {
-    // value[group][angle]: max over rows that share them (other axes not fixed by --where).
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<std::vector<double>> v(groups.size(), std::vector<double>(angles.size(), nan));
+    // value[group][angle]: max over rows that share them (other axes not fixed by --where); the
+    // ensemble band likewise spans the lowest min and the highest max of those rows.
+    using Grid = std::vector<std::vector<double>>;
+    Grid v(groups.size(), std::vector<double>(angles.size(), nan)), lo = v, mean_e = v, hi = v;
     std::vector<std::vector<int>> count(groups.size(), std::vector<int>(angles.size(), 0));
+    const auto fold = [](double& into, double x, bool first, auto pick) {
+      into = first || !std::isfinite(into) ? x : (std::isfinite(x) ? pick(into, x) : into);
+    };
+    const auto max_of = [](double x, double y) { return std::max(x, y); };
+    const auto min_of = [](double x, double y) { return std::min(x, y); };
     for (const Row& r : rows) {
       const std::size_t g = std::find(groups.begin(), groups.end(), r.group) - groups.begin();
       const std::size_t a = idx(angles, r.angle_deg);
-      v[g][a] = count[g][a]++ ? std::max(v[g][a], r.value) : r.value;
+      const bool first = count[g][a]++ == 0;
+      fold(v[g][a], r.value, first, max_of);
+      fold(lo[g][a], r.lo, first, min_of);
+      fold(mean_e[g][a], r.mean, first, max_of);
+      fold(hi[g][a], r.hi, first, max_of);
     }
     for (auto& c : count)
       if (std::any_of(c.begin(), c.end(), [](int n) { return n > 1; })) {
@@ -206,35 +250,72 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
             "is drawn; fix them with --where AXIS=VALUE");
         break;
       }
+    const bool band = ens.band();
+    const bool ens_mean = ens.mean >= 0 && q != layout.outputs.end();
     PolarEnvelopeData& e = result.envelope;
     e.title = opt.quantity + " against incidence angle";
     e.quantity = qtitle;
+    const auto name = [&](std::size_t g) { return groups[g].empty() ? opt.quantity : groups[g]; };
     csv << "angle_deg";
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-      e.curves.push_back({groups[g].empty() ? opt.quantity : groups[g], angles, v[g], {}, 1.5});
-      csv << "," << (groups[g].empty() ? opt.quantity : groups[g]);
+    if (band && groups.size() == 1) {
+      // One curve: member 0 (the model as given) thin, the ensemble mean thick, min-max shaded.
+      e.title += " (ensemble)";
+      e.curves.push_back({"member 0", angles, v[0], Rgb{31, 119, 180}, 1.5});
+      if (ens_mean) e.mean = PolarCurve{"ens. mean", angles, mean_e[0], Rgb{0, 0, 0}, 3.0};
+      e.bands.push_back({"ens. min–max", angles, lo[0], hi[0], Rgb{198, 214, 238}});
+      csv << "," << name(0) << ",min,mean,max";
+    } else if (band) {
+      // Several curves: each its ensemble mean (member 0 without one) over its own min-max band
+      // in a light tint of its colour; the mean over the curves as before, without a band.
+      e.title += ens_mean ? " (ensemble means, min–max)" : " (ensemble min–max)";
+      for (std::size_t g = 0; g < groups.size(); ++g) {
+        const Rgb c = series_colour(static_cast<int>(g));
+        const Rgb tint{static_cast<unsigned char>(c.r + (255 - c.r) * 3 / 4),
+                       static_cast<unsigned char>(c.g + (255 - c.g) * 3 / 4),
+                       static_cast<unsigned char>(c.b + (255 - c.b) * 3 / 4)};
+        e.curves.push_back({name(g), angles, ens_mean ? mean_e[g] : v[g], c, 1.8});
+        e.bands.push_back({g == 0 ? "ens. min–max" : "", angles, lo[g], hi[g], tint});
+        csv << "," << name(g) << "," << name(g) << "_min," << name(g) << "_mean," << name(g)
+            << "_max";
+      }
+    } else {
+      for (std::size_t g = 0; g < groups.size(); ++g) {
+        e.curves.push_back({name(g), angles, v[g], {}, 1.5});
+        csv << "," << name(g);
+      }
     }
     if (groups.size() > 1) {
       PolarCurve mean{"mean", angles, {}, {}, 3.0};
+      std::vector<double> band_lo, band_hi;
       for (std::size_t a = 0; a < angles.size(); ++a) {
-        double sum = 0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        double sum = 0, l = std::numeric_limits<double>::infinity(), h = -l;
         int n = 0;
-        for (std::size_t g = 0; g < groups.size(); ++g)
-          if (std::isfinite(v[g][a]))
-            sum += v[g][a], ++n, lo = std::min(lo, v[g][a]), hi = std::max(hi, v[g][a]);
+        for (const PolarCurve& c : e.curves)
+          if (std::isfinite(c.value[a]))
+            sum += c.value[a], ++n, l = std::min(l, c.value[a]), h = std::max(h, c.value[a]);
         mean.value.push_back(n ? sum / n : nan);
-        e.band_lo.push_back(n ? lo : nan);
-        e.band_hi.push_back(n ? hi : nan);
+        band_lo.push_back(n ? l : nan);
+        band_hi.push_back(n ? h : nan);
       }
-      e.band_angle_deg = angles;
+      if (!band) {
+        e.band_angle_deg = angles;
+        e.band_lo = band_lo;
+        e.band_hi = band_hi;
+      }
       e.mean = mean;
-      csv << ",mean,min,max";
+      csv << (band ? ",mean" : ",mean,min,max");
     }
     csv << "\n";
     for (std::size_t a = 0; a < angles.size(); ++a) {
       csv << angles[a];
-      for (std::size_t g = 0; g < groups.size(); ++g) csv << "," << v[g][a];
-      if (e.mean) csv << "," << e.mean->value[a] << "," << e.band_lo[a] << "," << e.band_hi[a];
+      for (std::size_t g = 0; g < groups.size(); ++g) {
+        csv << "," << v[g][a];
+        if (band) csv << "," << lo[g][a] << "," << mean_e[g][a] << "," << hi[g][a];
+      }
+      if (groups.size() > 1) {
+        csv << "," << e.mean->value[a];
+        if (!band) csv << "," << e.band_lo[a] << "," << e.band_hi[a];
+      }
       csv << "\n";
     }
   } else {
@@ -247,12 +328,14 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     std::vector<int> n(sum.size(), 0);
     for (const Row& r : rows) {
       const std::size_t k = idx(radii, r.radius) * angles.size() + idx(angles, r.angle_deg);
-      sum[k] += r.value;
+      // With ensemble statistics the ensemble mean is the result (the single run is one member).
+      sum[k] += ens.mean >= 0 && std::isfinite(r.mean) ? r.mean : r.value;
       ++n[k];
     }
     PolarContourData& c = result.contour;
     c.title = opt.quantity + " against incidence angle and " + layout.axes[radial];
     if (groups.size() > 1) c.title += " (mean of " + std::to_string(groups.size()) + ")";
+    if (ens.mean >= 0) c.title += ", ensemble mean";
     c.radius_title = layout.axes[radial] + " [" + runit.unit + "]";
     c.value_title = qtitle;
     c.angle_deg = angles;

@@ -1,6 +1,9 @@
 // A study's results (SQLite, solver/study/study_store.h) arranged for polar figures: a quantity's
 // peak against the incidence-angle axis per record or case, and on an angle x gap grid.
 // Angles are stored in SI (rad) like every numeric axis; values above 2 pi are taken as degrees.
+// Ensemble statistics of a quantity Q are output columns beside Q: Q_ens_min, Q_ens_mean,
+// Q_ens_max, Q_ens_std as `ensemble: N` studies write them (docs/studies.md); Q_min, Q.min,
+// Q_ensemble_min are read too: see ensemble_columns.
 #pragma once
 
 #include <stdexcept>
@@ -41,6 +44,15 @@ struct PolarStudyResult {
   std::string csv;             // the plotted numbers
   std::vector<std::string> notes;
 };
+
+// Where a quantity's ensemble statistics are among the output columns (-1: absent). A band needs
+// both min and max. Tried in order for each statistic S: Q_ens_S, Q_S, Q.S, Q_ensemble_S.
+struct EnsembleColumns {
+  int min = -1, mean = -1, max = -1, std = -1;
+  bool band() const { return min >= 0 && max >= 0; }
+};
+EnsembleColumns ensemble_columns(const std::vector<std::string>& outputs,
+                                 const std::string& quantity);
 
 // The divisor from SI to a display unit name; throws PolarStudyError for an unknown name.
 double unit_divisor(const std::string& unit);

@@ -77,8 +77,51 @@ void read_histories(RunData& run, const fs::path& path) {
   if (run.rows() < 2) throw RunDataError(path.string() + ": fewer than 2 rows");
 }
 
+// 3D: levels from the x DOF columns "<structure>/<level> (x) u [m]" (y and theta beside them).
+void find_structures3d(RunData& run) {
+  for (std::size_t c = 1; c < run.columns.size(); ++c) {
+    const ColumnName n = parse_column_name(run.columns[c]);
+    if (n.quantity != "u" || n.label.size() < 5 ||
+        n.label.compare(n.label.size() - 4, 4, " (x)") != 0)
+      continue;
+    const std::string label = n.label.substr(0, n.label.size() - 4);
+    const auto slash = label.find('/');
+    if (slash == std::string::npos) continue;
+    const std::string name = label.substr(0, slash);
+    auto it = std::find_if(run.structures.begin(), run.structures.end(),
+                           [&](const Structure& s) { return s.name == name; });
+    if (it == run.structures.end()) {
+      run.structures.push_back({name, {}});
+      it = run.structures.end() - 1;
+    }
+    Level lv;
+    lv.label = label;
+    lv.u = static_cast<int>(c);
+    lv.v = run.find(label + " (x)", "v");
+    lv.a_abs = run.find(label + " (x)", "a_abs");
+    lv.u_y = run.find(label + " (y)", "u");
+    lv.theta = run.find(label + " (theta)", "u");
+    lv.a_abs_y = run.find(label + " (y)", "a_abs");
+    lv.a_abs_theta = run.find(label + " (theta)", "a_abs");
+    if (lv.u_y < 0 || lv.theta < 0)
+      throw RunDataError((run.dir / "histories.csv").string() + ":1: '" + label +
+                         " (x) u [m]' without its (y) and (theta) columns");
+    it->levels.push_back(lv);
+  }
+}
+
 // Structures and levels from the DOF columns "<structure>/<level> u [m]".
 void find_structures(RunData& run) {
+  for (const std::string& c : run.columns) {
+    const ColumnName n = parse_column_name(c);
+    if (n.quantity == "u" && n.label.size() > 4 &&
+        n.label.compare(n.label.size() - 4, 4, " (x)") == 0)
+      run.three_d = true;
+  }
+  if (run.three_d) {
+    find_structures3d(run);
+    return;
+  }
   const auto heights = story_heights(run.summary);
   for (std::size_t c = 1; c < run.columns.size(); ++c) {
     const ColumnName n = parse_column_name(run.columns[c]);
@@ -136,6 +179,10 @@ void find_elements(RunData& run) {
     e.penetration = run.find(n.label, "penetration");
     e.indentation = run.find(n.label, "indentation");
     e.contact = e.penetration >= 0;
+    e.force_x = run.find(n.label, "force_x");
+    e.force_y = run.find(n.label, "force_y");
+    e.deformation_x = run.find(n.label, "deformation_x");
+    e.deformation_y = run.find(n.label, "deformation_y");
     (e.contact ? run.contacts : run.isolators).push_back(e);
   }
 }
@@ -161,9 +208,52 @@ std::string locate_model(const RunData& run, const std::string& override_path) {
   return "";
 }
 
+// 3D: the plan geometry of the model file (required: histories hold only the DOFs), elevations
+// of the levels from it, and the contact-event log.
+void find_geometry3d(RunData& run, const std::string& model_path) {
+  if (model_path.empty())
+    throw RunDataError((run.dir / "summary.json").string() +
+                       ": a 3D run is drawn from its model's plan geometry, and the model file "
+                       "named in \"model_file\" was not found; give it with --model FILE");
+  ModelConfig config;
+  try {
+    config = load_model_file(model_path);
+    run.site = site_geometry(config);
+  } catch (const std::exception& e) {
+    throw RunDataError(std::string("model file of the run: ") + e.what());
+  }
+  for (Structure& s : run.structures) {
+    for (Level& l : s.levels) {
+      for (std::size_t b = 0; b < run.site.bodies.size(); ++b)
+        if (run.site.bodies[b].dof_label == l.label) l.body = static_cast<int>(b);
+      if (l.body < 0)
+        throw RunDataError(model_path + ": has no level '" + l.label +
+                           "' of the run's histories (another model?)");
+      l.elevation = run.site.bodies[l.body].elevation;
+    }
+    std::stable_sort(s.levels.begin(), s.levels.end(),
+                     [](const Level& a, const Level& b) { return a.elevation < b.elevation; });
+  }
+  try {
+    run.contact_log = read_contact_log(run.dir / "contact_events.csv");
+  } catch (const std::exception& e) {
+    throw RunDataError(e.what());
+  }
+  for (const auto& [pair, rows] : run.contact_log.pairs) {
+    std::string a, b;
+    if (!split_pair(pair, a, b) || run.site.find(a) < 0 || run.site.find(b) < 0)
+      run.notes.push_back("contact pair '" + pair +
+                          "' of contact_events.csv: its bodies are not in the model; not drawn");
+  }
+}
+
 // Walls and neighbour placement from the model file, or inferred from the contact histories.
 void find_geometry(RunData& run, const std::string& model_override) {
   const std::string model_path = locate_model(run, model_override);
+  if (run.three_d) {
+    find_geometry3d(run, model_path);
+    return;
+  }
   const Structure& main = run.structures.front();
   if (!model_path.empty()) {
     ModelConfig config;

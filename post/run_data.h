@@ -11,6 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "post/contact_log.h"
+#include "post/site3d.h"
+
 namespace isopound::post {
 
 class RunDataError : public std::runtime_error {
@@ -28,7 +31,10 @@ ColumnName parse_column_name(const std::string& header);
 struct Level {
   std::string label;               // "3-storey/floor 1"
   double elevation = 0.0;          // m above the ground (base slab: 0)
-  int u = -1, v = -1, a_abs = -1;  // column indices (-1: absent)
+  int u = -1, v = -1, a_abs = -1;  // column indices (-1: absent); 3D: the x DOF's
+  // 3D runs: the y and theta DOFs' displacement and absolute acceleration columns.
+  int u_y = -1, theta = -1, a_abs_y = -1, a_abs_theta = -1;
+  int body = -1;  // 3D: index into RunData::site.bodies
 };
 
 struct Structure {
@@ -45,6 +51,8 @@ struct ElementColumns {
   std::string label;
   bool contact = false;
   int force = -1, deformation = -1, penetration = -1, indentation = -1;
+  // 3D bearings: components (force and deformation above are the resultants).
+  int force_x = -1, force_y = -1, deformation_x = -1, deformation_y = -1;
 };
 
 // A moat wall next to a level of the main building.
@@ -66,6 +74,11 @@ struct RunData {
   std::vector<ElementColumns> isolators, contacts;
   std::vector<Wall> walls;
   std::vector<std::string> notes;  // what could not be found and was assumed
+  // 3D runs (DOF columns "<structure>/<level> (x) u [m]"): the plan geometry from the model file
+  // and the contact-event log (empty without contact_events.csv).
+  bool three_d = false;
+  Site3D site;
+  ContactLog contact_log;
 
   std::size_t rows() const { return values.empty() ? 0 : values[0].size(); }
   int find(const std::string& label, const std::string& quantity) const;  // -1 when absent

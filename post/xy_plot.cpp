@@ -56,6 +56,18 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
   frame.width = std::max(10.0, w - ml - mr);
   frame.height = std::max(10.0, h - mb - mt);
   range_of(panel, frame.x_lo, frame.x_hi, frame.y_lo, frame.y_hi);
+  if (panel.equal_axes) {
+    // Widen the range that has fewer pixels per unit, about its centre.
+    const double per_x = (frame.x_hi - frame.x_lo) / frame.width;
+    const double per_y = (frame.y_hi - frame.y_lo) / frame.height;
+    if (per_x > per_y) {
+      const double c = 0.5 * (frame.y_lo + frame.y_hi), half = 0.5 * per_x * frame.height;
+      frame.y_lo = c - half, frame.y_hi = c + half;
+    } else {
+      const double c = 0.5 * (frame.x_lo + frame.x_hi), half = 0.5 * per_y * frame.width;
+      frame.x_lo = c - half, frame.x_hi = c + half;
+    }
+  }
   const double L = frame.left, B = frame.bottom, R = L + frame.width, T = B + frame.height;
 
   for (double t : nice_ticks(frame.x_lo, frame.x_hi, 7)) {
@@ -101,13 +113,23 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
                          0.0,
                          true});
   if (panel.legend) {
+    // Wide enough for the longest label (about 6.5 px per character at 11 pt, UTF-8 counted
+    // by code points), at most half the plot.
+    std::size_t longest = 0;
+    for (const Series& s : panel.series) {
+      std::size_t n = 0;
+      for (unsigned char ch : s.label) n += (ch & 0xC0) != 0x80;
+      longest = std::max(longest, n);
+    }
+    const double width = std::min(std::max(150.0, 36.0 + 6.5 * longest), 0.5 * frame.width);
     double y = T - 14;
     index = 0;
     for (const Series& s : panel.series) {
       const Rgb c = s.colour.value_or(series_colour(index++));
       if (s.label.empty()) continue;
-      fig.lines.push_back({{{R - 150, y}, {R - 126, y}}, c, 2.5});
-      fig.texts.push_back({{R - 120, y}, s.label, 11, kBlack, HAlign::kLeft, VAlign::kCentre});
+      fig.lines.push_back({{{R - width, y}, {R - width + 24, y}}, c, 2.5});
+      fig.texts.push_back(
+          {{R - width + 30, y}, s.label, 11, kBlack, HAlign::kLeft, VAlign::kCentre});
       y -= 16;
     }
   }

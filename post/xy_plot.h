@@ -33,6 +33,7 @@ struct Panel {
   bool legend = true;
   bool symmetric_y = false;  // y range symmetric about 0 (time histories)
   bool y_from_zero = false;  // y range includes 0 (spectra)
+  bool equal_axes = false;   // one data unit is as long in x as in y (plans, orbits)
 };
 
 // Where a panel's data lands on the figure (for tests and overlays).

@@ -9,6 +9,7 @@
 
 #include "post/headless.h"
 #include "post/polar_plot.h"
+#include "post/polar_study.h"
 #include "post/render_png.h"
 #include "post_test_support.h"
 #include "solver/study/study_store.h"
@@ -194,6 +195,152 @@ TEST(PostPolar, CommandErrorsNameTheProblem) {
   r = test::run_post("polar " + with + " --quantity u_base --contour width");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("'width' is not in the study"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+// An ensemble study: axes record x angle (rad), outputs u_base (member 0) and its ensemble
+// statistics u_base_ens_min, _mean, _max, _std and the horizon, values from formulas (SI, m).
+double ens_mean(double a_deg, int record) {
+  return 0.20 + 0.05 * std::cos((a_deg - 75.0) * kPi / 180) + 0.03 * record;
+}
+std::string make_ensemble_study(const std::filesystem::path& dir, int records,
+                                bool member0 = true) {
+  StoreLayout layout;
+  layout.axes = {"record", "angle"};
+  // The study engine's naming (docs/studies.md, `ensemble: N`): c_ens_min, _mean, _max, _std.
+  layout.outputs = {"u_base",         "u_base_ens_min", "u_base_ens_mean",
+                    "u_base_ens_max", "u_base_ens_std", "ens_horizon_s"};
+  if (!member0) layout.outputs[0] = "other";
+  const std::int64_t na = 24, count = records * na;
+  const auto cells = [&](std::int64_t c) {
+    return std::vector<Cell>{{false, 0.0, std::string(1, static_cast<char>('A' + c / na))},
+                             {true, (c % na) * 15.0 * kPi / 180, ""}};
+  };
+  const auto path =
+      (dir / ("ensemble" + std::to_string(records) + (member0 ? "" : "s") + ".db")).string();
+  StudyStore store = StudyStore::create(path, layout, {}, count, cells);
+  std::vector<RunRecord> runs;
+  for (std::int64_t c = 0; c < count; ++c) {
+    const double m = ens_mean((c % na) * 15.0, static_cast<int>(c / na));
+    RunRecord r;
+    r.case_id = c;
+    r.ok = true;
+    r.values = {m + 0.01, m - 0.04, m, m + 0.06, 0.02, 3.5};
+    runs.push_back(r);
+  }
+  store.commit(runs, store.begin_session(1, 1, false, count));
+  return path;
+}
+
+TEST(PostPolar, EnsembleColumnsAreFoundBesideTheQuantityInEveryAcceptedSpelling) {
+  const std::vector<std::string> outputs{"u",         "u_min",           "u_max",     "F.min",
+                                         "F.mean",    "F.max",           "d_ens_min", "d_ens_max",
+                                         "d_ens_std", "r_ensemble_mean", "u_base"};
+  const EnsembleColumns u = ensemble_columns(outputs, "u");
+  EXPECT_EQ(u.min, 1);
+  EXPECT_EQ(u.max, 2);
+  EXPECT_EQ(u.mean, -1);
+  EXPECT_TRUE(u.band());
+  const EnsembleColumns f = ensemble_columns(outputs, "F");
+  EXPECT_EQ(f.min, 3);
+  EXPECT_EQ(f.mean, 4);
+  EXPECT_EQ(f.max, 5);
+  const EnsembleColumns d = ensemble_columns(outputs, "d");
+  EXPECT_EQ(d.min, 6);
+  EXPECT_EQ(d.std, 8);
+  EXPECT_TRUE(d.band());
+  const EnsembleColumns r = ensemble_columns(outputs, "r");
+  EXPECT_EQ(r.mean, 9);
+  EXPECT_FALSE(r.band());
+  EXPECT_FALSE(ensemble_columns(outputs, "u_base").band());  // "u_base" is not u's statistic
+}
+
+TEST(PostPolar, EnsembleBandIsShadedBetweenMinAndMaxWithTheMeanLineOnIt) {
+  const PrivateDisplay display(false);
+  const auto dir = test::scratch_dir("polarens");
+  PolarStudyOptions opt;
+  opt.quantity = "u_base";
+  opt.unit = "cm";
+  const std::string db = make_ensemble_study(dir, 1);
+  const PolarStudyResult r = read_polar_study(db, opt);
+  const PolarEnvelopeData& e = r.envelope;
+  ASSERT_EQ(e.curves.size(), 1u);
+  ASSERT_TRUE(e.mean.has_value());
+  ASSERT_EQ(e.bands.size(), 1u);
+  EXPECT_TRUE(e.band_angle_deg.empty());  // no min-max over curves: the band is the ensemble's
+  ASSERT_EQ(e.bands[0].angle_deg.size(), 24u);
+  for (std::size_t a = 0; a < 24; ++a) {
+    const double m = 100 * ens_mean(15.0 * a, 0);
+    EXPECT_NEAR(e.mean->value[a], m, 1e-9);
+    EXPECT_NEAR(e.bands[0].lo[a], m - 4.0, 1e-9);
+    EXPECT_NEAR(e.bands[0].hi[a], m + 6.0, 1e-9);
+    EXPECT_NEAR(e.curves[0].value[a], m + 1.0, 1e-9);
+  }
+  EXPECT_EQ(r.csv.substr(0, r.csv.find('\n')), "angle_deg,A,min,mean,max");
+
+  // Pixels along the 195 deg ray (a data angle, off the 30 deg spokes and the 15 deg tick
+  // labels): band colour between min and max (away from the lines), background outside.
+  PolarFrame f;
+  render_png(polar_envelope_figure(e, 800, 700, &f), (dir / "band.png").string());
+  const test::Image img = test::read_png((dir / "band.png").string());
+  const double m = 100 * ens_mean(195.0, 0);
+  const auto pixel = [&](double value) {
+    const Point2 p = f.to_pixel(195.0, value);
+    return img.at(static_cast<int>(p.x), static_cast<int>(p.y));
+  };
+  const double px_per_cm = f.radius_px / (f.r_hi - f.r_lo);
+  ASSERT_GT(px_per_cm * 4.0, 12.0) << "band too thin to probe";
+  const Rgb shade = e.bands[0].colour;
+  EXPECT_TRUE(near_colour(pixel(m - 2.0), shade, 8));   // between min and the mean
+  EXPECT_TRUE(near_colour(pixel(m + 3.5), shade, 8));   // between member 0 and max
+  EXPECT_TRUE(near_colour(pixel(m), {0, 0, 0}, 60));    // the mean line (3 px, black)
+  EXPECT_FALSE(near_colour(pixel(m - 6.0), shade, 8));  // below min
+  EXPECT_FALSE(near_colour(pixel(m + 8.0), shade, 8));  // above max
+  EXPECT_TRUE(near_colour(pixel(m + 8.0), {255, 255, 255}, 8));
+
+  // Several records: one band and one ensemble-mean curve each, the mean over records on top.
+  opt.unit = "m";
+  const PolarStudyResult two = read_polar_study(make_ensemble_study(dir, 2), opt);
+  ASSERT_EQ(two.envelope.curves.size(), 2u);
+  ASSERT_EQ(two.envelope.bands.size(), 2u);
+  EXPECT_EQ(two.envelope.curves[1].label, "B");
+  EXPECT_NEAR(two.envelope.curves[1].value[5], ens_mean(75.0, 1), 1e-12);
+  EXPECT_NEAR(two.envelope.mean->value[5], ens_mean(75.0, 0) + 0.015, 1e-12);
+  EXPECT_NEAR(two.envelope.bands[1].hi[5], ens_mean(75.0, 1) + 0.06, 1e-12);
+  EXPECT_EQ(two.csv.substr(0, two.csv.find('\n')),
+            "angle_deg,A,A_min,A_mean,A_max,B,B_min,B_mean,B_max,mean");
+  // The command draws it too (exit 0, a non-blank PNG).
+  const auto cli =
+      test::run_post("polar " + db + " --quantity u_base --unit cm -o " + (dir / "cli").string());
+  ASSERT_EQ(cli.exit_code, 0) << cli.output;
+  EXPECT_GT(test::read_png((dir / "cli.png").string()).variance(), 50.0);
+  // ISOPOUND_POST_EXAMPLES=DIR keeps the figure (the README's synthetic ensemble example).
+  if (const char* keep = std::getenv("ISOPOUND_POST_EXAMPLES"))
+    std::filesystem::copy_file(dir / "cli.png", std::filesystem::path(keep) / "polar-ensemble.png",
+                               std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PostPolar, ATableWithOnlyEnsembleStatisticsDrawsTheEnsembleMean) {
+  const auto dir = test::scratch_dir("polarensonly");
+  PolarStudyOptions opt;
+  opt.quantity = "u_base";  // only u_base_ens_min, _mean, _max, _std are columns
+  const std::string db = make_ensemble_study(dir, 1, false);
+  const PolarStudyResult r = read_polar_study(db, opt);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("its ensemble mean 'u_base_ens_mean' is drawn"), std::string::npos);
+  ASSERT_EQ(r.envelope.bands.size(), 1u);
+  EXPECT_NEAR(r.envelope.curves[0].value[3], ens_mean(45.0, 0), 1e-12);
+  // A name with no column and no statistics is still an error listing the columns.
+  opt.quantity = "u";
+  try {
+    read_polar_study(db, opt);
+    ADD_FAILURE() << "no error";
+  } catch (const PolarStudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("its quantities are: other, u_base_ens_min"),
+              std::string::npos)
+        << e.what();
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -35,6 +35,10 @@ const char* stepping_name(AnalysisConfig::Stepping s) {
   return s == AnalysisConfig::Stepping::kAdaptive ? "adaptive" : "fixed";
 }
 
+const char* max_step_rule_name(AnalysisConfig::MaxStepRule rule) {
+  return rule == AnalysisConfig::MaxStepRule::kParticipating ? "participating" : "all_modes";
+}
+
 const char* isolator_name(IsolatorConfig::Model m) {
   switch (m) {
     case IsolatorConfig::Model::kLinear:
@@ -132,6 +136,8 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       {"dt_s", a.dt},
       {"analysis_interval_s", r.stats.interval},
       {"steps_per_period", a.steps_per_period},
+      {"max_step_rule", max_step_rule_name(a.max_step_rule)},
+      {"max_step_period_s", r.stats.step_period},
       {"tolerance", a.tolerance},
       {"max_halvings", a.max_halvings},
       {"newton_tolerance", a.newton_tolerance},
@@ -226,7 +232,9 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                   "isolator_hysteretic + impact_dissipated (+ friction_dissipated in 3D "
                   "pounding)"}};
   if (friction) j["energy"]["friction_dissipated_J"] = *friction;
-  if (unobstructed) {
+  if (unobstructed && !config.structures3d.empty()) {
+    j["unobstructed_3d"] = unobstructed3d_json(job, *unobstructed);  // report3d.cpp
+  } else if (unobstructed) {
     // The main building is structure 0 in both runs, with the same DOF and story numbering.
     const AnalysisResult& u = unobstructed->job.analysis;
     const StructureInfo& s = model.structures[0];
@@ -349,6 +357,15 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
       r.stats.interval > 0 ? static_cast<int>(std::lround(job.motion.dt / r.stats.interval)) : 0,
       config.output.interval > 0 ? config.output.interval : job.motion.dt);
   out << line;
+  if (r.stats.step_period > 0) {
+    std::snprintf(line, sizeof line,
+                  "  largest step from T_min %.4g s / %g steps per period (%s modes)\n",
+                  r.stats.step_period, config.analysis.steps_per_period,
+                  config.analysis.max_step_rule == AnalysisConfig::MaxStepRule::kParticipating
+                      ? "participating"
+                      : "all");
+    out << line;
+  }
   if (!config.structures3d.empty()) {  // report3d.cpp
     print_summary3d(out, job);
   } else {
@@ -429,7 +446,7 @@ namespace isopound {
 
 void print_unobstructed(std::ostream& out, const ModelConfig& config, const JobResult& job,
                         const UnobstructedResult& unobstructed) {
-  (void)config;
+  if (!config.structures3d.empty()) return print_unobstructed3d(out, job, unobstructed);
   const AnalysisResult& r = job.analysis;
   const AnalysisResult& u = unobstructed.job.analysis;
   const Model& model = job.model;

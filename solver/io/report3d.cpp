@@ -175,6 +175,113 @@ nlohmann::json contacts3d_json(const JobResult& job) {
   return out;
 }
 
+nlohmann::json unobstructed3d_json(const JobResult& job, const UnobstructedResult& free_run) {
+  using nlohmann::json;
+  const json with = summary3d_json(job);
+  const json without = summary3d_json(free_run.job);
+  const auto ratio = [](double x, double y) { return y > 0 ? x / y : 0.0; };
+  const auto value = [](const json& peak) { return peak["value"].get<double>(); };
+  json buildings = json::array();
+  for (std::size_t b = 0; b < with.size() && b < without.size(); ++b) {
+    json levels = json::array();
+    for (std::size_t l = 0; l < with[b]["levels"].size(); ++l) {
+      const json& lw = with[b]["levels"][l];
+      const json& lo = without[b]["levels"][l];
+      const auto corner = [&](const json& level) {
+        double m = 0.0;
+        for (const json& c : level["corners"])
+          m = std::max(m, c["displacement"]["resultant"]["value"].get<double>());
+        return m;
+      };
+      const double u_w = value(lw["centre_of_mass"]["displacement"]["resultant"]);
+      const double u_o = value(lo["centre_of_mass"]["displacement"]["resultant"]);
+      const double a_w = value(lw["centre_of_mass"]["absolute_acceleration"]["resultant"]);
+      const double a_o = value(lo["centre_of_mass"]["absolute_acceleration"]["resultant"]);
+      levels.push_back(
+          {{"label", lw["label"]},
+           {"unobstructed_displacement_m", u_o},
+           {"displacement_amplification", ratio(u_w, u_o)},
+           {"unobstructed_corner_displacement_m", corner(lo)},
+           {"corner_displacement_amplification", ratio(corner(lw), corner(lo))},
+           {"unobstructed_theta_rad", value(lo["theta"])},
+           // A symmetric building does not twist without contacts (round-off only):
+           // no ratio to a rotation below 1e-9 rad.
+           {"theta_amplification", value(lo["theta"]) > 1e-9
+                                       ? json(ratio(value(lw["theta"]), value(lo["theta"])))
+                                       : json(nullptr)},
+           {"unobstructed_absolute_acceleration_m_s2", a_o},
+           {"acceleration_amplification", ratio(a_w, a_o)}});
+    }
+    json storeys = json::array();
+    for (std::size_t s = 0; s < with[b]["storeys"].size(); ++s) {
+      const double d_w = value(with[b]["storeys"][s]["envelope_over_columns"]["drift_ratio"]);
+      const double d_o = value(without[b]["storeys"][s]["envelope_over_columns"]["drift_ratio"]);
+      storeys.push_back({{"label", with[b]["storeys"][s]["label"]},
+                         {"unobstructed_drift_ratio", d_o},
+                         {"drift_ratio_amplification", ratio(d_w, d_o)}});
+    }
+    buildings.push_back({{"name", with[b]["name"]}, {"levels", levels}, {"storeys", storeys}});
+  }
+  json gaps = json::array();
+  for (const ContactGap& c : free_run.gaps)
+    gaps.push_back({{"label", c.label},
+                    {"gap_m", c.gap},
+                    {"critical_gap_m", c.critical_gap},
+                    {"pounds_without_obstruction", c.critical_gap > c.gap}});
+  return {{"note",
+           "the same analysis without contact elements; amplification = peak with pounding / "
+           "peak without (centre of mass resultant, largest corner resultant, rotation, centre "
+           "of mass absolute acceleration, storey drift ratio enveloped over columns); "
+           "critical_gap_m per moat wall = the largest distance any slab vertex moves past the "
+           "wall face's rest position towards the wall (a smaller gap pounds under this record "
+           "at this angle)"},
+          {"buildings", buildings},
+          {"walls", gaps}};
+}
+
+void print_unobstructed3d(std::ostream& out, const JobResult& job,
+                          const UnobstructedResult& free_run) {
+  const nlohmann::json j = unobstructed3d_json(job, free_run);
+  char line[256];
+  out << "Without contacts (amplification = with / without):\n";
+  for (const auto& b : j["buildings"]) {
+    for (const auto& l : b["levels"]) {
+      const nlohmann::json& theta_amp = l["theta_amplification"];
+      char theta[32] = "-";
+      if (!theta_amp.is_null()) std::snprintf(theta, sizeof theta, "%.2f", theta_amp.get<double>());
+      std::snprintf(
+          line, sizeof line,
+          "  %s/%-8s CM %7.2f cm (x%.2f)  corners %7.2f cm (x%.2f)  theta %.2e rad (x%s)  "
+          "CM abs. acc. %.3f g (x%.2f)\n",
+          b["name"].get<std::string>().c_str(), l["label"].get<std::string>().c_str(),
+          100 * l["unobstructed_displacement_m"].get<double>(),
+          l["displacement_amplification"].get<double>(),
+          100 * l["unobstructed_corner_displacement_m"].get<double>(),
+          l["corner_displacement_amplification"].get<double>(),
+          l["unobstructed_theta_rad"].get<double>(), theta,
+          l["unobstructed_absolute_acceleration_m_s2"].get<double>() / kGravity,
+          l["acceleration_amplification"].get<double>());
+      out << line;
+    }
+    for (const auto& s : b["storeys"]) {
+      std::snprintf(line, sizeof line, "  %s/%-8s drift ratio %.3f %% (x%.2f)\n",
+                    b["name"].get<std::string>().c_str(), s["label"].get<std::string>().c_str(),
+                    100 * s["unobstructed_drift_ratio"].get<double>(),
+                    s["drift_ratio_amplification"].get<double>());
+      out << line;
+    }
+  }
+  if (j["walls"].empty()) return;
+  out << "Critical gap per moat wall (a gap below this pounds under this record and angle):\n";
+  for (const auto& w : j["walls"]) {
+    std::snprintf(line, sizeof line, "  %-34s gap %7.2f cm   critical gap %7.2f cm%s\n",
+                  w["label"].get<std::string>().c_str(), 100 * w["gap_m"].get<double>(),
+                  100 * w["critical_gap_m"].get<double>(),
+                  w["pounds_without_obstruction"].get<bool>() ? "   (pounds)" : "");
+    out << line;
+  }
+}
+
 void print_contacts3d(std::ostream& out, const JobResult& job) {
   const nlohmann::json j = contacts3d_json(job);
   if (j.empty()) return;
@@ -242,6 +349,7 @@ void print_summary3d(std::ostream& out, const JobResult& job) {
       if (br.contains("deformation")) d = std::max(d, br["deformation"]["value"].get<double>());
       if (br.contains("force")) f = std::max(f, br["force"]["value"].get<double>());
     }
+    if (b["bearings"].empty()) continue;  // a fixed-base building
     std::snprintf(line, sizeof line,
                   "  bearings (%zu): peak resultant deformation %.2f cm, force %.1f kN\n",
                   b["bearings"].size(), 100 * d, f / 1e3);

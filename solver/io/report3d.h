@@ -17,6 +17,11 @@ nlohmann::json summary3d_json(const JobResult& job);
 // "contacts_3d": per polygon contact pair, impacts, first-impact time, peaks of F_N, F_T, area,
 // δ_N and impact velocity, time in stick and slip, friction- and impact-dissipated energy.
 nlohmann::json contacts3d_json(const JobResult& job);
+// "unobstructed_3d" (--compare-unobstructed): per building and level the peaks without
+// contacts and the amplification of each; the critical gap of each moat wall.
+nlohmann::json unobstructed3d_json(const JobResult& job, const UnobstructedResult& free_run);
+void print_unobstructed3d(std::ostream& out, const JobResult& job,
+                          const UnobstructedResult& free_run);
 // The console summary of 3D buildings (after the ground-motion line).
 void print_summary3d(std::ostream& out, const JobResult& job);
 // `isopound modes` for 3D buildings: fixed-base and isolated (bearings at K_post and at K_el)

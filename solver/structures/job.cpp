@@ -62,7 +62,45 @@ RunOptions run_options(const ModelConfig& config) {
   return options;
 }
 
+namespace {
+
+// 3D: the same structures without contact elements; per moat wall, the critical gap from the
+// slab vertices' closing towards it (pounding3d.h, wall_closings).
+UnobstructedResult run_unobstructed3d(const ModelConfig& config, const JobResult& pounding) {
+  ModelConfig free_config = config;
+  free_config.contact3d.pounding = false;
+  free_config.output.histories = false;
+  UnobstructedResult out;
+  out.job.motion = pounding.motion;
+  out.job.motion_peaks = pounding.motion_peaks;
+  out.job.model = build_model(free_config);
+  const auto dof = [&](const std::string& label) {
+    for (int i = 0; i < out.job.model.size(); ++i)
+      if (out.job.model.dofs[i].label == label) return i;
+    throw std::logic_error("unobstructed run: no DOF '" + label + "'");
+  };
+  RunOptions options = run_options(free_config);
+  const std::vector<WallClosing> walls = wall_closings(config);
+  for (const WallClosing& w : walls)
+    for (const auto& c : w.coefficients)
+      options.tracked.push_back(
+          {dof(w.dof_labels[0]), c[0], dof(w.dof_labels[1]), c[1], dof(w.dof_labels[2]), c[2]});
+  out.job.analysis = run_analysis(out.job.model, out.job.motion, options);
+  out.job.first_impact_time.assign(out.job.model.elements.size(), -1.0);
+  std::size_t k = 0;
+  for (const WallClosing& w : walls) {
+    double closing = 0.0;  // how far the slab's outline crosses the wall's face at rest
+    for (const double offset : w.offset)
+      closing = std::max(closing, offset + out.job.analysis.tracked[k++].positive);
+    out.gaps.push_back({w.label, w.gap, closing});
+  }
+  return out;
+}
+
+}  // namespace
+
 UnobstructedResult run_unobstructed(const ModelConfig& config, const JobResult& pounding) {
+  if (!config.structures3d.empty()) return run_unobstructed3d(config, pounding);
   ModelConfig free_config = config;
   free_config.building.walls.clear();
   for (NeighbourConfig& n : free_config.neighbours) {

@@ -1,0 +1,325 @@
+// 3D run figures (see plot_run3d.h).
+#include "post/plot_run3d.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/overlap.h"
+#include "post/xy_plot.h"
+#include "solver/core/constants.h"
+
+namespace isopound::post {
+namespace {
+
+std::vector<double> scaled(const std::vector<double>& v, double divisor) {
+  std::vector<double> out(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out[i] = v[i] / divisor;
+  return out;
+}
+
+double peak_of(const std::vector<double>& v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+// Displacement (or absolute acceleration) history of a plan point p of a level.
+struct PlanHistory {
+  std::vector<double> x, y, resultant;
+};
+PlanHistory point_history(const RunData& run, const Level& l, Vec2 p, bool acceleration) {
+  PlanHistory h;
+  const int cx = acceleration ? l.a_abs : l.u, cy = acceleration ? l.a_abs_y : l.u_y,
+            ct = acceleration ? l.a_abs_theta : l.theta;
+  for (std::size_t r = 0; r < run.rows(); ++r) {
+    const double u = cx >= 0 ? run.values[cx][r] : 0.0, v = cy >= 0 ? run.values[cy][r] : 0.0,
+                 th = ct >= 0 ? run.values[ct][r] : 0.0;
+    h.x.push_back(u - p.y * th);
+    h.y.push_back(v + p.x * th);
+    h.resultant.push_back(std::hypot(h.x.back(), h.y.back()));
+  }
+  return h;
+}
+
+std::string short_label(const std::string& label, const RunData& run) {
+  if (run.structures.size() == 1) {
+    const auto slash = label.find('/');
+    if (slash != std::string::npos) return label.substr(slash + 1);
+  }
+  return label;
+}
+
+const Structure& main_structure(const RunData& run) {
+  // The first isolated structure (with a base slab), else the first.
+  for (const Structure& s : run.structures)
+    if (!s.levels.empty() && run.site.bodies[s.levels.front().body].level == "base") return s;
+  return run.structures.front();
+}
+
+}  // namespace
+
+std::vector<CornerDrift> corner_drifts(const RunData& run) {
+  std::vector<CornerDrift> out;
+  for (const Structure& s : run.structures) {
+    const bool isolated = run.site.bodies[s.levels.front().body].level == "base";
+    for (std::size_t k = isolated ? 1 : 0; k < s.levels.size(); ++k) {
+      const Level& hi = s.levels[k];
+      const Level* lo = k > 0 ? &s.levels[k - 1] : nullptr;  // nullptr: the ground
+      const PlanBody& body = run.site.bodies[hi.body];
+      const double h = body.elevation - (lo ? run.site.bodies[lo->body].elevation : 0.0);
+      CornerDrift best;
+      for (std::size_t c = 0; c < body.plan_W.size(); ++c) {
+        const PlanHistory up = point_history(run, hi, body.plan_W[c], false);
+        PlanHistory down;
+        if (lo) down = point_history(run, *lo, body.plan_W[c], false);
+        CornerDrift d;
+        d.label = s.name + "/story " + std::to_string(k + (isolated ? 0 : 1)) + " corner " +
+                  std::to_string(c + 1);
+        for (std::size_t r = 0; r < run.rows(); ++r) {
+          const double dx = up.x[r] - (lo ? down.x[r] : 0.0), dy = up.y[r] - (lo ? down.y[r] : 0.0);
+          d.ratio.push_back(std::hypot(dx, dy) / h);
+          d.peak = std::max(d.peak, d.ratio.back());
+        }
+        if (d.peak >= best.peak || best.ratio.empty()) best = std::move(d);
+      }
+      out.push_back(std::move(best));
+    }
+  }
+  return out;
+}
+
+std::vector<NamedFigure> run_figures3d(const RunData& run) {
+  const std::vector<double>& t = run.time();
+  const Structure& main = main_structure(run);
+  const Level& base = main.levels.front();
+  const PlanBody& base_body = run.site.bodies[base.body];
+  std::vector<NamedFigure> out;
+
+  // ---- time histories
+  std::vector<Panel> panels;
+  const PlanHistory cm = point_history(run, base, base_body.p_WCM, false);
+  Panel disp{short_label(base.label, run) + ": displacement of the centre of mass",
+             "time [s]",
+             "displacement [cm]",
+             {},
+             true,
+             true};
+  disp.series.push_back(line_series("x", t, scaled(cm.x, 0.01)));
+  disp.series.push_back(line_series("y", t, scaled(cm.y, 0.01)));
+  disp.series.push_back({"resultant", t, scaled(cm.resultant, 0.01), Rgb{0, 0, 0}, 1.5});
+  panels.push_back(disp);
+
+  Panel drift{"Corner drift ratios (the worst corner of each storey)",
+              "time [s]",
+              "drift ratio [%]",
+              {},
+              true,
+              false,
+              true};
+  for (const CornerDrift& d : corner_drifts(run))
+    drift.series.push_back(line_series(short_label(d.label, run), t, scaled(d.ratio, 0.01)));
+  panels.push_back(drift);
+
+  Panel acc{"Absolute accelerations at the centres of mass (resultant)",
+            "time [s]",
+            "absolute acceleration [g]",
+            {},
+            true,
+            false,
+            true};
+  const int gx = run.find("", "ground_acceleration"), gy = run.find("", "ground_acceleration_y");
+  if (gx >= 0) {
+    std::vector<double> g(t.size());
+    for (std::size_t r = 0; r < t.size(); ++r)
+      g[r] = std::hypot(run.values[gx][r], gy >= 0 ? run.values[gy][r] : 0.0) / kGravity;
+    acc.series.push_back({"ground", t, g, Rgb{150, 150, 150}, 1.0});
+  }
+  for (const Structure& s : run.structures)
+    for (const Level& l : s.levels)
+      if (l.a_abs >= 0)
+        acc.series.push_back(
+            line_series(short_label(l.label, run), t,
+                        scaled(point_history(run, l, run.site.bodies[l.body].p_WCM, true).resultant,
+                               kGravity)));
+  panels.push_back(acc);
+
+  if (!run.contact_log.pairs.empty()) {
+    double peak = 0.0;
+    for (const auto& [pair, rows] : run.contact_log.pairs)
+      for (const ContactEvent& e : rows)
+        peak = std::max({peak, std::abs(e.normal_force), std::abs(e.tangential_force)});
+    std::string unit;
+    const double div = force_scale(peak, unit);
+    Panel normal{"Normal contact forces F_N (event log)",
+                 "time [s]",
+                 "F_N [" + unit + "]",
+                 {},
+                 true,
+                 false,
+                 true};
+    Panel tangential{"Tangential contact forces F_T (event log; on B: F_N n − F_T t)",
+                     "time [s]",
+                     "F_T [" + unit + "]",
+                     {},
+                     true,
+                     true};
+    for (const auto& [pair, rows] : run.contact_log.pairs) {
+      // Zero from the start and between episodes (the log holds in-contact and separation rows).
+      std::vector<double> tt{t.front()}, fn{0.0}, ft{0.0};
+      for (const ContactEvent& e : rows) {
+        if (e.event == "onset") tt.push_back(e.time), fn.push_back(0.0), ft.push_back(0.0);
+        tt.push_back(e.time);
+        fn.push_back(e.normal_force / div);
+        ft.push_back(e.tangential_force / div);
+      }
+      tt.push_back(t.back()), fn.push_back(0.0), ft.push_back(0.0);
+      const std::string name = short_label(pair, run);
+      normal.series.push_back(line_series(name, tt, fn));
+      tangential.series.push_back(line_series(name, tt, ft));
+    }
+    panels.push_back(normal);
+    panels.push_back(tangential);
+  }
+  out.push_back(
+      {"time_histories.png", xy_figure(panels, 1, 1000, 230 * static_cast<int>(panels.size()) + 40,
+                                       "Time histories: " + run.dir.filename().string())});
+
+  // ---- bearings: force vs deformation per direction, and the orbit
+  std::vector<Panel> loops;
+  std::vector<const ElementColumns*> bearings;
+  for (const ElementColumns& e : run.isolators)
+    if (e.force_x >= 0 && e.deformation_x >= 0 && e.force_y >= 0 && e.deformation_y >= 0)
+      bearings.push_back(&e);
+  if (!bearings.empty()) {
+    double peak = 0.0;
+    for (const ElementColumns* e : bearings)
+      peak = std::max({peak, peak_of(run.column(e->force_x)), peak_of(run.column(e->force_y))});
+    std::string unit;
+    const double div = force_scale(peak, unit);
+    const bool legend = bearings.size() <= 6;
+    const std::string all = legend ? "" : " (all " + std::to_string(bearings.size()) + ")";
+    Panel px{
+        "Bearings, x" + all, "deformation u_x [cm]", "force F_x [" + unit + "]", {}, legend, true};
+    Panel py{
+        "Bearings, y" + all, "deformation u_y [cm]", "force F_y [" + unit + "]", {}, legend, true};
+    Panel orbit{"Bearing orbit" + all, "deformation u_x [cm]", "deformation u_y [cm]", {}, legend};
+    orbit.equal_axes = true;
+    for (const ElementColumns* e : bearings) {
+      const std::string label = short_label(e->label, run);
+      px.series.push_back(line_series(label, scaled(run.column(e->deformation_x), 0.01),
+                                      scaled(run.column(e->force_x), div)));
+      py.series.push_back(line_series(label, scaled(run.column(e->deformation_y), 0.01),
+                                      scaled(run.column(e->force_y), div)));
+      orbit.series.push_back(line_series(label, scaled(run.column(e->deformation_x), 0.01),
+                                         scaled(run.column(e->deformation_y), 0.01)));
+    }
+    loops = {px, py, orbit};
+    out.push_back({"hysteresis.png",
+                   xy_figure(loops, 3, 1500, 480, "Bearings: " + run.dir.filename().string())});
+  }
+
+  // ---- contacts: F_N against the indentation δ_N and F_T against F_N per pair (event log)
+  if (!run.contact_log.pairs.empty()) {
+    std::vector<Panel> contact_panels;
+    for (const auto& [pair, rows] : run.contact_log.pairs) {
+      double peak = 0.0;
+      for (const ContactEvent& e : rows)
+        peak = std::max({peak, std::abs(e.normal_force), std::abs(e.tangential_force)});
+      std::string unit;
+      const double div = force_scale(peak, unit);
+      Panel pn{short_label(pair, run),
+               "indentation δ_N [mm]",
+               "F_N [" + unit + "]",
+               {},
+               false,
+               false,
+               true};
+      Panel pt{short_label(pair, run), "F_N [" + unit + "]", "F_T [" + unit + "]", {}, false, true};
+      // One line per episode (onset to separation), so that episodes are not joined.
+      Series n_line{"", {}, {}, Rgb{214, 39, 40}, 1.2}, t_line{"", {}, {}, Rgb{255, 127, 14}, 1.2};
+      const auto flush = [&] {
+        if (!n_line.x.empty()) pn.series.push_back(n_line), pt.series.push_back(t_line);
+        n_line.x.clear(), n_line.y.clear(), t_line.x.clear(), t_line.y.clear();
+      };
+      for (const ContactEvent& e : rows) {
+        if (e.event == "onset") flush();
+        if (!e.in_contact) continue;
+        n_line.x.push_back(1e3 * e.indentation);
+        n_line.y.push_back(e.normal_force / div);
+        t_line.x.push_back(e.normal_force / div);
+        t_line.y.push_back(e.tangential_force / div);
+      }
+      flush();
+      contact_panels.push_back(pn);
+      contact_panels.push_back(pt);
+    }
+    const int rows_c = static_cast<int>(contact_panels.size() / 2);
+    out.push_back({"contacts.png", xy_figure(contact_panels, 2, 1100, 360 * rows_c + 40,
+                                             "Contacts: " + run.dir.filename().string())});
+  }
+
+  // ---- base slab in plan: at true scale with the walls, and its displacements with the
+  // walls' clearance lines {d : d . n = gap} (n: from the slab at rest towards the wall).
+  Panel plan{short_label(base.label, run) + " in plan (true scale)", "x [m]", "y [m]", {}, true};
+  plan.equal_axes = true;
+  const auto outline = [](const std::vector<Vec2>& poly, std::vector<double>& x,
+                          std::vector<double>& y) {
+    for (Vec2 p : poly) x.push_back(p.x), y.push_back(p.y);
+    x.push_back(poly.front().x), y.push_back(poly.front().y);
+  };
+  Series rest{"at rest", {}, {}, Rgb{160, 160, 160}, 1.0};
+  outline(base_body.plan_W, rest.x, rest.y);
+  plan.series.push_back(rest);
+  Panel orbit{short_label(base.label, run) + ": displacement of the centre of mass and corners",
+              "u_x [cm]",
+              "u_y [cm]",
+              {},
+              true};
+  orbit.equal_axes = true;
+  const ConvexPolygon slab = base_body.polygon();
+  bool wall_legend = true;
+  double reach = 0.0;  // cm, the largest displacement (how long the clearance lines are)
+  std::vector<PlanHistory> corners;
+  for (Vec2 p : base_body.plan_W) corners.push_back(point_history(run, base, p, false));
+  for (const PlanHistory& h : corners) reach = std::max(reach, 100 * peak_of(h.resultant));
+  for (const PlanBody& w : run.site.bodies) {
+    if (w.role != "wall") continue;
+    Series ws{wall_legend ? "walls" : "", {}, {}, Rgb{150, 60, 40}, 2.0};
+    outline(w.plan_W, ws.x, ws.y);
+    plan.series.push_back(ws);
+    const Separation sep = separation_of(slab, w.polygon());
+    const double gap = 100 * sep.distance;  // cm
+    const Vec2 n = sep.n_AB, tangent{-n.y, n.x};
+    const double half = std::max(reach, gap) * 1.2;
+    orbit.series.push_back({wall_legend ? "wall clearance" : "",
+                            {gap * n.x - half * tangent.x, gap * n.x + half * tangent.x},
+                            {gap * n.y - half * tangent.y, gap * n.y + half * tangent.y},
+                            Rgb{150, 60, 40},
+                            2.0});
+    wall_legend = false;
+  }
+  Series cm_path{"centre of mass", {}, {}, Rgb{0, 0, 0}, 1.5};
+  for (std::size_t r = 0; r < run.rows(); ++r) {
+    cm_path.x.push_back(base_body.p_WCM.x + cm.x[r]);
+    cm_path.y.push_back(base_body.p_WCM.y + cm.y[r]);
+  }
+  plan.series.push_back(cm_path);
+  orbit.series.push_back(
+      {"centre of mass", scaled(cm.x, 0.01), scaled(cm.y, 0.01), Rgb{0, 0, 0}, 1.5});
+  for (std::size_t c = 0; c < corners.size(); ++c) {
+    Series path{c == 0 ? "corners" : "", {}, {}, Rgb{31, 119, 180}, 1.0};
+    for (std::size_t r = 0; r < run.rows(); ++r) {
+      path.x.push_back(base_body.plan_W[c].x + corners[c].x[r]);
+      path.y.push_back(base_body.plan_W[c].y + corners[c].y[r]);
+    }
+    plan.series.push_back(path);
+    orbit.series.push_back({"corner " + std::to_string(c + 1), scaled(corners[c].x, 0.01),
+                            scaled(corners[c].y, 0.01), series_colour(static_cast<int>(c)), 1.0});
+  }
+  out.push_back(
+      {"trajectory.png", xy_figure({plan, orbit}, 2, 1400, 700,
+                                   "Base slab trajectory: " + run.dir.filename().string())});
+  return out;
+}
+
+}  // namespace isopound::post

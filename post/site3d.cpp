@@ -1,0 +1,98 @@
+// Plan geometry of a 3D model at rest (see site3d.h). Slabs, columns and bearings from the
+// buildings (levels bottom to top, base slab at 0, floor k at the sum of storeys 1..k, outlines
+// placed in W by the building's position and rotation); walls from the solver's site_bodies()
+// (solver/structures/pounding3d.h), whose slabs must be these (checked: one geometry).
+#include "post/site3d.h"
+
+#include <cmath>
+#include <span>
+#include <stdexcept>
+
+#include "solver/structures/building3d.h"
+#include "solver/structures/config3d.h"
+#include "solver/structures/pounding3d.h"
+
+namespace isopound::post {
+namespace {
+
+std::vector<Vec2> outline_in_plan(const Building3DConfig& b, const std::vector<Vec2>& plan_B) {
+  std::vector<Vec2> w;
+  for (Vec2 p : plan_B) w.push_back(to_plan(b, p));
+  // Validated and counter-clockwise.
+  const ConvexPolygon polygon{std::span<const Vec2>(w.data(), w.size())};
+  return {polygon.vertices().begin(), polygon.vertices().end()};
+}
+
+Vec2 rotate(double angle, Vec2 v) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+}  // namespace
+
+int Site3D::find(const std::string& key) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].key() == key) return static_cast<int>(i);
+  return -1;
+}
+
+Site3D site_geometry(const ModelConfig& config) {
+  Site3D site;
+  for (const Building3DConfig& b : config.structures3d) {
+    const auto add_level = [&](const Diaphragm3DConfig& d, const std::string& level, double z) {
+      PlanBody body;
+      body.structure = b.name;
+      body.level = level;
+      body.role = "slab";
+      body.elevation = z;
+      body.plan_W = outline_in_plan(b, d.plan);
+      const ConvexPolygon polygon = body.polygon();
+      body.p_WCM = area_properties(polygon).p_WC + rotate(b.rotation, d.eccentricity);
+      body.dof_label = b.name + "/" + level;
+      site.bodies.push_back(std::move(body));
+      return static_cast<int>(site.bodies.size()) - 1;
+    };
+    int below = b.isolated ? add_level(b.base, "base", 0.0) : -1;
+    if (b.isolated) {
+      const auto add_bearing = [&](const std::string& label, Vec2 p_B) {
+        site.bearings.push_back({b.name + "/bearing " + label, to_plan(b, p_B), below});
+      };
+      if (b.bearings.empty() && !b.storeys.empty())
+        for (const Column3DConfig& c : b.storeys.front().columns) add_bearing(c.label, c.position);
+      for (const Bearing3DConfig& c : b.bearings) add_bearing(c.label, c.position);
+    }
+    double z = 0.0;
+    for (std::size_t s = 0; s < b.storeys.size(); ++s) {
+      const Storey3DConfig& storey = b.storeys[s];
+      z += storey.height;
+      const int upper = add_level(storey.floor, "floor " + std::to_string(s + 1), z);
+      for (const Column3DConfig& c : storey.columns)
+        site.columns.push_back({b.name + "/story " + std::to_string(s + 1) + "/" + c.label,
+                                to_plan(b, c.position), below, upper, storey.height});
+      below = upper;
+    }
+  }
+  for (const SiteBody& b : site_bodies(config)) {
+    if (b.role != "wall") {
+      // The solver's slab: the same outline and level as the one drawn.
+      const int i = site.find(b.label());
+      if (i < 0 || std::abs(site.bodies[i].elevation - b.elevation) > 1e-9 ||
+          site.bodies[i].plan_W.size() != b.plan_W.vertices().size())
+        throw std::invalid_argument("post: slab '" + b.label() +
+                                    "' of the solver's site differs from the drawn one");
+      continue;
+    }
+    PlanBody w;
+    w.structure = b.structure;
+    w.level = b.level;
+    w.role = "wall";
+    w.elevation = b.elevation;
+    w.height = b.height;
+    w.plan_W.assign(b.plan_W.vertices().begin(), b.plan_W.vertices().end());
+    w.p_WCM = area_properties(b.plan_W).p_WC;
+    site.bodies.push_back(std::move(w));
+  }
+  return site;
+}
+
+}  // namespace isopound::post

@@ -1,0 +1,57 @@
+// The plan geometry of a 3D model at rest, as post-processing draws it: every slab and wall as a
+// convex polygon in the model's plan frame W, the columns between levels and the bearings.
+// A plan point p of a body with DOFs (u, v, θ) at the plan origin moves by (u − p_y θ, v + p_x θ).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polygon.h"
+#include "solver/structures/config.h"
+
+namespace isopound::post {
+
+// A slab (floor or base) or a wall at rest.
+struct PlanBody {
+  std::string structure;     // "building", "east-neighbour", "wall east"
+  std::string level;         // "base", "floor 1", ..., "wall"
+  std::string role;          // "slab" | "wall"
+  double elevation = 0.0;    // m: a slab's level (base slab 0); a wall's base (0)
+  double height = 0.0;       // m: a wall's height; a slab 0
+  std::vector<Vec2> plan_W;  // outline, counter-clockwise (validated as a ConvexPolygon)
+  Vec2 p_WCM;                // centre of mass at rest (slabs; walls: centroid)
+  std::string dof_label;     // history label of its DOFs ("building/floor 1"), "" when fixed
+  // The name contact labels use: "<structure>/<level>" for slabs, "<structure>" for walls.
+  std::string key() const { return role == "wall" ? structure : structure + "/" + level; }
+  ConvexPolygon polygon() const { return ConvexPolygon(plan_W); }
+};
+
+// A column of a storey: from the level below (a body, or the ground) to the floor above.
+struct PlanColumn {
+  std::string label;  // "building/story 1/A1"
+  Vec2 p_W;
+  int lower = -1;       // body index, -1: the ground (a fixed-base building's first storey)
+  int upper = -1;       // body index
+  double height = 0.0;  // m, the storey height
+};
+
+// A bearing under the base slab.
+struct PlanBearing {
+  std::string label;  // "building/bearing A1" (the history label of its outputs)
+  Vec2 p_W;
+  int base = -1;  // body index of the base slab
+};
+
+struct Site3D {
+  std::vector<PlanBody> bodies;  // slabs of every structure (bottom to top), then walls
+  std::vector<PlanColumn> columns;
+  std::vector<PlanBearing> bearings;
+  int find(const std::string& key) const;  // body index by key(), -1 when absent
+};
+
+// Slabs, columns and bearings of every 3D structure of the model, and its moat walls (from the
+// solver's site_bodies(), whose slabs are checked against these). Throws std::invalid_argument for
+// a non-convex plan (the solver would not have run).
+Site3D site_geometry(const ModelConfig& config);
+
+}  // namespace isopound::post
