@@ -129,6 +129,18 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     return;
   }
   bool at_surface = false;
+  const double sliver = 1e-12 * length_scale_;
+  const double actual_area = ov.area;
+  if (overlapping && ov.area < sliver * length(ov.p_WP2 - ov.p_WP1)) {
+    // Shallower than the sliver: the shape (w, n, C) is taken from the sliver too, so that the
+    // damping c_N ∝ √(A_c/δ_N) is continuous across A_c = 0. (An edge tilted by 1e-15 rad makes
+    // a 1e-16 m² overlap a triangle with w ≪ L, while the at-surface sliver is the full face:
+    // the two would differ ~10x in c_N, and Newton flips between them at a separation.)
+    const ConvexPolygon deeper =
+        b_.shape.placed({q[3] - sliver * ov.n_AB.x, q[4] - sliver * ov.n_AB.y, q[5]}, b_.p_WO);
+    const Overlap shape = overlap_of(pa, deeper, cfg_.overlap);
+    if (shape.area > 0.0) ov = shape;
+  }
   if (!overlapping) {
     // Frozen closed at the contact surface (a step cut to end at an onset or a separation ends
     // within round-off of A_c = 0, on either side): take the limit A_c → 0+, whose damping
@@ -136,7 +148,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // the body size deep; its area counts as 0.
     const Separation sep = separation_of(pa, pb);
     if (sep.distance > 1e-9 * length_scale_) return;  // really apart: no force
-    const double shift = std::max(sep.distance, 0.0) + 1e-12 * length_scale_;
+    const double shift = std::max(sep.distance, 0.0) + sliver;
     const ConvexPolygon deeper =
         b_.shape.placed({q[3] - shift * sep.n_AB.x, q[4] - shift * sep.n_AB.y, q[5]}, b_.p_WO);
     ov = overlap_of(pa, deeper, cfg_.overlap);
@@ -144,7 +156,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     at_surface = true;
   }
 
-  out.area = at_surface ? 0.0 : ov.area;
+  out.area = at_surface ? 0.0 : actual_area;
   out.p_WC = ov.p_WC;
   out.n_AB = ov.n_AB;
   out.t_AB = ov.t_AB;
@@ -152,7 +164,8 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   const bool thesis = cfg_.indentation == IndentationRule::kThesis;
   // A_c / δ_N: w (quadrilateral and up, or the mean-depth rule) or w/2 (triangle, thesis rule).
   const double area_per_depth = thesis && ov.vertex_count == 3 ? 0.5 * out.width : out.width;
-  out.indentation = at_surface ? 0.0 : (thesis ? ov.indentation : out.area / out.width);
+  out.indentation =
+      at_surface ? 0.0 : (thesis && ov.vertex_count == 3 ? 2.0 : 1.0) * out.area / out.width;
   const Vec2 r_A = ov.p_WC - o_A, r_B = ov.p_WC - o_B;
   const Vec2 v_A = point_velocity(qdot[0], qdot[1], qdot[2], r_A);
   const Vec2 v_B = point_velocity(qdot[3], qdot[4], qdot[5], r_B);
