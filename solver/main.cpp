@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include "geometry/overlap.h"
 #include "solver/core/modes.h"
@@ -21,6 +22,7 @@
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
+#include "solver/study/ensemble.h"   // run --ensemble N
 #include "solver/study/study_cli.h"  // study commands (sweep, export)
 
 namespace fs = std::filesystem;
@@ -79,7 +81,8 @@ void create_output_directory(const std::string& out_dir) {
 }
 
 int run_and_write(const ModelConfig& config, const std::string& out_dir, bool quiet,
-                  bool compare_unobstructed = false) {
+                  bool compare_unobstructed = false,
+                  const EnsembleOptions* ensemble_options = nullptr) {
   create_output_directory(out_dir);
   const std::string summary = (fs::path(out_dir) / "summary.json").string();
   std::string histories;
@@ -91,9 +94,15 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
   const std::string events = (fs::path(out_dir) / "contact_events.csv").string();
   fs::remove(events);  // a stale log of an earlier run would be read as this run's
   JobResult job;
+  std::optional<EnsembleResult> ensemble;
   try {
     ProgressLine progress(!quiet);
-    job = run_job(config, writer.get(), std::ref(progress), events);
+    if (ensemble_options) {
+      ensemble = run_ensemble(config, *ensemble_options, writer.get(), std::ref(progress), events);
+      job = std::move(ensemble->member0);
+    } else {
+      job = run_job(config, writer.get(), std::ref(progress), events);
+    }
   } catch (...) {
     // No partial histories.csv from a run that failed (it would look like a result); the event
     // log is kept: it shows the contacts up to the failure.
@@ -104,14 +113,25 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
   if (writer) writer->close();
   std::optional<UnobstructedResult> free_run;
   if (compare_unobstructed) free_run = run_unobstructed(config, job);
-  write_summary(summary, config, job, free_run ? &*free_run : nullptr);
+  if (ensemble) {
+    write_summary_with_ensemble(summary, config, job, free_run ? &*free_run : nullptr, *ensemble,
+                                *ensemble_options);
+    write_ensemble_csv((fs::path(out_dir) / "ensemble.csv").string(), *ensemble);
+  } else {
+    write_summary(summary, config, job, free_run ? &*free_run : nullptr);
+  }
   if (!quiet) {
     print_summary(std::cout, config, job);
     if (free_run) print_unobstructed(std::cout, config, job, *free_run);
+    if (ensemble) print_ensemble(std::cout, *ensemble, *ensemble_options);
     std::cout << "Wrote " << summary;
     if (!histories.empty()) std::cout << ", " << histories;
     if (fs::exists(events)) std::cout << ", " << events;
+    if (ensemble) std::cout << ", " << (fs::path(out_dir) / "ensemble.csv").string();
     std::cout << '\n';
+  } else if (ensemble) {
+    const std::string warning = ensemble_warning(*ensemble, *ensemble_options);
+    if (!warning.empty()) std::cerr << "isopound: " << warning << '\n';
   }
   return kOk;
 }
@@ -204,6 +224,15 @@ int main(int argc, char** argv) {
   double until = 0.0;
   run->add_option("--until", until, "Stop the analysis at this time, s (analysis.t_end)")
       ->check(CLI::PositiveNumber);
+  EnsembleOptions ensemble;
+  ensemble.members = 0;
+  ensemble.jobs = std::max(1u, std::thread::hardware_concurrency());
+  run->add_option("--ensemble", ensemble.members,
+                  "Run N members, each but the first with its base slab offset by 1 um; report "
+                  "every peak's spread and the predictability horizon")
+      ->check(CLI::Range(2, 100000));
+  run->add_option("-j,--jobs", ensemble.jobs, "Threads for --ensemble (default: all cores)")
+      ->check(CLI::PositiveNumber);
 
   CLI::App* demo = app.add_subcommand(
       "demo", "3-storey Bouc-Wen isolated building under the built-in near-fault pulse");
@@ -252,7 +281,9 @@ int main(int argc, char** argv) {
     }
     if (no_histories) config.output.histories = false;
     if (until > 0) config.analysis.t_end = until;
-    if (*run) return run_and_write(config, out_dir, quiet, compare_unobstructed);
+    if (*run)
+      return run_and_write(config, out_dir, quiet, compare_unobstructed,
+                           ensemble.members > 0 ? &ensemble : nullptr);
     if (*modes) {
       if (!quiet) print_modes(config);
       return kOk;

@@ -84,9 +84,6 @@ TEST(Pounding3D, FaceOnReducesToThe2DKelvinVoigtWalls) {
     RunOptions o;
     o.output.histories = false;
     o.analysis.t_end = 3.3;
-    // The onset of the tension-keeping law needs steps below the default floor (1.7 ms / 2^16)
-    // here; see the closing note of issue 16.
-    o.analysis.max_halvings = 24;
     if (fixed) {
       o.analysis.stepping = AnalysisConfig::Stepping::kFixed;  // the same steps in both
       o.analysis.dt = 1e-3;
@@ -142,6 +139,77 @@ TEST(Pounding3D, CriticalGapPerWallIsTheUnobstructedClosing) {
   EXPECT_DOUBLE_EQ(free_run.gaps[0].gap, 1.5);
   // No contact element in the unobstructed model: 16 bearings only.
   EXPECT_EQ(free_run.job.model.elements.size(), 16u);
+}
+
+// Issue 16 acceptance (friction): XY-5 under the RSN1084 pair at 0° and 45°: the energy balance
+// closes to < 0.5 % of the input with friction and impacts, both dissipations are positive.
+// Over the strong motion (t_end 10 s: the walls are hit from 3.49 s on; ~1 s per angle in
+// Release) to keep the sanitizer build's suite short; the whole record is in bench/RESULTS.md.
+TEST(Pounding3D, XY5EnergyBalanceWithFriction) {
+  ISOPOUND_REQUIRE_RECORDS();
+  for (const double angle_deg : {0.0, 45.0}) {
+    ModelConfig c = load_model_file((test::source_dir() / "configs" / "3d-xy5.yaml").string());
+    c.ground_motion.angle = angle_deg * std::numbers::pi / 180.0;
+    c.analysis.t_end = 10.0;
+    c.output.histories = false;
+    const JobResult job = run_job(c);
+    const EnergyBalance& e = job.analysis.energy;
+    EXPECT_LT(e.relative_error, 5e-3) << angle_deg << " deg";
+    double friction = 0.0, impact = 0.0;
+    int impacts = 0;
+    for (const auto& el : job.model.elements)
+      if (const auto* pc = dynamic_cast<const PolygonContact*>(el.get())) {
+        friction += pc->friction_dissipated();
+        impact += pc->output(10);
+        impacts += pc->impacts();
+      }
+    EXPECT_GT(impacts, 20) << angle_deg << " deg";
+    EXPECT_GT(friction, 0.0) << angle_deg << " deg";
+    EXPECT_GT(impact, 0.0) << angle_deg << " deg";
+    EXPECT_GT(friction, 0.01 * e.input) << "friction matters: " << angle_deg << " deg";
+  }
+}
+
+// Flexible moat walls: each a 3-DOF diaphragm on a cantilever with the wall's section. Its
+// out-of-plane stiffness at the centroid is 3 E (L t³/12)/h³ (hand value for the east wall of
+// the thesis slab: L = 18.5 m, t = h = 1 m, E = 30 GPa → 1.3875e11 N/m); a very stiff wall
+// behaves as the rigid one over the first impacts.
+TEST(Pounding3D, FlexibleWallsFromTheirSection) {
+  ModelConfig c = load_text(walled_building(
+      "{sides: [east, west], gap: 8 cm, model: flexible, E: 30 GPa, nu: 0.2, damping: 5 %}", "{}"));
+  Model m = build_model(c);
+  int east = -1;
+  for (int i = 0; i < m.size(); ++i)
+    if (m.dofs[i].label == "wall east (x)") east = i;
+  ASSERT_GE(east, 0);
+  // At the centroid (x_c = 8.25 + 0.08 + 0.5 = 8.83 m, y_c = 0) the x stiffness is k_n.
+  EXPECT_NEAR(m.stiffness(east, east), 3.0 * 30e9 * (18.5 / 12.0), 1e-6 * 1.3875e11);
+  EXPECT_NEAR(m.mass(east, east), 5e3 * 18.5, 1e-6);
+  const double x_c = 8.25 + 0.08 + 0.5;
+  // v + x_c θ is the y motion of the centroid: K_vθ = x_c k_t, M_vθ = x_c m.
+  EXPECT_NEAR(m.mass(east + 1, east + 2), x_c * 5e3 * 18.5, 1e-6);
+  EXPECT_NEAR(m.stiffness(east + 1, east + 2), x_c * m.stiffness(east + 1, east + 1),
+              1e-9 * x_c * m.stiffness(east + 1, east + 1));
+  // A wall 10x stiffer is nearly the rigid wall over the first impacts (t_end 3.3 s, pulse along
+  // x): the base peak within 0.5 %.
+  RunOptions o;
+  o.output.histories = false;
+  o.analysis.t_end = 3.3;
+  const GroundMotion motion = make_pulse(PulseParameters{});
+  ModelConfig stiff = c;
+  stiff.structures3d[0].walls.E *= 10.0;
+  ModelConfig rigid = c;
+  rigid.structures3d[0].walls.flexible = false;
+  Model ms = build_model(stiff), mr = build_model(rigid);
+  const AnalysisResult rs = run_analysis(ms, motion, o), rr = run_analysis(mr, motion, o);
+  EXPECT_GT(rr.displacement[0].value, 0.08);  // the walls were reached
+  EXPECT_NEAR(rs.displacement[0].value, rr.displacement[0].value, 5e-3 * rr.displacement[0].value);
+  // The flexible wall moves (and the soft one more than the stiff one).
+  Model mf = build_model(c);
+  const AnalysisResult rf = run_analysis(mf, motion, o);
+  // (measured 0.24 mm against 0.05 mm: the impacts push it by ~F_N/k_n)
+  EXPECT_GT(rf.displacement[east].value, 2.0 * rs.displacement[east].value);
+  EXPECT_GT(rf.displacement[east].value, 0.0);
 }
 
 TEST(Pounding3D, PairSearchFindsWallsAndEqualLevels) {

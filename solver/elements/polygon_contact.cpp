@@ -88,6 +88,12 @@ PolygonContact::PolygonContact(std::string label, PolygonBody a, PolygonBody b,
   trial_ = committed_;
 }
 
+ConvexPolygon PolygonContact::place(const PolygonBody& body, double u, double v, double theta) {
+  // A fixed body (no DOF) stays where it is: no trigonometry.
+  if (body.dof_u < 0 && body.dof_v < 0 && body.dof_theta < 0) return body.shape;
+  return body.shape.placed({u, v, theta}, body.p_WO);
+}
+
 void PolygonContact::gather(const Eigen::VectorXd& x, Vec6& q) const {
   for (int k = 0; k < kDofs; ++k) q[k] = dof_[k] >= 0 ? x[dof_[k]] : 0.0;
 }
@@ -114,8 +120,13 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.phase = C.phase;
 
   const Vec2 o_A = a_.p_WO + Vec2{q[0], q[1]}, o_B = b_.p_WO + Vec2{q[3], q[4]};
-  const ConvexPolygon pa = a_.shape.placed({q[0], q[1], q[2]}, a_.p_WO);
-  const ConvexPolygon pb = b_.shape.placed({q[3], q[4], q[5]}, b_.p_WO);
+  const ConvexPolygon pa = place(a_, q[0], q[1], q[2]);
+  const ConvexPolygon pb = place(b_, q[3], q[4], q[5]);
+  // Lower bound of the distance apart (the larger axis gap of the bounding boxes), for the cheap
+  // event test of far-apart pairs (event_fraction).
+  out.box_gap =
+      std::max(std::max(pb.box_min().x - pa.box_max().x, pa.box_min().x - pb.box_max().x),
+               std::max(pb.box_min().y - pa.box_max().y, pa.box_min().y - pb.box_max().y));
   Overlap ov = overlap_of(pa, pb, cfg_.overlap);
   const bool overlapping = ov.area > 0.0;
   out.closed = freeze ? C.closed : overlapping;
@@ -129,6 +140,18 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     return;
   }
   bool at_surface = false;
+  const double sliver = 1e-12 * length_scale_;
+  const double actual_area = ov.area;
+  if (overlapping && ov.area < sliver * length(ov.p_WP2 - ov.p_WP1)) {
+    // Shallower than the sliver: the shape (w, n, C) is taken from the sliver too, so that the
+    // damping c_N ∝ √(A_c/δ_N) is continuous across A_c = 0. (An edge tilted by 1e-15 rad makes
+    // a 1e-16 m² overlap a triangle with w ≪ L, while the at-surface sliver is the full face:
+    // the two would differ ~10x in c_N, and Newton flips between them at a separation.)
+    const ConvexPolygon deeper =
+        b_.shape.placed({q[3] - sliver * ov.n_AB.x, q[4] - sliver * ov.n_AB.y, q[5]}, b_.p_WO);
+    const Overlap shape = overlap_of(pa, deeper, cfg_.overlap);
+    if (shape.area > 0.0) ov = shape;
+  }
   if (!overlapping) {
     // Frozen closed at the contact surface (a step cut to end at an onset or a separation ends
     // within round-off of A_c = 0, on either side): take the limit A_c → 0+, whose damping
@@ -136,7 +159,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // the body size deep; its area counts as 0.
     const Separation sep = separation_of(pa, pb);
     if (sep.distance > 1e-9 * length_scale_) return;  // really apart: no force
-    const double shift = std::max(sep.distance, 0.0) + 1e-12 * length_scale_;
+    const double shift = std::max(sep.distance, 0.0) + sliver;
     const ConvexPolygon deeper =
         b_.shape.placed({q[3] - shift * sep.n_AB.x, q[4] - shift * sep.n_AB.y, q[5]}, b_.p_WO);
     ov = overlap_of(pa, deeper, cfg_.overlap);
@@ -144,7 +167,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     at_surface = true;
   }
 
-  out.area = at_surface ? 0.0 : ov.area;
+  out.area = at_surface ? 0.0 : actual_area;
   out.p_WC = ov.p_WC;
   out.n_AB = ov.n_AB;
   out.t_AB = ov.t_AB;
@@ -152,7 +175,8 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   const bool thesis = cfg_.indentation == IndentationRule::kThesis;
   // A_c / δ_N: w (quadrilateral and up, or the mean-depth rule) or w/2 (triangle, thesis rule).
   const double area_per_depth = thesis && ov.vertex_count == 3 ? 0.5 * out.width : out.width;
-  out.indentation = at_surface ? 0.0 : (thesis ? ov.indentation : out.area / out.width);
+  out.indentation =
+      at_surface ? 0.0 : (thesis && ov.vertex_count == 3 ? 2.0 : 1.0) * out.area / out.width;
   const Vec2 r_A = ov.p_WC - o_A, r_B = ov.p_WC - o_B;
   const Vec2 v_A = point_velocity(qdot[0], qdot[1], qdot[2], r_A);
   const Vec2 v_B = point_velocity(qdot[3], qdot[4], qdot[5], r_B);
@@ -219,9 +243,7 @@ void PolygonContact::compute_witness(State& s) const {
   const auto separation = [&](double tau) {
     Vec6 q;
     for (int k = 0; k < kDofs; ++k) q[k] = s.q[k] + tau * s.qdot[k];
-    const ConvexPolygon pa = a_.shape.placed({q[0], q[1], q[2]}, a_.p_WO);
-    const ConvexPolygon pb = b_.shape.placed({q[3], q[4], q[5]}, b_.p_WO);
-    return separation_of(pa, pb).distance;
+    return separation_of(place(a_, q[0], q[1], q[2]), place(b_, q[3], q[4], q[5])).distance;
   };
   s.witness = -separation(0.0);
   // Rate by a central difference along the motion, the points moving ~1e-7 m.
@@ -312,7 +334,7 @@ double PolygonContact::stored_energy() const {
 }
 
 void PolygonContact::commit() {
-  if (!trial_.witness_valid) compute_witness(trial_);
+  // (The witness is computed when an event test or an onset needs it, not here.)
   if (trial_.started) {  // an onset no event located (events off, or within the tolerance)
     ++impacts_;
     max_impact_velocity_ = std::max(max_impact_velocity_, std::max(trial_.rate_n, 0.0));
@@ -330,11 +352,28 @@ void PolygonContact::revert() {
 }
 
 double PolygonContact::event_fraction() {
-  const State& C = committed_;
+  State& C = committed_;
   State& T = trial_;
-  if (!T.witness_valid) compute_witness(T);
   double theta = 1.0;
   pending_ = Event::kNone;
+  // Far apart at both ends of the step: no onset inside it. The Hermite witness between the
+  // ends lies below max(w_0, w_1) + 0.15 h (|ẇ_0| + |ẇ_1|) (the cubic's first-derivative
+  // basis peaks at 4/27), and |ẇ| is at most the bodies' speed bound; so a box gap larger than
+  // h (speed_C + speed_T) at both ends excludes a crossing without the three separation_of
+  // calls of the witness.
+  const auto speed = [&](const State& s) {
+    double v = 0.0;
+    for (int body = 0; body < 2; ++body)
+      v += std::hypot(s.qdot[3 * body], s.qdot[3 * body + 1]) +
+           std::abs(s.qdot[3 * body + 2]) * length_scale_;
+    return v;
+  };
+  const double margin = h_ * (speed(C) + speed(T)) + 1e-9 * length_scale_;
+  const bool far = !C.closed && !T.closed && C.box_gap > margin && T.box_gap > margin;
+  if (!far) {
+    if (!C.witness_valid) compute_witness(C);
+    if (!T.witness_valid) compute_witness(T);
+  }
   const auto consider = [&](double f, Event kind, bool inside_only) {
     const bool inside = f > kInsideEventFraction && f < 1.0 - kInsideEventFraction;
     if ((!inside_only || inside) && f < theta) {
@@ -342,9 +381,11 @@ double PolygonContact::event_fraction() {
       pending_ = kind;
     }
   };
-  const WitnessStep w{C.witness, C.witness_rate, T.witness, T.witness_rate, h_};
-  const double f = first_status_change(w, C.closed);
-  if (f < 1.0) consider(f, C.closed ? Event::kSeparation : Event::kOnset, false);
+  if (!far) {
+    const WitnessStep w{C.witness, C.witness_rate, T.witness, T.witness_rate, h_};
+    const double f = first_status_change(w, C.closed);
+    if (f < 1.0) consider(f, C.closed ? Event::kSeparation : Event::kOnset, false);
+  }
   if (C.closed && T.closed && cfg_.friction && !C.slipping && T.slipping) {
     // Stick → slip: the force drops from μ_s F_N to μ_k F_N. Linear in the excess.
     const double g0 = std::abs(C.tangential) - cfg_.mu_static * C.normal;
@@ -372,6 +413,7 @@ bool PolygonContact::settle_event() {
       C.slipping = false;
       C.spring = 0.0;
       C.normal_energy = 0.0;
+      if (!C.witness_valid) compute_witness(C);
       const double v_imp = std::max(C.witness_rate, 0.0);
       if (cfg_.normal_law) cfg_.normal_law->begin_contact(v_imp, C.phase);
       ++impacts_;

@@ -141,6 +141,8 @@ class PolygonContact final : public Element {
     double normal_energy = 0.0;  // E_N = ∫ F_el δ̇_N dt in this contact, J
     double friction_dissipated = 0.0;          // Σ (s_tr² − s²)/(2 k_T), J
     double witness = 0.0, witness_rate = 0.0;  // −separation and its rate
+    double box_gap =
+        0.0;  // m, lower bound of the distance apart (bounding boxes), < 0 if they meet
     bool witness_valid = false;
     ImpactPhase phase;  // the normal law's memory of this contact (option normal_law)
   };
@@ -148,6 +150,7 @@ class PolygonContact final : public Element {
   // The force law at (q, qdot) from the committed state; `out` gets everything but work.
   void evaluate(const Vec6& q, const Vec6& qdot, bool freeze, State& out) const;
   void gather(const Eigen::VectorXd& x, Vec6& q) const;
+  static ConvexPolygon place(const PolygonBody& body, double u, double v, double theta);
   void compute_witness(State& s) const;
   double trial_stored() const;
 

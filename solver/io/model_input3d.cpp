@@ -245,7 +245,8 @@ void read_damping3d(const InputNode& node, bool isolated, Damping3DConfig& d) {
 // extension, mass_per_length}
 MoatWalls3DConfig read_walls3d(const InputNode& node) {
   using W = MoatWalls3DConfig;
-  node.expect_keys({"sides", "gap", "thickness", "height", "extension", "mass_per_length"});
+  node.expect_keys({"sides", "gap", "thickness", "height", "extension", "mass_per_length", "model",
+                    "E", "nu", "damping"});
   W w;
   const auto side_of = [](const InputNode& n) {
     return n.choice<int>(
@@ -285,6 +286,13 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   node.read_quantity("height", dim::kLength, Bound::kPositive, w.height);
   node.read_quantity("extension", dim::kLength, Bound::kNonNegative, w.extension);
   node.read_quantity("mass_per_length", Dimension{-1, 1, 0}, Bound::kPositive, w.mass_per_length);
+  node.read_choice<bool>("model", {{"rigid", false}, {"flexible", true}}, w.flexible);
+  if (w.flexible) {
+    node.read_quantity("E", dim::kPressure, Bound::kPositive, w.E);
+    node.read_number("nu", Bound::kNonNegative, w.nu);
+    if (w.nu >= 0.5) node.fail_at_key("nu", "Poisson's ratio must be in [0, 0.5)");
+    node.read_number("damping", Bound::kFraction, w.damping_ratio);
+  }
   return w;
 }
 

@@ -85,6 +85,14 @@ struct MoatWalls3DConfig {
   double height = 1.0;                            // m (drawing only)
   double extension = 1.0;                         // m beyond the slab at each end
   double mass_per_length = 5000.0;                // kg/m, backfill included
+  // Flexible walls (THEORY §7: a single-storey 3-DOF structure): each wall a rigid diaphragm
+  // (u, v, θ) on a cantilever of height `height` with the wall's section (thickness x length),
+  // concrete E, nu; stiffness-proportional damping with `damping_ratio` at the out-of-plane
+  // mode. Rigid (false): immovable, its mass enters m_eff only.
+  bool flexible = false;
+  double E = 30e9;  // Pa
+  double nu = 0.2;
+  double damping_ratio = 0.05;
   bool any() const { return present[0] || present[1] || present[2] || present[3]; }
 };
 

@@ -43,6 +43,7 @@ Model build_model(const ModelConfig& config) {
   if (!config.structures3d.empty()) {
     Model model;
     for (const Building3DConfig& b : config.structures3d) add_building3d(model, b);
+    add_flexible_walls(model, config);
     add_pounding3d(model, config);
     return model;
   }

@@ -109,6 +109,11 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
       int walled = 0;
       for (const Building3DConfig& other : config.structures3d) walled += other.walls.any() ? 1 : 0;
       if (walled > 1) w.structure = b.name + " " + w.structure;
+      if (b.walls.flexible) {
+        w.dof_label_u = w.structure + " (x)";
+        w.dof_label_v = w.structure + " (y)";
+        w.dof_label_theta = w.structure + " (theta)";
+      }
       out.push_back(std::move(w));
     }
   }
@@ -152,6 +157,54 @@ std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
     }
   }
   return pairs;
+}
+
+void add_flexible_walls(Model& model, const ModelConfig& config) {
+  for (const SiteBody& w : site_bodies(config)) {
+    if (w.role != "wall" || w.dof_label_u.empty()) continue;
+    const Building3DConfig& b = config.structures3d[w.building];
+    const MoatWalls3DConfig& c = b.walls;
+    const std::vector<Vec2> outline = moat_wall_outline(b, w.wall_side);
+    const bool along_y = w.wall_side <= MoatWalls3DConfig::kWest;  // east/west walls run along y
+    const double L = along_y ? outline[2].y - outline[0].y : outline[1].x - outline[0].x;
+    const double t = c.thickness, h = c.height, E = c.E, G = E / (2.0 * (1.0 + c.nu));
+    // Cantilever of height h: out of plane flexure (I = L t³/12); in plane flexure (I = t L³/12)
+    // in series with shear (κ = 5/6); twist as the out-of-plane strips (k_n L²/12) plus
+    // Saint-Venant G J/h with J = L t³/3 (THEORY-notes "Flexible moat walls").
+    const double k_n = 3.0 * E * (L * t * t * t / 12.0) / (h * h * h);
+    const double k_t =
+        1.0 / (h * h * h / (3.0 * E * t * L * L * L / 12.0) + h / (5.0 / 6.0 * G * t * L));
+    const double k_theta = k_n * L * L / 12.0 + G * (L * t * t * t / 3.0) / h;
+    // Normal and tangent of the wall in plan (building frame axes turned by its rotation).
+    const double cr = std::cos(b.rotation), sr = std::sin(b.rotation);
+    const Vec2 n_B = along_y ? Vec2{1, 0} : Vec2{0, 1};
+    const Vec2 n{cr * n_B.x - sr * n_B.y, sr * n_B.x + cr * n_B.y}, tan{-n.y, n.x};
+    const AreaProperties area = area_properties(w.plan_W);
+    const Vec2 p = area.p_WC;
+    Eigen::Matrix3d T = Eigen::Matrix3d::Identity();  // a point p moves by T q (DOFs at origin)
+    T(0, 2) = -p.y;
+    T(1, 2) = p.x;
+    Eigen::Matrix3d k_c = Eigen::Matrix3d::Zero();
+    k_c(0, 0) = k_n * n.x * n.x + k_t * tan.x * tan.x;
+    k_c(0, 1) = k_c(1, 0) = k_n * n.x * n.y + k_t * tan.x * tan.y;
+    k_c(1, 1) = k_n * n.y * n.y + k_t * tan.y * tan.y;
+    k_c(2, 2) = k_theta;
+    const Eigen::Matrix3d m_c =
+        Eigen::Vector3d(w.mass, w.mass, w.mass * area.radius_of_gyration_sq()).asDiagonal();
+    const Eigen::Matrix3d K = T.transpose() * k_c * T, M = T.transpose() * m_c * T;
+    const Eigen::Matrix3d C = (2.0 * c.damping_ratio / std::sqrt(k_n / w.mass)) * K;
+    const int o = model.size();
+    model.grow(o + 3);
+    model.mass.block<3, 3>(o, o) = M;
+    model.stiffness.block<3, 3>(o, o) = K;
+    model.damping.block<3, 3>(o, o) = C;
+    model.influence[o] = 1.0;
+    model.influence_y[o + 1] = 1.0;
+    const double r = std::sqrt(M(2, 2) / w.mass);
+    model.dofs.push_back({w.dof_label_u, -1, 0, DofKind::kTranslationX, 1.0});
+    model.dofs.push_back({w.dof_label_v, -1, 0, DofKind::kTranslationY, 1.0});
+    model.dofs.push_back({w.dof_label_theta, -1, 0, DofKind::kRotation, r});
+  }
 }
 
 void add_pounding3d(Model& model, const ModelConfig& config) {

@@ -50,6 +50,10 @@ struct ContactPair3D {
 std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
                                            const ModelConfig::Contact3D& contact);
 
+// Adds the DOFs, mass, stiffness and damping of every flexible moat wall (not in
+// Model::structures: no storeys or probes; their histories carry "wall east (x) u" etc.).
+void add_flexible_walls(Model& model, const ModelConfig& config);
+
 // Adds a PolygonContact per pair (the model must hold the structures' DOFs already).
 void add_pounding3d(Model& model, const ModelConfig& config);
 

@@ -20,6 +20,7 @@
 #include <unordered_map>
 
 #include "solver/structures/job.h"
+#include "solver/study/study_ensemble.h"
 #include "solver/study/study_hash.h"
 #include "solver/study/study_pool.h"
 #include "solver/study/study_progress.h"
@@ -215,7 +216,7 @@ void describe(const Study& study, const ValidatedStudy& validated, std::FILE* ou
 }  // namespace
 
 CaseRunner::CaseRunner(const Study& study, const ValidatedStudy& validated)
-    : builder_(study), validated_(validated) {
+    : builder_(study), validated_(validated), ensemble_(study.ensemble) {
   for (const OutputSpec& o : study.outputs) selectors_.push_back(parse_output_selector(o.selector));
 }
 
@@ -226,6 +227,15 @@ RunRecord CaseRunner::run(std::int64_t case_id) const {
   try {
     const CaseInput input = builder_.input_of(case_id);
     const PreparedMotion& motion = *validated_.motions.at(input.motion_key);
+    if (ensemble_ >= 2) {  // study_ensemble.h
+      long steps = 0;
+      record.values = ensemble_case_values(input.config, motion.motion, motion.peaks, selectors_,
+                                           ensemble_, steps);
+      record.steps = steps;
+      record.ok = true;
+      record.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      return record;
+    }
     // As run_job (job.h), with the ground motion loaded once for the whole study.
     Model model = build_model(input.config);
     const AnalysisResult result = run_analysis(model, motion.motion, run_options(input.config));

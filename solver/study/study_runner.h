@@ -34,6 +34,7 @@ class CaseRunner {
   CaseBuilder builder_;
   const ValidatedStudy& validated_;
   std::vector<OutputSelector> selectors_;
+  int ensemble_ = 0;  // Study::ensemble
 };
 
 // The study's fingerprint stored in its database: study text, model text, record files, layout.

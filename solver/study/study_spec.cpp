@@ -2,6 +2,8 @@
 // can be checked without building models is checked here, each error at its file:line:col: key.
 #include "solver/study/study_spec.h"
 
+#include "solver/study/study_ensemble.h"
+
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -105,7 +107,7 @@ class StudyReader {
 
   void read(const InputNode& top) {
     top.expect_keys({"name", "model", "set", "records", "axes", "variants", "outputs", "derived",
-                     "statistics"});
+                     "statistics", "ensemble"});
     study_.name = fs::path(study_.file).stem().string();
     if (const auto name = top.find("name")) {
       study_.name = name->string();
@@ -164,6 +166,7 @@ class StudyReader {
     read_outputs(top.find("outputs"), top);
     if (const auto derived = top.find("derived")) read_ratios(*derived);
     read_statistics(top.find("statistics"));
+    if (const auto ensemble = top.find("ensemble")) read_ensemble(*ensemble);
   }
 
  private:
@@ -512,6 +515,19 @@ class StudyReader {
       if (o.column == column)
         where.fail("two peaks give the column '" + column + "'; name one with {name: selector}");
     study_.outputs.push_back({column, selector, where});
+  }
+
+  // `ensemble: N` (study_ensemble.h): its columns must not clash with the study's own.
+  void read_ensemble(const InputNode& node) {
+    study_.ensemble = node.integer(2, 10000);
+    std::vector<std::string> columns;
+    for (const OutputSpec& o : study_.outputs) columns.push_back(o.column);
+    for (const std::string& name : ensemble_column_names(columns)) {
+      bool clash = is_reserved_column(name);
+      for (const OutputSpec& o : study_.outputs) clash = clash || o.column == name;
+      for (const Axis& a : study_.axes) clash = clash || a.name == name;
+      if (clash) node.fail("the ensemble column '" + name + "' is already a column; rename it");
+    }
   }
 
   void read_outputs(const std::optional<InputNode>& node, const InputNode& top) {

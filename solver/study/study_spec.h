@@ -78,6 +78,7 @@ struct Study {
   std::vector<OutputSpec> outputs;
   std::vector<RatioSpec> ratios;
   std::vector<StatisticsSpec> statistics;
+  int ensemble = 0;  // `ensemble: N`: members per case (study_ensemble.h); 0 = one run per case
   std::vector<std::string> record_files;  // record files in use, relative to the study dir (hash)
 
   std::int64_t case_count() const;

@@ -3,6 +3,8 @@
 // last ones.
 #include "solver/study/study_store.h"
 
+#include "solver/study/study_ensemble.h"
+
 #include <algorithm>
 
 #include "solver/study/study_outputs.h"
@@ -131,6 +133,12 @@ StoreLayout StoreLayout::of(const Study& study) {
   for (const OutputSpec& o : study.outputs) {
     l.outputs.push_back(o.column);
     l.output_units.push_back(output_unit(parse_output_selector(o.selector)));
+  }
+  if (study.ensemble >= 2) {  // study_ensemble.h
+    const std::vector<std::string> names = ensemble_column_names(l.outputs);
+    const std::vector<std::string> units = ensemble_column_units(l.output_units);
+    l.outputs.insert(l.outputs.end(), names.begin(), names.end());
+    l.output_units.insert(l.output_units.end(), units.begin(), units.end());
   }
   l.ratios = study.ratios;
   l.statistics = study.statistics;
