@@ -22,6 +22,7 @@
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
+#include "solver/io/report_modes2d.h"
 #include "solver/study/ensemble.h"   // run --ensemble N
 #include "solver/study/study_cli.h"  // study commands (sweep, export)
 
@@ -136,44 +137,6 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
   return kOk;
 }
 
-void print_building_modes(const BuildingConfig& b) {
-  std::printf("Structure '%s'\n", b.name.c_str());
-  const auto show = [](const char* title, const Modes& m, const std::vector<std::string>& labels) {
-    std::printf("%s\n  mode  period [s]  eff. mass [%%]  shape (%s ... %s, max = 1)\n", title,
-                labels.front().c_str(), labels.back().c_str());
-    for (int j = 0; j < m.period.size(); ++j) {
-      std::printf("  %4d  %10.4f  %13.1f  ", j + 1, m.period[j], 100 * m.effective_mass_ratio[j]);
-      const double scale = m.shape.col(j).cwiseAbs().maxCoeff();
-      for (int i = 0; i < m.shape.rows(); ++i) std::printf(" %+.3f", m.shape(i, j) / scale);
-      std::printf("\n");
-    }
-  };
-  std::vector<std::string> floor_labels;
-  for (std::size_t i = 0; i < b.floors.size(); ++i)
-    floor_labels.push_back("floor " + std::to_string(i + 1));
-  const ShearStick fixed = fixed_base_superstructure(b);
-  show("Fixed-base superstructure",
-       compute_modes(fixed.stiffness, fixed.mass, Eigen::VectorXd::Ones(fixed.mass.rows())),
-       floor_labels);
-  if (!b.isolated) return;
-  Model model = make_model(b);
-  std::vector<std::string> labels{"base"};
-  labels.insert(labels.end(), floor_labels.begin(), floor_labels.end());
-  const IsolatorProperties p = isolator_properties(b.isolator, model.total_mass());
-  for (const auto& [name, k] : {std::pair{"post-yield stiffness K_post", p.post_yield_stiffness},
-                                std::pair{"initial stiffness K_el", p.elastic_stiffness}}) {
-    if (b.isolator.model == IsolatorConfig::Model::kLinear && k != p.post_yield_stiffness) continue;
-    Eigen::MatrixXd K = model.stiffness;
-    K(0, 0) += k;
-    const std::string title = std::string("Isolated, isolators at their ") + name + " = " +
-                              std::to_string(k / 1e6) + " MN/m";
-    show(title.c_str(), compute_modes(K, model.mass, model.influence), labels);
-  }
-  std::printf("Isolators: K_post %.4g N/m, F_y %.4g N, K_el %.4g N/m, alpha %.4f, Q %.4g N\n",
-              p.post_yield_stiffness, p.yield_force, p.elastic_stiffness, p.alpha,
-              p.characteristic_strength);
-}
-
 // `isopound geometry overlap FILE [--exact]`: a JSON array, one object per pair, on stdout.
 int print_overlaps(const std::string& path, bool exact) {
   const std::vector<PolygonPair> pairs = load_polygon_pairs_file(path);
@@ -190,10 +153,10 @@ int print_overlaps(const std::string& path, bool exact) {
 
 void print_modes(const ModelConfig& config) {
   if (!config.structures3d.empty()) return print_modes3d(std::cout, config);  // report3d.cpp
-  print_building_modes(config.building);
+  print_modes2d(std::cout, config.building);  // report_modes2d.cpp, shared with isopound-pre
   for (const NeighbourConfig& n : config.neighbours) {
-    std::printf("\n");
-    print_building_modes(n.building);
+    std::cout << '\n';
+    print_modes2d(std::cout, n.building);
   }
 }
 
