@@ -227,6 +227,7 @@ RunRecord CaseRunner::run(std::int64_t case_id) const {
     const CaseInput input = builder_.input_of(case_id);
     const PreparedMotion& motion = *validated_.motions.at(input.motion_key);
     // As run_job (job.h), with the ground motion loaded once for the whole study.
+    check_step_against_record(input.config.analysis, motion.motion);
     Model model = build_model(input.config);
     const AnalysisResult result = run_analysis(model, motion.motion, run_options(input.config));
     for (const OutputSelector& selector : selectors_) {

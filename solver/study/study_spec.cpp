@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <set>
 
 #include "solver/io/units.h"
@@ -198,12 +199,26 @@ class StudyReader {
     } catch (const std::invalid_argument& e) {
       where.fail(e.what());
     }
-    YAML::Node copy = YAML::Clone(value);
-    if (path.text == kRecordPath) {
-      if (!value.IsScalar() || value.Scalar().empty()) where.fail("a record must be a file path");
-      copy = YAML::Node(resolve_record(where, value.Scalar()));
-    }
+    const YAML::Node copy = with_records_resolved(where, path.text, YAML::Clone(value));
     return Override{path, copy, canonical_text(copy), where};
+  }
+
+  // The value with every record file in it (at a record path, or inside a map set at one of its
+  // ancestors, e.g. ground_motion.L: {record: ...}) resolved relative to the study file.
+  YAML::Node with_records_resolved(const InputNode& where, const std::string& path,
+                                   const YAML::Node& value) {
+    if (is_record_path(path)) {
+      if (!value.IsScalar() || value.Scalar().empty()) where.fail("a record must be a file path");
+      return YAML::Node(resolve_record(where, value.Scalar()));
+    }
+    if (!value.IsMap() || !path.starts_with("ground_motion")) return value;
+    YAML::Node out(YAML::NodeType::Map);
+    for (auto entry : value) {
+      if (!entry.first.IsScalar()) return value;  // not a model key: the model reader says so
+      out[entry.first.Scalar()] =
+          with_records_resolved(where, path + "." + entry.first.Scalar(), entry.second);
+    }
+    return out;
   }
 
   // A record path relative to the study file, checked to exist; returns the absolute path.
@@ -261,7 +276,7 @@ class StudyReader {
     level.overrides.push_back(make_override(where, path.text, value));
     if (!value.IsDefined() || value.IsNull()) {
       level.label = "none";
-    } else if (path.text == kRecordPath) {
+    } else if (is_record_path(path.text)) {
       level.label = fs::path(value.Scalar()).stem().string();
     } else {
       level.label = value.Scalar();
@@ -399,7 +414,14 @@ class StudyReader {
       files.emplace_back(entry, entry.string());
     } else {
       entry.expect_keys({"file", "files", "folder", "glob", "components", "scale", "format",
-                         "column", "time_column", "dt", "unit"});
+                         "column", "time_column", "dt", "unit", "L", "T", "name"});
+      if (entry.has("L") || entry.has("T")) {
+        levels.push_back(read_record_pair(entry));
+        return;
+      }
+      if (const auto name = entry.find("name"))
+        name->fail(
+            "'name' labels a record pair {L, T, name}; a single record is named by its file");
       const auto file = entry.find("file");
       const auto list = entry.find("files");
       const auto folder = entry.find("folder");
@@ -474,6 +496,70 @@ class StudyReader {
         levels.push_back(std::move(component));
       }
     }
+  }
+
+  // A record pair for 3D models: {L: file, T: file, name, folder, scale, ...}; L and T may be
+  // maps {file, scale, format, column, time_column, dt, unit} with options of their own. The
+  // level sets ground_motion.L and .T and removes the single-component keys.
+  Level read_record_pair(const InputNode& entry) {
+    static constexpr const char* kOptions[] = {"scale",       "format", "column",
+                                               "time_column", "dt",     "unit"};
+    for (const char* key : {"file", "files", "glob", "components"})
+      if (const auto other = entry.find(key))
+        other->fail(std::string("'") + key +
+                    "' belongs to single records; a pair is {L: file, T: file, name: ...}");
+    const auto l = entry.find("L");
+    const auto t = entry.find("T");
+    if (!l || !t) entry.fail_at_key(l ? "T" : "L", "a record pair needs both components, L and T");
+    fs::path folder;
+    if (const auto f = entry.find("folder")) {
+      folder = f->string();
+      const fs::path base = folder.is_relative() ? fs::path(study_.dir) / folder : folder;
+      std::error_code ec;
+      if (!fs::is_directory(base, ec))
+        f->fail("folder '" + base.lexically_normal().string() + "' not found");
+    }
+    Level level;
+    std::string stems[2];
+    for (int i = 0; i < 2; ++i) {
+      const InputNode& c = i == 0 ? *l : *t;
+      YAML::Node component(YAML::NodeType::Map);
+      std::optional<InputNode> file_node;
+      if (c.is_map()) {
+        c.expect_keys({"file", "scale", "format", "column", "time_column", "dt", "unit"});
+        file_node = c.required("file");
+      } else if (c.yaml().IsScalar()) {
+        file_node = c;
+      } else {
+        c.fail("expected a record file, or {file, scale, column, ...}");
+      }
+      const std::string file = file_node->string();
+      if (file.empty()) file_node->fail("expected a record file");
+      component["record"] =
+          resolve_record(*file_node, folder.empty() ? file : (folder / file).string());
+      for (const InputNode* options : {&entry, &c})  // the component's own options win
+        for (const char* key : kOptions)
+          if (const auto option = options->is_map() ? options->find(key) : std::nullopt) {
+            if (!option->yaml().IsScalar()) option->fail("expected a single value");
+            component[key] = option->string();
+          }
+      stems[i] = fs::path(file).stem().string();
+      const std::string path = i == 0 ? "ground_motion.L" : "ground_motion.T";
+      level.overrides.push_back(
+          Override{parse_parameter_path(path), component, canonical_text(component), c});
+    }
+    // A pair replaces a single-component motion (record or pulse) of the model.
+    for (const char* key :
+         {"record", "pulse", "scale", "format", "column", "time_column", "dt", "unit"})
+      level.overrides.insert(level.overrides.begin(),
+                             Override{parse_parameter_path(std::string("ground_motion.") + key),
+                                      YAML::Node(), "~", entry});
+    level.label = stems[0] + "+" + stems[1];
+    if (const auto name = entry.find("name")) {
+      level.label = name->string();
+      if (level.label.empty()) name->fail("must not be empty");
+    }
+    return level;
   }
 
   void check_axis_names() {
