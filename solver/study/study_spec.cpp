@@ -278,6 +278,8 @@ class StudyReader {
       level.label = "none";
     } else if (is_record_path(path.text)) {
       level.label = fs::path(value.Scalar()).stem().string();
+    } else if (value.IsSequence()) {
+      level.label = canonical_text(value);  // "[0.6 m, 0 m]", a label
     } else {
       level.label = value.Scalar();
       try {
@@ -378,8 +380,14 @@ class StudyReader {
       if (list.empty()) values->fail("empty axis: give at least one value");
       for (const InputNode& value : list) {
         const YAML::Node& v = value.yaml();
-        if (v.IsDefined() && !v.IsNull() && !v.IsScalar())
-          value.fail("a value must be a single value (use 'levels' for named sets of overrides)");
+        // A value is a scalar, or a list of scalars such as a point [e_x, e_y].
+        bool list_of_scalars = v.IsSequence() && v.size() > 0;
+        if (v.IsSequence())
+          for (const auto& item : v) list_of_scalars = list_of_scalars && item.IsScalar();
+        if (v.IsDefined() && !v.IsNull() && !v.IsScalar() && !list_of_scalars)
+          value.fail(
+              "a value must be a single value or a list of values such as [0.6 m, 0 m] (use "
+              "'levels' for named sets of overrides)");
         axis.levels.push_back(value_level(value, path, v));
       }
     } else {
@@ -520,6 +528,12 @@ class StudyReader {
         f->fail("folder '" + base.lexically_normal().string() + "' not found");
     }
     Level level;
+    // A pair replaces a single-component motion (record or pulse) of the model. (Overrides hold
+    // YAML handles: they are appended, never shifted by insert, which would assign into them.)
+    for (const char* key :
+         {"record", "pulse", "scale", "format", "column", "time_column", "dt", "unit"})
+      level.overrides.push_back(Override{parse_parameter_path(std::string("ground_motion.") + key),
+                                         YAML::Node(), "~", entry});
     std::string stems[2];
     for (int i = 0; i < 2; ++i) {
       const InputNode& c = i == 0 ? *l : *t;
@@ -548,12 +562,6 @@ class StudyReader {
       level.overrides.push_back(
           Override{parse_parameter_path(path), component, canonical_text(component), c});
     }
-    // A pair replaces a single-component motion (record or pulse) of the model.
-    for (const char* key :
-         {"record", "pulse", "scale", "format", "column", "time_column", "dt", "unit"})
-      level.overrides.insert(level.overrides.begin(),
-                             Override{parse_parameter_path(std::string("ground_motion.") + key),
-                                      YAML::Node(), "~", entry});
     level.label = stems[0] + "+" + stems[1];
     if (const auto name = entry.find("name")) {
       level.label = name->string();
