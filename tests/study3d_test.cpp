@@ -406,3 +406,19 @@ TEST(Study3DSweep, DoublySymmetricBuildingGivesTheSamePeaksAtEveryAngle) {
 
 }  // namespace
 }  // namespace isopound
+
+namespace isopound {
+namespace {
+
+TEST(Study3DConfigs, TutorialStudyValidates) {
+  const auto r = test::run_isopound(
+      "sweep '" + (test::source_dir() / "configs" / "studies" / "tutorial-3d.yaml").string() +
+      "' --dry-run");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // 9 angles x 2 Q/W x 2 eccentricities; one pulse pair per angle.
+  EXPECT_NE(r.output.find("36 runs (36 distinct models, 9 ground motions)"), std::string::npos)
+      << r.output;
+}
+
+}  // namespace
+}  // namespace isopound
