@@ -269,19 +269,22 @@ TEST(Study3DSpec, RecordPairsSetLAndTOfTheModel) {
   const Study s = load_study_text(
       "pairs.yaml", "model: " + config("3d-thesis-building.yaml") + "\nset:\n  " + kPulsePair +
                         "\nrecords:\n"
-                        "  - {name: RSN1084, folder: " +
+                        "  - {name: NGA, folder: " +
                         records +
                         ", L: RSN1084_NORTHR_SCS142.AT2, T: RSN1084_NORTHR_SCS052.AT2}\n"
                         "  - {folder: " +
                         records +
-                        ", L: SCS142.AT2, T: {file: SCS052.AT2, scale: 0.5}, scale: 2}\n" +
+                        ", L: SCS142.AT2, T: {file: SCS052.AT2, scale: 0.5}, scale: 2}\n"
+                        "  - {folder: " +
+                        records + ", glob: \"RSN1084_*.AT2\", pairs: rsn, swap: true}\n" +
                         "outputs: [base.displacement, ground.pga]\n");
   ASSERT_EQ(s.axes.size(), 1u);
   EXPECT_EQ(s.axes[0].name, "record");
-  ASSERT_EQ(s.axes[0].levels.size(), 2u);
-  EXPECT_EQ(s.axes[0].levels[0].label, "RSN1084");
+  ASSERT_EQ(s.axes[0].levels.size(), 3u);
+  EXPECT_EQ(s.axes[0].levels[0].label, "NGA");
   EXPECT_EQ(s.axes[0].levels[1].label, "SCS142+SCS052");
-  EXPECT_EQ(s.statistics.size(), 1u);  // over the record pairs by default
+  EXPECT_EQ(s.axes[0].levels[2].label, "RSN1084");  // pairs: rsn, named by the RSN
+  EXPECT_EQ(s.statistics.size(), 1u);               // over the record pairs by default
   const CaseBuilder builder(s);
   const GroundMotionConfig g = builder.input_of(0).config.ground_motion;
   ASSERT_EQ(g.components.size(), 2u);
@@ -292,9 +295,15 @@ TEST(Study3DSpec, RecordPairsSetLAndTOfTheModel) {
   const GroundMotionConfig h = builder.input_of(1).config.ground_motion;
   EXPECT_DOUBLE_EQ(h.components[0].read.scale, 2.0);  // the pair's scale
   EXPECT_DOUBLE_EQ(h.components[1].read.scale, 0.5);  // T's own wins
+  // By RSN the files pair in name order, SCS052 then SCS142; swap makes SCS142 the L component.
+  const GroundMotionConfig r = builder.input_of(2).config.ground_motion;
+  EXPECT_EQ(fs::path(r.components[0].record_path).filename(), "RSN1084_NORTHR_SCS142.AT2");
+  EXPECT_EQ(fs::path(r.components[1].record_path).filename(), "RSN1084_NORTHR_SCS052.AT2");
+  EXPECT_EQ(builder.identity(0), builder.identity(2));  // the same pair as the first entry
   // Each pair is read once, as two components.
   const ValidatedStudy v = validate_study(s, 1);
-  ASSERT_EQ(v.motions.size(), 2u);
+  ASSERT_EQ(v.motions.size(), 2u);  // entries 0 and 2 are one motion, computed once
+  EXPECT_EQ(v.distinct_models, 2);
   const GroundMotion& m = v.motions.at(builder.input_of(0).motion_key)->motion;
   EXPECT_EQ(m.acceleration.size(), m.acceleration_y.size());
   EXPECT_EQ(m.acceleration.size(), 8773u);  // NPTS of both NGA-West2 files
@@ -320,6 +329,14 @@ TEST(Study3DSpec, MalformedRecordPairsNameLineAndKey) {
        "records[0].T", "nope.AT2' not found"},
       {"name_on_single", "  - {file: " + records + "/SCS142.AT2, name: x}\n", "records[0].name",
        "labels a record pair"},
+      {"unpaired_rsn", "  - {folder: " + records + ", glob: \"RSN*.AT2\", pairs: rsn}\n",
+       "records[0].glob", "'RSN1605' has 1: RSN1605_DUZCE_DZC270.AT2"},
+      {"pairs_how", "  - {folder: " + records + ", glob: \"RSN*.AT2\", pairs: station}\n",
+       "records[0].pairs", "station"},
+      {"single_on_3d", "  - " + records + "/SCS142.AT2\n", "3:5: records[0]",
+       "its records are pairs"},
+      {"swap_single", "  - {file: " + records + "/SCS142.AT2, swap: true}\n", "records[0].swap",
+       "goes with 'pairs: rsn'"},
   };
   for (const Bad& bad : cases) {
     try {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -422,11 +423,12 @@ class StudyReader {
       files.emplace_back(entry, entry.string());
     } else {
       entry.expect_keys({"file", "files", "folder", "glob", "components", "scale", "format",
-                         "column", "time_column", "dt", "unit", "L", "T", "name"});
-      if (entry.has("L") || entry.has("T")) {
-        levels.push_back(read_record_pair(entry));
+                         "column", "time_column", "dt", "unit", "L", "T", "name", "pairs", "swap"});
+      if (entry.has("L") || entry.has("T") || entry.has("pairs")) {
+        read_record_pairs(entry, levels);
         return;
       }
+      if (const auto swap = entry.find("swap")) swap->fail("'swap' goes with 'pairs: rsn'");
       if (const auto name = entry.find("name"))
         name->fail(
             "'name' labels a record pair {L, T, name}; a single record is named by its file");
@@ -488,6 +490,10 @@ class StudyReader {
         }
       }
     }
+    if (model_is_3d())
+      entry.fail(
+          "the model is 3D (structures:): its records are pairs, {L: file, T: file, name: ...} "
+          "or {folder, glob, pairs: rsn}");
     for (const auto& [where, written] : files) {
       Level level;
       level.overrides.push_back(make_override(where, kRecordPath, YAML::Node(written)));
@@ -506,19 +512,19 @@ class StudyReader {
     }
   }
 
-  // A record pair for 3D models: {L: file, T: file, name, folder, scale, ...}; L and T may be
-  // maps {file, scale, format, column, time_column, dt, unit} with options of their own. The
-  // level sets ground_motion.L and .T and removes the single-component keys.
-  Level read_record_pair(const InputNode& entry) {
-    static constexpr const char* kOptions[] = {"scale",       "format", "column",
-                                               "time_column", "dt",     "unit"};
-    for (const char* key : {"file", "files", "glob", "components"})
-      if (const auto other = entry.find(key))
-        other->fail(std::string("'") + key +
-                    "' belongs to single records; a pair is {L: file, T: file, name: ...}");
-    const auto l = entry.find("L");
-    const auto t = entry.find("T");
-    if (!l || !t) entry.fail_at_key(l ? "T" : "L", "a record pair needs both components, L and T");
+  // The base model has `structures:` (3D buildings).
+  bool model_is_3d() const {
+    if (study_.model.IsMap())
+      for (auto entry : study_.model)
+        if (entry.first.IsScalar() && entry.first.Scalar() == "structures") return true;
+    return false;
+  }
+
+  // Record pairs for 3D models: {L: file, T: file, name, folder, scale, ...}, L and T possibly
+  // maps {file, scale, format, column, time_column, dt, unit} with options of their own; or
+  // {folder, glob, pairs: rsn, swap}: the matching files grouped by their PEER RSN (the name up to
+  // its first '_'), two per RSN, L the first by name (the second with swap: true).
+  void read_record_pairs(const InputNode& entry, std::vector<Level>& levels) {
     fs::path folder;
     if (const auto f = entry.find("folder")) {
       folder = f->string();
@@ -527,45 +533,100 @@ class StudyReader {
       if (!fs::is_directory(base, ec))
         f->fail("folder '" + base.lexically_normal().string() + "' not found");
     }
+    if (const auto how = entry.find("pairs")) {
+      how->choice<int>({{"rsn", 0}});
+      for (const char* key : {"file", "files", "components", "L", "T", "name"})
+        if (const auto other = entry.find(key))
+          other->fail(std::string("'") + key +
+                      "' does not go with 'pairs': the pairs are the files 'glob' matches");
+      const auto glob = entry.find("glob");
+      if (!glob || !entry.has("folder"))
+        how->fail("pairs: rsn pairs the files of a folder matching a glob: give folder and glob");
+      const bool swap = entry.has("swap") && entry.find("swap")->boolean();
+      const std::string pattern = glob->string();
+      std::map<std::string, std::vector<std::string>> by_rsn;  // sorted: the order of cases
+      const fs::path base = folder.is_relative() ? fs::path(study_.dir) / folder : folder;
+      for (const auto& f : fs::directory_iterator(base)) {
+        const std::string name = f.path().filename().string();
+        if (f.is_regular_file() && fnmatch(pattern.c_str(), name.c_str(), 0) == 0)
+          by_rsn[name.substr(0, std::min(name.find('_'), name.rfind('.')))].push_back(name);
+      }
+      if (by_rsn.empty())
+        glob->fail("no file in '" + base.lexically_normal().string() + "' matches '" + pattern +
+                   "'");
+      for (auto& [rsn, files] : by_rsn) {
+        std::sort(files.begin(), files.end());
+        if (files.size() != 2) {
+          std::string names;
+          for (const std::string& n : files) names += (names.empty() ? "" : ", ") + n;
+          glob->fail("pairs: rsn needs two files (L and T) per RSN; '" + rsn + "' has " +
+                     std::to_string(files.size()) + ": " + names);
+        }
+        if (swap) std::swap(files[0], files[1]);
+        levels.push_back(pair_level(entry, {*glob, *glob}, {nullptr, nullptr}, files, folder, rsn));
+      }
+      return;
+    }
+    if (const auto swap = entry.find("swap")) swap->fail("'swap' goes with 'pairs: rsn'");
+    for (const char* key : {"file", "files", "glob", "components"})
+      if (const auto other = entry.find(key))
+        other->fail(std::string("'") + key +
+                    "' belongs to single records; a pair is {L: file, T: file, name: ...}");
+    const auto l = entry.find("L");
+    const auto t = entry.find("T");
+    if (!l || !t) entry.fail_at_key(l ? "T" : "L", "a record pair needs both components, L and T");
+    std::vector<InputNode> file_nodes;
+    std::vector<std::string> files;
+    for (const InputNode& c : {*l, *t}) {
+      if (c.is_map()) {
+        c.expect_keys({"file", "scale", "format", "column", "time_column", "dt", "unit"});
+        file_nodes.push_back(c.required("file"));
+      } else if (c.yaml().IsScalar()) {
+        file_nodes.push_back(c);
+      } else {
+        c.fail("expected a record file, or {file, scale, column, ...}");
+      }
+      files.push_back(file_nodes.back().string());
+      if (files.back().empty()) file_nodes.back().fail("expected a record file");
+    }
+    std::string label =
+        fs::path(files[0]).stem().string() + "+" + fs::path(files[1]).stem().string();
+    if (const auto name = entry.find("name")) {
+      label = name->string();
+      if (label.empty()) name->fail("must not be empty");
+    }
+    levels.push_back(pair_level(entry, file_nodes, {&*l, &*t}, files, folder, label));
+  }
+
+  // The level of one pair: ground_motion.L and .T set, the single-component keys removed.
+  Level pair_level(const InputNode& entry, const std::vector<InputNode>& file_nodes,
+                   const std::vector<const InputNode*>& own_options,
+                   const std::vector<std::string>& files, const fs::path& folder,
+                   const std::string& label) {
+    static constexpr const char* kOptions[] = {"scale",       "format", "column",
+                                               "time_column", "dt",     "unit"};
     Level level;
+    level.label = label;
     // A pair replaces a single-component motion (record or pulse) of the model. (Overrides hold
     // YAML handles: they are appended, never shifted by insert, which would assign into them.)
     for (const char* key :
          {"record", "pulse", "scale", "format", "column", "time_column", "dt", "unit"})
       level.overrides.push_back(Override{parse_parameter_path(std::string("ground_motion.") + key),
                                          YAML::Node(), "~", entry});
-    std::string stems[2];
-    for (int i = 0; i < 2; ++i) {
-      const InputNode& c = i == 0 ? *l : *t;
+    for (std::size_t i = 0; i < 2; ++i) {
       YAML::Node component(YAML::NodeType::Map);
-      std::optional<InputNode> file_node;
-      if (c.is_map()) {
-        c.expect_keys({"file", "scale", "format", "column", "time_column", "dt", "unit"});
-        file_node = c.required("file");
-      } else if (c.yaml().IsScalar()) {
-        file_node = c;
-      } else {
-        c.fail("expected a record file, or {file, scale, column, ...}");
-      }
-      const std::string file = file_node->string();
-      if (file.empty()) file_node->fail("expected a record file");
       component["record"] =
-          resolve_record(*file_node, folder.empty() ? file : (folder / file).string());
-      for (const InputNode* options : {&entry, &c})  // the component's own options win
+          resolve_record(file_nodes[i], folder.empty() ? files[i] : (folder / files[i]).string());
+      for (const InputNode* options : {&entry, own_options[i]})  // the component's own win
         for (const char* key : kOptions)
-          if (const auto option = options->is_map() ? options->find(key) : std::nullopt) {
+          if (const auto option =
+                  options && options->is_map() ? options->find(key) : std::nullopt) {
             if (!option->yaml().IsScalar()) option->fail("expected a single value");
             component[key] = option->string();
           }
-      stems[i] = fs::path(file).stem().string();
-      const std::string path = i == 0 ? "ground_motion.L" : "ground_motion.T";
       level.overrides.push_back(
-          Override{parse_parameter_path(path), component, canonical_text(component), c});
-    }
-    level.label = stems[0] + "+" + stems[1];
-    if (const auto name = entry.find("name")) {
-      level.label = name->string();
-      if (level.label.empty()) name->fail("must not be empty");
+          Override{parse_parameter_path(i == 0 ? "ground_motion.L" : "ground_motion.T"), component,
+                   canonical_text(component), own_options[i] ? *own_options[i] : file_nodes[i]});
     }
     return level;
   }
