@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/elements/polygon_contact.h"
 #include "solver/io/model_input.h"
 #include "solver/io/report3d.h"
 #include "solver/structures/config3d.h"
@@ -213,6 +214,106 @@ TEST(Study3DSelectors, GrammarErrorsNameTheProblem) {
   EXPECT_EQ(output_unit(parse_output_selector("contacts.normal_force")), "N");
   EXPECT_EQ(output_unit(parse_output_selector("sum:contacts.friction_dissipated_energy")), "J");
   EXPECT_EQ(output_unit(parse_output_selector("max:contacts.area")), "m2");
+}
+
+// The eccentric building under the pulse pair with rigid walls east and west of its base slab
+// (16.5 m square) at 0.5 cm and 10 cm, as polygon contacts labelled as the pound3d site labels
+// them.
+struct WalledRun {
+  Model model;
+  AnalysisResult result;
+  GroundMotionPeaks ground;
+};
+const WalledRun& walled_run() {
+  static const WalledRun run = [] {
+    eccentric_run();  // writes eccentric.yaml
+    const ModelConfig config = load_model_file((scratch() / "eccentric.yaml").string());
+    WalledRun w;
+    w.model = build_model(config);
+    const int d = w.model.structures.front().level_dofs.front();
+    const double half = 8.25;
+    PolygonBody slab{d,
+                     d + 1,
+                     d + 2,
+                     {0.0, 0.0},
+                     ConvexPolygon{{-half, -half}, {half, -half}, {half, half}, {-half, half}},
+                     340e3};
+    for (const double side : {1.0, -1.0}) {
+      const double gap = side > 0 ? 0.005 : 0.10;
+      const double x0 = side * (half + gap), x1 = side * (half + gap + 1.0);
+      PolygonBody wall{-1,
+                       -1,
+                       -1,
+                       {0.0, 0.0},
+                       ConvexPolygon{{std::min(x0, x1), -half - 1.0},
+                                     {std::max(x0, x1), -half - 1.0},
+                                     {std::max(x0, x1), half + 1.0},
+                                     {std::min(x0, x1), half + 1.0}},
+                       5e3 * (2 * half + 2.0)};
+      w.model.elements.push_back(std::make_unique<PolygonContact>(
+          std::string("building/base|wall ") + (side > 0 ? "east" : "west"), slab, wall,
+          PolygonContactConfig{}));
+    }
+    const GroundMotion motion = load_ground_motion(config.ground_motion, true);
+    w.ground = peaks_of(motion);
+    RunOptions options = run_options(config);
+    options.output.histories = true;
+    w.result = run_analysis(w.model, motion, options);
+    return w;
+  }();
+  return run;
+}
+
+TEST(Study3DSelectors, ContactPairsByGroupLabelAndFirstImpact) {
+  const WalledRun& w = walled_run();
+  const auto peak_of = [&](const std::string& selector) {
+    return evaluate_output(resolve_output(parse_output_selector(selector), w.model), w.result,
+                           w.ground);
+  };
+  const auto output = [&](int element, const char* name) {
+    const Element& e = *w.model.elements[static_cast<std::size_t>(element)];
+    for (int k = 0; k < e.output_count(); ++k)
+      if (e.output_name(k) == name) return w.result.element_outputs[element][k];
+    ADD_FAILURE() << name;
+    return Peak{};
+  };
+  const int east = static_cast<int>(w.model.elements.size()) - 2, west = east + 1;
+  const double impacts_east = output(east, "impacts").value;
+  const double impacts_west = output(west, "impacts").value;
+  ASSERT_GE(impacts_east, 1.0);  // both walls are hit, the west one more than once
+  ASSERT_GE(impacts_west, 2.0);
+  EXPECT_EQ(peak_of("base|wall east.impacts"), impacts_east);
+  EXPECT_EQ(peak_of("building/base|wall west.impacts"), impacts_west);
+  EXPECT_EQ(peak_of("sum:contacts.impacts"), impacts_east + impacts_west);
+  EXPECT_EQ(peak_of("sum:base|wall*.impacts"), impacts_east + impacts_west);
+  EXPECT_EQ(peak_of("contacts.normal_force"),
+            std::max(output(east, "normal_force").value, output(west, "normal_force").value));
+  EXPECT_GT(peak_of("contacts.normal_force"), 1e5);  // N: a real impact
+  EXPECT_EQ(peak_of("max:contacts.friction_dissipated_energy"),
+            std::max(output(east, "friction_dissipated_energy").value,
+                     output(west, "friction_dissipated_energy").value));
+
+  // First impact, independently from the history rows: the first row with in_contact = 1 on
+  // either wall is at or after it, by less than one output interval (rows at every record
+  // sample; the onset itself is located inside the step).
+  const History& h = w.result.history;
+  std::vector<std::size_t> contact_columns;
+  for (std::size_t c = 0; c < h.columns.size(); ++c)
+    if (h.columns[c].find("|wall ") != std::string::npos &&
+        h.columns[c].find(" in_contact") != std::string::npos)
+      contact_columns.push_back(c);
+  ASSERT_EQ(contact_columns.size(), 2u);
+  double first_row = -1.0, row_interval = h.values[h.columns.size()] - h.values[0];
+  for (std::size_t r = 0; r < h.rows() && first_row < 0; ++r)
+    for (const std::size_t c : contact_columns)
+      if (h.values[r * h.columns.size() + c] > 0.5) first_row = h.values[r * h.columns.size()];
+  ASSERT_GT(first_row, 0.0);
+  const double first = peak_of("contacts.first_impact_time");
+  EXPECT_LE(first, first_row + 1e-12);
+  EXPECT_GT(first, first_row - row_interval);
+  EXPECT_LT(first, output(west, "impacts").time);  // the last impact on the west wall is later
+  EXPECT_EQ(output_unit(parse_output_selector("contacts.first_impact_time")), "s");
+  EXPECT_THROW(parse_output_selector("sum:contacts.first_impact_time"), std::invalid_argument);
 }
 
 TEST(Study3DSpec, AngleRangeInDegreesGives73CasesInRadians) {

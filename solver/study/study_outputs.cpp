@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "solver/elements/polygon_contact.h"
@@ -273,6 +274,8 @@ OutputSelector parse_output_selector(std::string_view text) {
     s.kind = OutputSelector::Kind::kElement;
   }
   if (s.sum && s.kind != OutputSelector::Kind::kElement) fail("'sum:' applies to elements only");
+  if (s.sum && s.quantity == "first_impact_time")
+    fail("first_impact_time is the earliest over the matches: no 'sum:'");
   return s;
 }
 
@@ -309,6 +312,7 @@ std::string output_unit(const OutputSelector& s) {
       {"tangential_force", "N"},
       {"area", "m2"},
       {"time_in_stick", "s"},
+      {"first_impact_time", "s"},
       {"time_in_slip", "s"},
       {"friction_dissipated_energy", "J"},
       {"impact_dissipated_energy", "J"},
@@ -371,6 +375,7 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
       return r;
     }
     case OutputSelector::Kind::kElement: {
+      r.first_time = s.quantity == "first_impact_time";
       std::vector<std::string> seen_outputs;
       const bool all_contacts = s.where == "contacts";  // every polygon contact pair
       for (std::size_t e = 0; e < model.elements.size(); ++e) {
@@ -378,9 +383,11 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
         if (all_contacts ? dynamic_cast<const PolygonContact*>(&element) == nullptr
                          : !matches(s.where, element.label()))
           continue;
+        // first_impact_time: when in_contact first reached 1 (its peak's time).
+        const std::string wanted = r.first_time ? "in_contact" : s.quantity;
         int found = -1;
         for (int k = 0; k < element.output_count(); ++k) {
-          if (element.output_name(k) == s.quantity) found = k;
+          if (element.output_name(k) == wanted) found = k;
           seen_outputs.push_back(element.output_name(k));
         }
         if (found < 0) continue;
@@ -460,6 +467,14 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
       return value;
     }
     case OutputSelector::Kind::kElement: {
+      if (r.first_time) {  // the earliest onset over the pairs; none: an empty cell
+        double first = std::numeric_limits<double>::quiet_NaN();
+        for (std::size_t j = 0; j < r.indices.size(); ++j) {
+          const Peak& in_contact = result.element_outputs[r.indices[j]][r.element_outputs[j]];
+          if (in_contact.value > 0.0 && !(in_contact.time >= first)) first = in_contact.time;
+        }
+        return first;
+      }
       double value = r.sum ? 0.0 : -1e300;
       for (std::size_t j = 0; j < r.indices.size(); ++j) {
         const double peak = result.element_outputs[r.indices[j]][r.element_outputs[j]].value;

@@ -28,7 +28,8 @@
 //       empty cell; a selector that matches in no case is an error.
 //   contacts  .  <output>   every 3D polygon contact pair (slab-wall, slab-slab): normal_force,
 //       tangential_force, area, indentation, impacts, impact_velocity, time_in_stick,
-//       time_in_slip, friction_dissipated_energy, impact_dissipated_energy
+//       time_in_slip, friction_dissipated_energy, impact_dissipated_energy, and
+//       first_impact_time (the earliest onset over the matched pairs; empty when none)
 #pragma once
 
 #include <string>
@@ -69,6 +70,9 @@ struct ResolvedOutput {
   // from the probes' terms (kept here) and the final displacement.
   int probe_component = -1;
   bool at_end = false;
+  // first_impact_time: `element_outputs` are the in_contact outputs; the earliest time any of
+  // them became 1 (NaN when none did).
+  bool first_time = false;
   std::vector<PlanProbe> end_probes;
 };
 
