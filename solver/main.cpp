@@ -88,12 +88,15 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
     histories = (fs::path(out_dir) / "histories.csv").string();
     writer = std::make_unique<CsvHistoryWriter>(histories);  // rows stream while it runs
   }
+  const std::string events = (fs::path(out_dir) / "contact_events.csv").string();
+  fs::remove(events);  // a stale log of an earlier run would be read as this run's
   JobResult job;
   try {
     ProgressLine progress(!quiet);
-    job = run_job(config, writer.get(), std::ref(progress));
+    job = run_job(config, writer.get(), std::ref(progress), events);
   } catch (...) {
-    // No partial histories.csv from a run that failed (it would look like a result).
+    // No partial histories.csv from a run that failed (it would look like a result); the event
+    // log is kept: it shows the contacts up to the failure.
     writer.reset();
     if (!histories.empty()) fs::remove(histories);
     throw;
@@ -106,7 +109,8 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
     print_summary(std::cout, config, job);
     if (free_run) print_unobstructed(std::cout, config, job, *free_run);
     std::cout << "Wrote " << summary;
-    if (!histories.empty()) std::cout << " and " << histories;
+    if (!histories.empty()) std::cout << ", " << histories;
+    if (fs::exists(events)) std::cout << ", " << events;
     std::cout << '\n';
   }
   return kOk;
@@ -197,6 +201,9 @@ int main(int argc, char** argv) {
   run->add_flag("--no-histories", no_histories, "Skip histories.csv");
   run->add_flag("--compare-unobstructed", compare_unobstructed,
                 "Also run without walls and neighbours; report each peak's amplification");
+  double until = 0.0;
+  run->add_option("--until", until, "Stop the analysis at this time, s (analysis.t_end)")
+      ->check(CLI::PositiveNumber);
 
   CLI::App* demo = app.add_subcommand(
       "demo", "3-storey Bouc-Wen isolated building under the built-in near-fault pulse");
@@ -244,6 +251,7 @@ int main(int argc, char** argv) {
       config.ground_motion.record_path = record_path;
     }
     if (no_histories) config.output.histories = false;
+    if (until > 0) config.analysis.t_end = until;
     if (*run) return run_and_write(config, out_dir, quiet, compare_unobstructed);
     if (*modes) {
       if (!quiet) print_modes(config);

@@ -180,7 +180,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   if (max_step > 0)
     per_sample = std::max(1, static_cast<int>(std::ceil(motion.dt / max_step - 1e-9)));
   const double H = motion.dt / per_sample;
-  const double total = motion.duration() + options.extra_time;
+  double total = motion.duration() + options.extra_time;
+  if (cfg.t_end > 0) total = std::min(total, cfg.t_end);
   const long intervals = static_cast<long>(std::ceil(total / H - 1e-9));
   const int max_level = cfg.max_halvings;
   const GroundSampler ground{motion, per_sample};
@@ -287,8 +288,9 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
     for (std::size_t k = 0; k < options.tracked.size(); ++k) {
       const TrackedCoordinate& c = options.tracked[k];
-      const double x =
-          (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) + (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0);
+      const double x = (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) +
+                       (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0) +
+                       (c.dof_c >= 0 ? c.c_c * u[c.dof_c] : 0.0);
       update(res.tracked[k], x, t);
     }
     for (std::size_t p = 0; p < model.probes.size(); ++p) {
@@ -507,6 +509,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       }
       record(t, ag1, h);                 // the step just taken, with the forces before any switch
       if (at_event) settle_events(ag1);  // the step ended at an event: switch status there
+      if (options.observer) options.observer->after_step(t, model);
       if (adaptive) {
         const double limit = refine_to_limit();  // also gives a new contact its own step
         if (level > 0 && err < 0.1 && level_step(level - 1) <= limit) --level;

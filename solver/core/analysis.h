@@ -86,6 +86,16 @@ struct TrackedCoordinate {
   double c_a = 0.0;
   int dof_b = -1;
   double c_b = 0.0;
+  int dof_c = -1;  // a third term, e.g. the rotation of a point of a rigid floor
+  double c_c = 0.0;
+};
+
+// Sees the model after every accepted step (e.g. a contact-event log). Called with the model's
+// elements in their committed state; must not change them.
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  virtual void after_step(double t, const Model& model) = 0;
 };
 
 // Peaks of a PlanProbe (model.h).
@@ -128,6 +138,7 @@ struct RunOptions {
   std::vector<TrackedCoordinate> tracked;  // peaks in AnalysisResult::tracked
   // Histories go here when set (and output.histories); else into AnalysisResult::history.
   HistorySink* history_sink = nullptr;
+  StepObserver* observer = nullptr;  // after every accepted step, when set
   // Called now and then (every 4096 accepted steps) with the analysed and the total time, s.
   std::function<void(double t, double total)> progress;
 };

@@ -191,7 +191,19 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
       out.spring = out.slipping ? sign_or_zero(s_tr) * cap : s_tr;
     }
     out.spring_trial = s_tr;
-    out.tangential = out.slipping ? out.spring : out.spring + c_tangential_ * out.rate_t;
+    // Coulomb bounds the whole tangential force, dashpot included: |F_T| ≤ μ F_N (μ_s in stick,
+    // μ_k in slip). The dashpot d = c_T u̇_T is saturated smoothly at the room B left on its side,
+    // d = B tanh(c_T u̇_T / B) (a clamp's kink makes Newton cycle): in a steady slip (u̇_T along
+    // s) B = 0 and F_T = s = μ_k F_N exactly; d keeps the sign of u̇_T and |d| ≤ c_T |u̇_T|, so it
+    // only dissipates, and stick ↔ slip changes F_T only by the μ_s/μ_k bound (THEORY-notes).
+    {
+      const double mu = out.slipping ? cfg_.mu_kinetic : cfg_.mu_static;
+      const double bound = mu * std::max(out.normal, 0.0);
+      const double d = c_tangential_ * out.rate_t;
+      const double room =
+          d > 0 ? std::max(bound - out.spring, 0.0) : std::max(bound + out.spring, 0.0);
+      out.tangential = out.spring + (room > 0 ? room * std::tanh(d / room) : 0.0);
+    }
     // Work of the spring–slider over the step by the midpoint rule, (s_C + s)/2 · Δu_T, minus
     // the change of s²/(2k_T): (s_C + s)(s_tr − s)/(2k_T); μ_k F_N Δu_T in a steady slip,
     // 0 in stick.

@@ -442,7 +442,8 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
 AnalysisConfig read_analysis(const InputNode& node) {
   using Stepping = AnalysisConfig::Stepping;
   node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings",
-                    "newton_tolerance", "max_iterations", "steps_per_contact", "locate_events"});
+                    "newton_tolerance", "max_iterations", "steps_per_contact", "locate_events",
+                    "t_end"});
   AnalysisConfig a;
   node.read_choice<Stepping>(
       "stepping", {{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}}, a.stepping);
@@ -459,6 +460,9 @@ AnalysisConfig read_analysis(const InputNode& node) {
   node.read_number("newton_tolerance", Bound::kPositive, a.newton_tolerance);
   node.read_integer("max_iterations", 1, kIntMax, a.max_iterations);
   node.read_boolean("locate_events", a.locate_events);
+  // Absent: the whole record (not a default value, so not listed among the defaults).
+  if (const auto t_end = node.find("t_end"))
+    a.t_end = t_end->quantity(dim::kTime, Bound::kPositive);
   return a;
 }
 
@@ -479,12 +483,16 @@ int column_of(const YAML::Mark& mark) {
 
 }  // namespace
 
+ImpactLawUses read_impact_law(const InputNode& node, ImpactLawConfig& config) {
+  return read_impact(node, config);
+}
+
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
                        const std::string& base_dir, std::vector<std::string>* used_keys) {
   try {
     const InputNode top = InputNode::tracked(root, source_name);
     top.expect_keys(
-        {"building", "neighbours", "structures", "ground_motion", "analysis", "output"});
+        {"building", "neighbours", "structures", "contact", "ground_motion", "analysis", "output"});
     ModelConfig model;
     model.source = source_name;
     if (const auto structures = top.find("structures")) {  // 3D: model_input3d.cpp
@@ -492,7 +500,13 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
         if (const auto n = top.find(key))
           n->fail("a 2D building cannot be combined with 3D structures (structures:)");
       model.structures3d = read_structures3d(*structures);
+      if (const auto c = top.find("contact")) model.contact3d = read_contact3d(*c);
+      check_site3d(model, *structures, top.find("contact"));
     } else {
+      if (const auto c = top.find("contact"))
+        c->fail(
+            "contact: is the 3D pounding law (with structures:); 2D walls and neighbours "
+            "take their impact law in their own section");
       model.building = read_building(top.required("building"));
     }
     if (const auto list = top.find("neighbours")) {

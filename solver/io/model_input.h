@@ -22,4 +22,7 @@ ModelConfig load_model_file(const std::string& path);
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
                        const std::string& base_dir, std::vector<std::string>* used_keys = nullptr);
 
+// The impact-law keys of a 2D wall or neighbour (law, k, e, ...), also the 3D contact's option.
+ImpactLawUses read_impact_law(const InputNode& node, ImpactLawConfig& config);
+
 }  // namespace isopound

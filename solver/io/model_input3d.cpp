@@ -6,7 +6,14 @@
 #include <numbers>
 #include <optional>
 
+#include <limits>
+#include <sstream>
+
+#include "geometry/overlap.h"
 #include "solver/io/friction_pendulum_input.h"
+#include "solver/io/model_input.h"
+#include "solver/structures/building3d.h"
+#include "solver/structures/pounding3d.h"
 
 namespace isopound {
 namespace {
@@ -234,10 +241,57 @@ void read_damping3d(const InputNode& node, bool isolated, Damping3DConfig& d) {
   }
 }
 
+// walls: {sides: all | [east, ...], gap: 20 cm | {east: .., west: ..}, thickness, height,
+// extension, mass_per_length}
+MoatWalls3DConfig read_walls3d(const InputNode& node) {
+  using W = MoatWalls3DConfig;
+  node.expect_keys({"sides", "gap", "thickness", "height", "extension", "mass_per_length"});
+  W w;
+  const auto side_of = [](const InputNode& n) {
+    return n.choice<int>(
+        {{"east", W::kEast}, {"west", W::kWest}, {"north", W::kNorth}, {"south", W::kSouth}});
+  };
+  if (const auto sides = node.find("sides")) {
+    if (sides->is_sequence()) {
+      if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, west]");
+      for (const InputNode& s : sides->elements()) {
+        const int k = side_of(s);
+        if (w.present[k]) s.fail("side listed twice");
+        w.present[k] = true;
+      }
+    } else {
+      sides->choice<int>({{"all", 0}});
+      w.present = {true, true, true, true};
+    }
+  } else {
+    node.note_default("sides", "all");
+    w.present = {true, true, true, true};
+  }
+  const InputNode gap = node.required("gap");
+  if (gap.is_map()) {
+    gap.expect_keys({"east", "west", "north", "south"});
+    for (int k = 0; k < 4; ++k) {
+      const auto g = gap.find(W::kSideNames[k]);
+      if (w.present[k] && !g) gap.fail(std::string("no gap for the ") + W::kSideNames[k] + " wall");
+      if (g && !w.present[k])
+        g->fail(std::string("there is no ") + W::kSideNames[k] + " wall (see sides)");
+      if (g) w.gap[k] = g->quantity(dim::kLength, Bound::kNonNegative);
+    }
+  } else {
+    const double g = gap.quantity(dim::kLength, Bound::kNonNegative);
+    w.gap = {g, g, g, g};
+  }
+  node.read_quantity("thickness", dim::kLength, Bound::kPositive, w.thickness);
+  node.read_quantity("height", dim::kLength, Bound::kPositive, w.height);
+  node.read_quantity("extension", dim::kLength, Bound::kNonNegative, w.extension);
+  node.read_quantity("mass_per_length", Dimension{-1, 1, 0}, Bound::kPositive, w.mass_per_length);
+  return w;
+}
+
 Building3DConfig read_building3d(const InputNode& node) {
   node.expect_keys({"name", "position", "rotation", "isolated", "plan", "grid", "columns",
                     "storeys", "base", "eccentricity", "bearing", "bearings", "damping",
-                    "polar_moment_rule", "column_coupling"});
+                    "polar_moment_rule", "column_coupling", "walls", "adjacent"});
   Building3DConfig b;
   if (const auto n = node.find("name")) {
     b.name = n->string();
@@ -387,13 +441,228 @@ Building3DConfig read_building3d(const InputNode& node) {
     }
   }
   if (const auto d = node.find("damping")) read_damping3d(*d, b.isolated, b.damping);
+  if (const auto w = node.find("walls")) {
+    if (!b.isolated)
+      w->fail(
+          "moat walls surround the base slab of an isolated building; a fixed-base "
+          "building has none (model a wall next to it as its own structure)");
+    b.walls = read_walls3d(*w);
+  }
   if (!b.isolated && b.damping.type == Damping3DConfig::Type::kNonClassical) {
     // Fixed base: the superstructure Rayleigh alone.
   }
   return b;
 }
 
+// Plan-frame bounding box of every slab of a building as placed.
+std::pair<Vec2, Vec2> plan_box(const Building3DConfig& b) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Vec2 lo{inf, inf}, hi{-inf, -inf};
+  const auto add = [&](const Diaphragm3DConfig& d) {
+    for (const Vec2& p_B : d.plan) {
+      const Vec2 p = to_plan(b, p_B);
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+  };
+  if (b.isolated) add(b.base);
+  for (const Storey3DConfig& s : b.storeys) add(s.floor);
+  return {lo, hi};
+}
+
+// adjacent: {to: NAME, side: east|west|north|south, gap: G}: sets the building's position so
+// that its bounding box (in plan) faces the other's on that side at G, centred on it. Sides are
+// directions of the model's plan frame (east = +x).
+void place_adjacent(const InputNode& adj, const InputNode& item,
+                    std::vector<Building3DConfig>& buildings) {
+  using W = MoatWalls3DConfig;
+  adj.expect_keys({"to", "side", "gap"});
+  Building3DConfig& me = buildings.back();
+  if (item.has("position"))
+    item.fail_at_key("position", "give either position or adjacent, not both");
+  const InputNode to = adj.required("to");
+  const std::string other_name = to.string();
+  const Building3DConfig* other = nullptr;
+  for (std::size_t k = 0; k + 1 < buildings.size(); ++k)
+    if (buildings[k].name == other_name) other = &buildings[k];
+  if (!other)
+    to.fail("no structure named '" + other_name +
+            "' before this one (list the building it stands next to first)");
+  const int side = adj.required("side").choice<int>(
+      {{"east", W::kEast}, {"west", W::kWest}, {"north", W::kNorth}, {"south", W::kSouth}});
+  const double gap = adj.required("gap").quantity(dim::kLength, Bound::kPositive);
+  me.position = {0.0, 0.0};
+  const auto [olo, ohi] = plan_box(*other);
+  const auto [mlo, mhi] = plan_box(me);
+  const Vec2 ocentre = 0.5 * (olo + ohi), mcentre = 0.5 * (mlo + mhi);
+  switch (side) {
+    case W::kEast:
+      me.position = {ohi.x + gap - mlo.x, ocentre.y - mcentre.y};
+      break;
+    case W::kWest:
+      me.position = {olo.x - gap - mhi.x, ocentre.y - mcentre.y};
+      break;
+    case W::kNorth:
+      me.position = {ocentre.x - mcentre.x, ohi.y + gap - mlo.y};
+      break;
+    default:
+      me.position = {ocentre.x - mcentre.x, olo.y - gap - mhi.y};
+      break;
+  }
+  me.adjacent = {other_name, side, gap};
+}
+
 }  // namespace
+
+ModelConfig::Contact3D read_contact3d(const InputNode& node) {
+  node.expect_keys({"k_normal",
+                    "k_tangential",
+                    "materials",
+                    "mu_static",
+                    "mu_kinetic",
+                    "restitution",
+                    "friction",
+                    "keep_tension",
+                    "indentation",
+                    "overlap",
+                    "elevation_tolerance",
+                    "search_distance",
+                    "law",
+                    "k",
+                    "k_h",
+                    "n",
+                    "e",
+                    "material",
+                    "xi_formula",
+                    "min_impact_velocity"});
+  ModelConfig::Contact3D c;
+  PolygonContactConfig& law = c.law;
+  if (node.has("law")) {
+    c.use_impact_law = true;
+    read_impact_law(node, c.impact_law);
+    if (node.has("k_normal") || node.has("restitution"))
+      node.fail_at_key(node.has("k_normal") ? "k_normal" : "restitution",
+                       "not used with law: (the 2D law's own k and e act along the normal)");
+  }
+  if (const auto m = node.find("materials")) {
+    m->expect_keys({"E", "nu"});
+    if (node.has("k_normal") || node.has("k_tangential"))
+      m->fail("give either materials or k_normal/k_tangential, not both");
+    const double e = m->required("E").quantity(dim::kPressure, Bound::kPositive);
+    const InputNode nu_node = m->required("nu");
+    const double nu = nu_node.number(Bound::kNonNegative);
+    if (nu >= 0.5) nu_node.fail("Poisson's ratio must be in [0, 0.5)");
+    const ContactStiffness k = contact_stiffness_from_materials(e, nu, e, nu);
+    law.k_normal = k.k_normal;
+    law.k_tangential = k.k_tangential;
+  } else {
+    if (!c.use_impact_law)
+      node.read_quantity("k_normal", dim::kPressure, Bound::kPositive, law.k_normal);
+    node.read_boolean("friction", law.friction);
+    if (law.friction)
+      node.read_quantity("k_tangential", dim::kStiffness, Bound::kPositive, law.k_tangential);
+  }
+  if (node.has("materials")) node.read_boolean("friction", law.friction);
+  if (law.friction) {
+    node.read_number("mu_static", Bound::kNonNegative, law.mu_static);
+    node.read_number("mu_kinetic", Bound::kNonNegative, law.mu_kinetic);
+    if (law.mu_kinetic > law.mu_static) node.fail_at_key("mu_kinetic", "must not exceed mu_static");
+  } else {
+    for (const char* key : {"mu_static", "mu_kinetic", "k_tangential"})
+      if (const auto n = node.find(key)) n->fail("not used with friction: false");
+  }
+  if (!c.use_impact_law) {
+    if (const auto e = node.find("restitution")) {
+      law.restitution = e->number(Bound::kPositive);
+      if (law.restitution > 1.0) e->fail("the coefficient of restitution must be in (0, 1]");
+    } else {
+      node.note_default("restitution", "0.65");
+    }
+    node.read_boolean("keep_tension", law.keep_tension);
+    node.read_choice<IndentationRule>(
+        "indentation",
+        {{"thesis", IndentationRule::kThesis}, {"mean_depth", IndentationRule::kMeanDepth}},
+        law.indentation);
+  }
+  node.read_choice<OverlapMethod>(
+      "overlap", {{"fast", OverlapMethod::kFast}, {"exact", OverlapMethod::kExact}}, law.overlap);
+  node.read_quantity("elevation_tolerance", dim::kLength, Bound::kPositive, c.elevation_tolerance);
+  node.read_quantity("search_distance", dim::kLength, Bound::kPositive, c.search_distance);
+  return c;
+}
+
+void check_site3d(const ModelConfig& model, const InputNode& structures,
+                  const std::optional<InputNode>& contact) {
+  const std::vector<InputNode> items = structures.elements();
+  const std::vector<SiteBody> bodies = site_bodies(model);
+  const double tol = model.contact3d.elevation_tolerance;
+  const auto blame = [&](const SiteBody& s) -> const InputNode& { return items.at(s.building); };
+  // Overlaps at rest: slabs at one level (different structures), walls with base-level slabs.
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+      const SiteBody& a = bodies[i];
+      const SiteBody& b = bodies[j];
+      if (a.role == "wall" && b.role == "wall") continue;
+      if (a.role == "slab" && b.role == "slab" && a.structure == b.structure) continue;
+      if (std::abs(a.elevation - b.elevation) > tol) continue;
+      const Separation sep = separation_of(a.plan_W, b.plan_W);
+      if (sep.distance >= 0.0) continue;
+      std::ostringstream msg;
+      msg.precision(4);
+      if (a.role == "wall" || b.role == "wall") {
+        const SiteBody& wall = a.role == "wall" ? a : b;
+        const SiteBody& slab = a.role == "wall" ? b : a;
+        msg << "the " << wall.structure << " overlaps the slab " << slab.label() << " at rest (by "
+            << -sep.distance << " m): a wall must stand outside every slab at its level";
+        items.at(wall.building).fail_at_key("walls", msg.str());
+      }
+      msg << "structures '" << a.structure << "' and '" << b.structure << "' overlap at rest ("
+          << a.level << " and " << b.level << " by " << -sep.distance
+          << " m): place them apart (position, or adjacent: {to, side, gap})";
+      blame(b).fail(msg.str());
+    }
+  // Neighbours close enough to meet: every floor of one within the other's height must face a
+  // floor of the other (contact at mismatched levels is outside the model).
+  const double reach = model.contact3d.search_distance;
+  for (std::size_t p = 0; p < model.structures3d.size(); ++p)
+    for (std::size_t q = 0; q < model.structures3d.size(); ++q) {
+      if (p == q) continue;
+      std::vector<const SiteBody*> mine, theirs;
+      for (const SiteBody& s : bodies) {
+        if (s.role != "slab") continue;
+        if (s.building == static_cast<int>(p)) mine.push_back(&s);
+        if (s.building == static_cast<int>(q)) theirs.push_back(&s);
+      }
+      bool near = false;
+      for (const SiteBody* a : mine)
+        for (const SiteBody* b : theirs)
+          near = near || separation_of(a->plan_W, b->plan_W).distance <= reach;
+      if (!near) continue;
+      double top = 0.0, bottom = std::numeric_limits<double>::infinity();
+      for (const SiteBody* b : theirs) {
+        top = std::max(top, b->elevation);
+        bottom = std::min(bottom, b->elevation);
+      }
+      for (const SiteBody* a : mine) {
+        if (a->elevation <= tol || a->elevation > top + tol || a->elevation < bottom - tol)
+          continue;
+        bool matched = false;
+        for (const SiteBody* b : theirs)
+          matched = matched || std::abs(a->elevation - b->elevation) <= tol;
+        if (matched) continue;
+        std::ostringstream msg;
+        msg.precision(4);
+        msg << a->label() << " at " << a->elevation << " m faces structure '"
+            << model.structures3d[q].name
+            << "' (within the contact search distance) where it has no floor at that level: "
+               "slab-to-column contact at mismatched levels is outside the model; give both "
+               "equal storey heights, or place them farther apart than contact.search_distance ("
+            << reach << " m)";
+        items.at(p).fail_at_key("storeys", msg.str());
+      }
+    }
+  (void)contact;
+}
 
 std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
   if (!node.is_sequence() || node.elements().empty())
@@ -404,6 +673,7 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
     for (std::size_t k = 0; k + 1 < out.size(); ++k)
       if (out[k].name == out.back().name)
         item.fail_at_key("name", "two structures are named '" + out.back().name + "'");
+    if (const auto adj = item.find("adjacent")) place_adjacent(*adj, item, out);
   }
   return out;
 }

@@ -2,6 +2,10 @@
 // JSON key ends in its unit (_m, _s, _N, _J, _m_s2) or is dimensionless.
 #include "solver/io/report.h"
 
+#include <optional>
+
+#include "solver/elements/polygon_contact.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -50,10 +54,21 @@ bool is_contact(const Element& el) {
 }
 
 // Impact-dissipated energy: the contacts' own dissipation at the end of the run.
+// (3D polygon contacts: their impact-dissipated output; friction is booked apart.)
 double impact_energy(const Model& model) {
   double sum = 0.0;
-  for (const auto& el : model.elements)
+  for (const auto& el : model.elements) {
     if (is_contact(*el)) sum += el->output(5);
+    if (dynamic_cast<const PolygonContact*>(el.get())) sum += el->output(10);
+  }
+  return sum;
+}
+
+// Friction-dissipated energy of the 3D polygon contacts; nullopt when the model has none.
+std::optional<double> friction_energy(const Model& model) {
+  std::optional<double> sum;
+  for (const auto& el : model.elements)
+    if (dynamic_cast<const PolygonContact*>(el.get())) sum = sum.value_or(0.0) + el->output(9);
   return sum;
 }
 
@@ -170,7 +185,10 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     structures.push_back(js);
   }
   j["structures"] = structures;
-  if (!config.structures3d.empty()) j["buildings_3d"] = summary3d_json(job);  // report3d.cpp
+  if (!config.structures3d.empty()) {
+    j["buildings_3d"] = summary3d_json(job);  // report3d.cpp
+    j["contacts_3d"] = contacts3d_json(job);
+  }
 
   json elements = json::array();
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
@@ -191,12 +209,13 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
 
   const EnergyBalance& en = r.energy;
   const double impacts = impact_energy(model);
+  const std::optional<double> friction = friction_energy(model);
   j["energy"] = {{"input_J", en.input},
                  {"kinetic_J", en.kinetic},
                  {"elastic_J", en.elastic},
                  {"viscous_J", en.viscous},
                  {"hysteretic_J", en.hysteretic},
-                 {"isolator_hysteretic_J", en.hysteretic - impacts},
+                 {"isolator_hysteretic_J", en.hysteretic - impacts - friction.value_or(0.0)},
                  {"impact_dissipated_J", impacts},
                  {"balance_error_J", en.error},
                  {"relative_error", en.relative_error},
@@ -204,7 +223,9 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                  {"note",
                   "each term integrated from its power with the trapezoidal rule in "
                   "time; relative_error = |input - sum| / input at the end; hysteretic = "
-                  "isolator_hysteretic + impact_dissipated"}};
+                  "isolator_hysteretic + impact_dissipated (+ friction_dissipated in 3D "
+                  "pounding)"}};
+  if (friction) j["energy"]["friction_dissipated_J"] = *friction;
   if (unobstructed) {
     // The main building is structure 0 in both runs, with the same DOF and story numbering.
     const AnalysisResult& u = unobstructed->job.analysis;
@@ -378,11 +399,21 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
       out << '\n';
     }
   }
-  std::snprintf(line, sizeof line,
-                "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
-                "viscous %.4g kJ, balance error %.2e\n",
-                r.energy.input / 1e3, (r.energy.hysteretic - impact_energy(model)) / 1e3,
-                impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
+  if (const std::optional<double> friction = friction_energy(model)) {
+    std::snprintf(line, sizeof line,
+                  "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
+                  "friction %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
+                  r.energy.input / 1e3,
+                  (r.energy.hysteretic - impact_energy(model) - *friction) / 1e3,
+                  impact_energy(model) / 1e3, *friction / 1e3, r.energy.viscous / 1e3,
+                  r.energy.relative_error);
+  } else {
+    std::snprintf(line, sizeof line,
+                  "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
+                  "viscous %.4g kJ, balance error %.2e\n",
+                  r.energy.input / 1e3, (r.energy.hysteretic - impact_energy(model)) / 1e3,
+                  impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
+  }
   out << line;
   std::snprintf(line, sizeof line,
                 "Steps: %ld accepted, %ld rejected, %ld Newton iterations, step %.3g..%.3g s, "

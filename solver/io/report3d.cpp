@@ -9,6 +9,7 @@
 
 #include "solver/core/constants.h"
 #include "solver/core/modes.h"
+#include "solver/elements/polygon_contact.h"
 #include "solver/io/report.h"
 #include "solver/structures/building3d.h"
 
@@ -145,6 +146,62 @@ nlohmann::json summary3d_json(const JobResult& job) {
   return buildings;
 }
 
+nlohmann::json contacts3d_json(const JobResult& job) {
+  using nlohmann::json;
+  const Model& model = job.model;
+  const AnalysisResult& r = job.analysis;
+  json out = json::array();
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const auto* c = dynamic_cast<const PolygonContact*>(model.elements[e].get());
+    if (!c) continue;
+    const std::string& label = c->label();
+    const auto bar = label.find('|');
+    json jc = {{"label", label}, {"a", label.substr(0, bar)}, {"b", label.substr(bar + 1)}};
+    const std::vector<Peak>& p = r.element_outputs[e];
+    jc["impacts"] = c->impacts();
+    const double first = e < job.first_impact_time.size() ? job.first_impact_time[e] : -1.0;
+    jc["first_impact_time_s"] = first >= 0 ? json(first) : json(nullptr);
+    jc["normal_force"] = peak_json(p[0], "N");
+    jc["tangential_force"] = peak_json(p[1], "N");
+    jc["area"] = peak_json(p[2], "m2");
+    jc["indentation"] = peak_json(p[3], "m");
+    jc["impact_velocity"] = peak_json(p[5], "m/s");
+    jc["time_in_stick_s"] = c->output(7);
+    jc["time_in_slip_s"] = c->output(8);
+    jc["friction_dissipated_J"] = c->output(9);
+    jc["impact_dissipated_J"] = c->output(10);
+    out.push_back(jc);
+  }
+  return out;
+}
+
+void print_contacts3d(std::ostream& out, const JobResult& job) {
+  const nlohmann::json j = contacts3d_json(job);
+  if (j.empty()) return;
+  out << "Contacts (3D pounding)\n";
+  char line[320];
+  for (const auto& c : j) {
+    if (c["impacts"].get<int>() == 0 && c["normal_force"]["value"].get<double>() == 0.0) {
+      std::snprintf(line, sizeof line, "  %-34s no contact\n",
+                    c["label"].get<std::string>().c_str());
+      out << line;
+      continue;
+    }
+    std::snprintf(
+        line, sizeof line,
+        "  %-34s %3d impacts, first at %.3f s, F_N %.4g kN, F_T %.4g kN, area %.3g m2, "
+        "delta_N %.2f mm, v_imp %.3f m/s, stick %.3f s, slip %.3f s, friction %.4g kJ\n",
+        c["label"].get<std::string>().c_str(), c["impacts"].get<int>(),
+        c["first_impact_time_s"].is_null() ? -1.0 : c["first_impact_time_s"].get<double>(),
+        c["normal_force"]["value"].get<double>() / 1e3,
+        c["tangential_force"]["value"].get<double>() / 1e3, c["area"]["value"].get<double>(),
+        1e3 * c["indentation"]["value"].get<double>(), c["impact_velocity"]["value"].get<double>(),
+        c["time_in_stick_s"].get<double>(), c["time_in_slip_s"].get<double>(),
+        c["friction_dissipated_J"].get<double>() / 1e3);
+    out << line;
+  }
+}
+
 void print_summary3d(std::ostream& out, const JobResult& job) {
   const nlohmann::json j = summary3d_json(job);
   char line[256];
@@ -190,6 +247,7 @@ void print_summary3d(std::ostream& out, const JobResult& job) {
                   b["bearings"].size(), 100 * d, f / 1e3);
     out << line;
   }
+  print_contacts3d(out, job);
 }
 
 }  // namespace isopound

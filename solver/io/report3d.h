@@ -19,6 +19,9 @@ nlohmann::json summary3d_json(const JobResult& job);
 // The grid's corner columns among a storey's column labels "A1".."D4": the extreme letters and
 // numbers (A1, D1, A4, D4); empty when a label is not a grid label (letter + number).
 std::vector<std::string> corner_column_labels(const std::vector<std::string>& labels);
+// "contacts_3d": per polygon contact pair, impacts, first-impact time, peaks of F_N, F_T, area,
+// δ_N and impact velocity, time in stick and slip, friction- and impact-dissipated energy.
+nlohmann::json contacts3d_json(const JobResult& job);
 // The console summary of 3D buildings (after the ground-motion line).
 void print_summary3d(std::ostream& out, const JobResult& job);
 // `isopound modes` for 3D buildings: fixed-base and isolated (bearings at K_post and at K_el)

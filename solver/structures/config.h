@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/elements/polygon_contact.h"
 #include "solver/excitation/ground_motion.h"
 #include "solver/materials/impact_law.h"
 
@@ -119,7 +120,10 @@ struct AnalysisConfig {
   // contact period pi sqrt(m_eff / k_tangent); before a contact, at most the time of impact.
   // Both in fixed stepping too (the fixed dt is then an upper bound).
   double steps_per_contact = 100.0;
-  bool locate_events = true;       // cut steps at contact onset / separation / phase change
+  bool locate_events = true;  // cut steps at contact onset / separation / phase change
+  // Stop the analysis at this time, s (0: at the record's end plus extra_time). For comparing
+  // runs over a window (e.g. up to shortly after the first impacts, THEORY §12).
+  double t_end = 0.0;
   double newton_tolerance = 1e-9;  // relative residual, see newmark.h
   int max_iterations = 25;
 };
@@ -146,6 +150,19 @@ struct ModelConfig {
   // 3D structures (`structures:` in the model file); when not empty, `building` and
   // `neighbours` are unused. Include solver/structures/config3d.h to use them.
   std::vector<Building3DConfig> structures3d;
+  // 3D pounding (`contact:` in the model file): the law of every polygon contact pair, found
+  // automatically between floors of different structures at equal elevation and between moat
+  // walls and the base slab they surround (solver/structures/pounding3d.h).
+  struct Contact3D {
+    PolygonContactConfig law;
+    // Option: a 2D impact law along the normal with δ_N as the penetration (its masses are set
+    // per pair from the two bodies); false: the area law k_N A_c + c_N δ̇_N.
+    bool use_impact_law = false;
+    ImpactLawConfig impact_law;
+    double elevation_tolerance = 0.01;  // m: two floors closer in elevation than this meet
+    // m: pairs farther apart at rest than this cannot meet and get no contact element.
+    double search_distance = 2.0;
+  } contact3d;
   std::vector<NeighbourConfig> neighbours;
   GroundMotionConfig ground_motion;
   AnalysisConfig analysis;

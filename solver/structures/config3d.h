@@ -3,6 +3,7 @@
 // own frame, placed in the model's plan frame by (position, rotation).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,29 @@ enum class ColumnCoupling {
   kFull,    // R diag(k_1, k_2) R^T: the full rotated stiffness
 };
 
+// Moat walls around the base slab of an isolated building (issue 16 item 3): one straight wall
+// per side, parallel to the side of the slab's bounding box in the building frame, at the side's
+// gap, extending `extension` beyond the slab at each end. Rigid and immovable; the wall's mass
+// (mass_per_length x its length) enters only the contact's m_eff.
+struct MoatWalls3DConfig {
+  enum Side { kEast, kWest, kNorth, kSouth };  // +x, -x, +y, -y of the building frame
+  static constexpr std::array<const char*, 4> kSideNames = {"east", "west", "north", "south"};
+  std::array<bool, 4> present{};                  // no side: no walls
+  std::array<double, 4> gap{0.2, 0.2, 0.2, 0.2};  // m, clear distance at rest
+  double thickness = 1.0;                         // m
+  double height = 1.0;                            // m (drawing only)
+  double extension = 1.0;                         // m beyond the slab at each end
+  double mass_per_length = 5000.0;                // kg/m, backfill included
+  bool any() const { return present[0] || present[1] || present[2] || present[3]; }
+};
+
+// How a building was placed next to another (`adjacent:`), kept for reports and checks.
+struct Adjacency3DConfig {
+  std::string to;    // the other structure's name ("": placed by position)
+  int side = 0;      // MoatWalls3DConfig::Side of `to` on which this building stands
+  double gap = 0.0;  // m, declared clear distance
+};
+
 struct Building3DConfig {
   std::string name = "building";
   Vec2 position;          // m: where the building frame's origin sits in the model's plan frame
@@ -83,6 +107,8 @@ struct Building3DConfig {
   Damping3DConfig damping;
   EccentricPolarMoment polar_moment_rule = EccentricPolarMoment::kThesis;
   ColumnCoupling column_coupling = ColumnCoupling::kThesis;
+  MoatWalls3DConfig walls;  // isolated only
+  Adjacency3DConfig adjacent;
 };
 
 }  // namespace isopound

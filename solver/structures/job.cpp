@@ -11,7 +11,9 @@
 #include "solver/structures/building2d.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
+#include "solver/structures/contact_log.h"
 #include "solver/structures/pounding2d.h"
+#include "solver/structures/pounding3d.h"
 
 namespace isopound {
 
@@ -41,6 +43,7 @@ Model build_model(const ModelConfig& config) {
   if (!config.structures3d.empty()) {
     Model model;
     for (const Building3DConfig& b : config.structures3d) add_building3d(model, b);
+    add_pounding3d(model, config);
     return model;
   }
   Model model = make_model(config.building);
@@ -108,7 +111,7 @@ void check_step_against_record(const AnalysisConfig& analysis, const GroundMotio
 }
 
 JobResult run_job(const ModelConfig& config, HistorySink* history_sink,
-                  std::function<void(double, double)> progress) {
+                  std::function<void(double, double)> progress, const std::string& event_log) {
   JobResult job;
   job.motion = load_ground_motion(config.ground_motion, !config.structures3d.empty());
   check_step_against_record(config.analysis, job.motion);
@@ -117,7 +120,11 @@ JobResult run_job(const ModelConfig& config, HistorySink* history_sink,
   RunOptions options = run_options(config);
   options.history_sink = history_sink;
   options.progress = std::move(progress);
+  ContactEventLog log(job.model, event_log);
+  if (!log.empty()) options.observer = &log;
   job.analysis = run_analysis(job.model, job.motion, options);
+  log.close();
+  job.first_impact_time = log.first_impact_times(job.model);
   return job;
 }
 

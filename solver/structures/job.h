@@ -28,13 +28,18 @@ struct JobResult {
   GroundMotion motion;
   GroundMotionPeaks motion_peaks;
   AnalysisResult analysis;
+  // Per model element: the time of its first counted impact (s), −1 if none or not a polygon
+  // contact (3D pounding; the 2D contacts report theirs in their outputs).
+  std::vector<double> first_impact_time;
 };
 
 // Loads, assembles and runs. Throws RecordError, std::invalid_argument or AnalysisError.
 // `history_sink` receives the history rows (else they stay in the result); `progress` see
 // RunOptions.
+// `event_log`: where contact_events.csv goes for a model with polygon contacts ("" = nowhere).
 JobResult run_job(const ModelConfig& config, HistorySink* history_sink = nullptr,
-                  std::function<void(double, double)> progress = {});
+                  std::function<void(double, double)> progress = {},
+                  const std::string& event_log = "");
 
 // A contact of the pounding model and how far its gap closes in the unobstructed run.
 struct ContactGap {

@@ -1,0 +1,64 @@
+// contact_events.csv: written with fprintf while the analysis runs (no allocation per row).
+#include "solver/structures/contact_log.h"
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include "solver/elements/polygon_contact.h"
+
+namespace isopound {
+
+const char* ContactEventLog::header() {
+  return "time [s],pair,event,in_contact,slipping,area [m2],indentation [m],normal_force [N],"
+         "tangential_force [N],x_C [m],y_C [m],n_x [-],n_y [-]";
+}
+
+ContactEventLog::ContactEventLog(const Model& model, const std::string& path) : path_(path) {
+  for (std::size_t e = 0; e < model.elements.size(); ++e)
+    if (const auto* c = dynamic_cast<const PolygonContact*>(model.elements[e].get()))
+      contacts_.push_back({static_cast<int>(e), c});
+  if (path.empty() || contacts_.empty()) return;
+  file_ = std::fopen(path.c_str(), "w");
+  if (!file_) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  std::fprintf(file_, "%s\n", header());
+}
+
+ContactEventLog::~ContactEventLog() {
+  if (file_) std::fclose(file_);
+}
+
+void ContactEventLog::after_step(double t, const Model&) {
+  for (Watched& w : contacts_) {
+    const ContactSnapshot s = w.contact->snapshot();
+    const int impacts = w.contact->impacts();
+    if (impacts > w.impacts && w.first_impact < 0) w.first_impact = t;
+    w.impacts = impacts;
+    if (!s.in_contact && !w.was_in_contact) continue;
+    const char* event = !w.was_in_contact ? "onset" : s.in_contact ? "contact" : "separation";
+    w.was_in_contact = s.in_contact;
+    if (!file_) continue;
+    const bool on = s.in_contact;
+    std::fprintf(file_, "%.10g,%s,%s,%d,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
+                 w.contact->label().c_str(), event, on ? 1 : 0, on && s.slipping ? 1 : 0,
+                 on ? s.area : 0.0, on ? s.indentation : 0.0, on ? s.normal_force : 0.0,
+                 on ? s.tangential_force : 0.0, s.p_WC.x, s.p_WC.y, s.n_AB.x, s.n_AB.y);
+    ++rows_;
+  }
+}
+
+void ContactEventLog::close() {
+  if (!file_) return;
+  const bool failed = std::ferror(file_) != 0;
+  const bool close_failed = std::fclose(file_) != 0;
+  file_ = nullptr;
+  if (failed || close_failed) throw std::runtime_error("cannot write " + path_);
+}
+
+std::vector<double> ContactEventLog::first_impact_times(const Model& model) const {
+  std::vector<double> out(model.elements.size(), -1.0);
+  for (const Watched& w : contacts_) out[static_cast<std::size_t>(w.element)] = w.first_impact;
+  return out;
+}
+
+}  // namespace isopound

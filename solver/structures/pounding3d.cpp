@@ -1,0 +1,207 @@
+// Site bodies, pair search and contact assembly of 3D pounding (see pounding3d.h).
+#include "solver/structures/pounding3d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "geometry/overlap.h"
+#include "solver/elements/polygon_contact.h"
+#include "solver/structures/building3d.h"
+
+namespace isopound {
+
+namespace {
+
+ConvexPolygon polygon_of(const std::vector<Vec2>& v) {
+  return ConvexPolygon(std::span<const Vec2>(v.data(), v.size()));
+}
+
+std::vector<Vec2> placed(const Building3DConfig& b, const std::vector<Vec2>& plan_B) {
+  std::vector<Vec2> w;
+  for (const Vec2& p : plan_B) w.push_back(to_plan(b, p));
+  return w;
+}
+
+int find_dof(const Model& model, const std::string& label) {
+  if (label.empty()) return -1;
+  for (int i = 0; i < model.size(); ++i)
+    if (model.dofs[i].label == label) return i;
+  throw std::logic_error("3D pounding: no DOF labelled '" + label + "'");
+}
+
+}  // namespace
+
+std::vector<Vec2> moat_wall_outline(const Building3DConfig& b, int side) {
+  const MoatWalls3DConfig& w = b.walls;
+  Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  Vec2 hi{-lo.x, -lo.y};
+  for (const Vec2& p : b.base.plan) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  const double g = w.gap[side], t = w.thickness, e = w.extension;
+  double x0, x1, y0, y1;
+  switch (side) {
+    case MoatWalls3DConfig::kEast:
+      x0 = hi.x + g, x1 = x0 + t, y0 = lo.y - e, y1 = hi.y + e;
+      break;
+    case MoatWalls3DConfig::kWest:
+      x1 = lo.x - g, x0 = x1 - t, y0 = lo.y - e, y1 = hi.y + e;
+      break;
+    case MoatWalls3DConfig::kNorth:
+      y0 = hi.y + g, y1 = y0 + t, x0 = lo.x - e, x1 = hi.x + e;
+      break;
+    default:
+      y1 = lo.y - g, y0 = y1 - t, x0 = lo.x - e, x1 = hi.x + e;
+      break;
+  }
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+std::vector<SiteBody> site_bodies(const ModelConfig& config) {
+  std::vector<SiteBody> out;
+  for (std::size_t i = 0; i < config.structures3d.size(); ++i) {
+    const Building3DConfig& b = config.structures3d[i];
+    const auto add_slab = [&](const std::string& level, double z, const Diaphragm3DConfig& d) {
+      const std::string prefix = b.name + "/" + level;
+      out.push_back(SiteBody{.structure = b.name,
+                             .level = level,
+                             .role = "slab",
+                             .elevation = z,
+                             .height = 0.0,
+                             .plan_W = polygon_of(placed(b, d.plan)),
+                             .p_WO = {0.0, 0.0},
+                             .dof_label_u = prefix + " (x)",
+                             .dof_label_v = prefix + " (y)",
+                             .dof_label_theta = prefix + " (theta)",
+                             .mass = d.mass,
+                             .building = static_cast<int>(i),
+                             .wall_side = -1});
+    };
+    double z = 0.0;
+    if (b.isolated) add_slab("base", 0.0, b.base);
+    for (std::size_t k = 0; k < b.storeys.size(); ++k) {
+      z += b.storeys[k].height;
+      add_slab("floor " + std::to_string(k + 1), z, b.storeys[k].floor);
+    }
+    if (!b.isolated) continue;
+    for (int side = 0; side < 4; ++side) {
+      if (!b.walls.present[side]) continue;
+      const std::vector<Vec2> outline = moat_wall_outline(b, side);
+      const double length = side <= MoatWalls3DConfig::kWest ? outline[2].y - outline[0].y
+                                                             : outline[1].x - outline[0].x;
+      SiteBody w{.structure = std::string("wall ") + MoatWalls3DConfig::kSideNames[side],
+                 .level = "wall",
+                 .role = "wall",
+                 .elevation = 0.0,
+                 .height = b.walls.height,
+                 .plan_W = polygon_of(placed(b, outline)),
+                 .p_WO = {0.0, 0.0},
+                 .dof_label_u = "",
+                 .dof_label_v = "",
+                 .dof_label_theta = "",
+                 .mass = b.walls.mass_per_length * length,
+                 .building = static_cast<int>(i),
+                 .wall_side = side};
+      if (config.structures3d.size() > 1) w.structure = b.name + " " + w.structure;
+      out.push_back(std::move(w));
+    }
+  }
+  return out;
+}
+
+std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
+                                           const ModelConfig::Contact3D& contact) {
+  std::vector<ContactPair3D> pairs;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+      const SiteBody& a = bodies[i];
+      const SiteBody& b = bodies[j];
+      const bool a_wall = a.role == "wall", b_wall = b.role == "wall";
+      if (a_wall && b_wall) continue;
+      if (a_wall || b_wall) {
+        const SiteBody& wall = a_wall ? a : b;
+        const SiteBody& slab = a_wall ? b : a;
+        // A wall meets the base slab it surrounds (walls of other buildings: their slabs too,
+        // when at the base level and near enough).
+        if (std::abs(slab.elevation - wall.elevation) > contact.elevation_tolerance) continue;
+      } else {
+        if (a.structure == b.structure) continue;
+        if (std::abs(a.elevation - b.elevation) > contact.elevation_tolerance) continue;
+      }
+      // Cheap rejection: bounding boxes farther apart than the search distance.
+      const double d = contact.search_distance;
+      const Vec2 amin = a.plan_W.box_min(), amax = a.plan_W.box_max();
+      const Vec2 bmin = b.plan_W.box_min(), bmax = b.plan_W.box_max();
+      if (amin.x - bmax.x > d || bmin.x - amax.x > d || amin.y - bmax.y > d || bmin.y - amax.y > d)
+        continue;
+      const Separation sep = separation_of(a.plan_W, b.plan_W);
+      if (sep.distance > d) continue;
+      // The slab is body A (walls always B), so n_AB points from the building into the wall.
+      ContactPair3D p;
+      p.a = static_cast<int>(b_wall || !a_wall ? i : j);
+      p.b = static_cast<int>(p.a == static_cast<int>(i) ? j : i);
+      p.label = bodies[p.a].label() + "|" + bodies[p.b].label();
+      p.separation = sep.distance;
+      pairs.push_back(std::move(p));
+    }
+  }
+  return pairs;
+}
+
+void add_pounding3d(Model& model, const ModelConfig& config) {
+  const std::vector<SiteBody> bodies = site_bodies(config);
+  for (const ContactPair3D& pair : contact_pairs3d(bodies, config.contact3d)) {
+    const auto body = [&](const SiteBody& s) {
+      return PolygonBody{find_dof(model, s.dof_label_u),
+                         find_dof(model, s.dof_label_v),
+                         find_dof(model, s.dof_label_theta),
+                         s.p_WO,
+                         s.plan_W,
+                         s.mass};
+    };
+    PolygonContactConfig law = config.contact3d.law;
+    law.steps_per_contact = config.analysis.steps_per_contact;
+    if (config.contact3d.use_impact_law) {
+      ImpactLawConfig c = config.contact3d.impact_law;
+      c.mass_1 = bodies[pair.a].mass;
+      c.mass_2 = bodies[pair.b].mass;
+      law.normal_law = make_impact_law(c);
+    }
+    model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(bodies[pair.a]),
+                                                              body(bodies[pair.b]), law));
+  }
+}
+
+std::vector<WallClosing> wall_closings(const ModelConfig& config) {
+  std::vector<WallClosing> out;
+  const std::vector<SiteBody> bodies = site_bodies(config);
+  for (const ContactPair3D& pair : contact_pairs3d(bodies, config.contact3d)) {
+    const SiteBody& slab = bodies[pair.a];
+    const SiteBody& wall = bodies[pair.b];
+    if (wall.role != "wall") continue;
+    const Building3DConfig& b = config.structures3d[wall.building];
+    // Outward normal of the side in plan: the building frame's axis turned by its rotation.
+    static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    const Vec2 a = kAxis[wall.wall_side];
+    const double c = std::cos(b.rotation), s = std::sin(b.rotation);
+    const Vec2 n{c * a.x - s * a.y, s * a.x + c * a.y};
+    double face = -std::numeric_limits<double>::infinity();
+    for (const Vec2& p : slab.plan_W.vertices()) face = std::max(face, dot(n, p));
+    WallClosing w;
+    w.label = pair.label;
+    w.gap = b.walls.gap[wall.wall_side];
+    w.dof_labels = {slab.dof_label_u, slab.dof_label_v, slab.dof_label_theta};
+    for (const Vec2& p : slab.plan_W.vertices()) {
+      w.offset.push_back(dot(n, p) - face);
+      // n · (u − yθ, v + xθ) = n_x u + n_y v + (x n_y − y n_x) θ
+      w.coefficients.push_back({n.x, n.y, p.x * n.y - p.y * n.x});
+    }
+    out.push_back(std::move(w));
+  }
+  return out;
+}
+
+}  // namespace isopound

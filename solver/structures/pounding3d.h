@@ -1,0 +1,69 @@
+// 3D pounding set-up (THEORY §6, issue 16): the site's polygon bodies at rest (floors, base slabs,
+// moat walls) and the automatic pair search that turns every pair able to meet into a
+// PolygonContact. Pairs: floors of different structures at equal elevation, walls with the base
+// slab they surround; n_AB points from body A (the first named) into body B.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polygon.h"
+#include "solver/core/model.h"
+#include "solver/structures/config.h"
+#include "solver/structures/config3d.h"
+
+namespace isopound {
+
+// One polygon body at rest, in the model's plan frame W (SI).
+struct SiteBody {
+  std::string structure;   // "building", "east-neighbour", "wall east"
+  std::string level;       // "base", "floor 1", ..., "wall"
+  std::string role;        // "slab" | "wall"
+  double elevation = 0.0;  // m: a slab's level above the ground (base slab 0); a wall's base 0
+  double height = 0.0;     // m: a wall's height; a slab 0
+  ConvexPolygon plan_W;    // outline at rest
+  Vec2 p_WO;               // DOF origin at rest (every 3D DOF sits at the plan origin)
+  // Prefixes of the DOF labels and history columns, "building/floor 1 (x)"; "" for a fixed body.
+  std::string dof_label_u, dof_label_v, dof_label_theta;
+  double mass = 0.0;   // kg: the floor's mass, or the wall's (enters m_eff only)
+  int building = -1;   // index into ModelConfig::structures3d (a wall: the one it surrounds)
+  int wall_side = -1;  // MoatWalls3DConfig::Side of a wall, else -1
+  std::string label() const { return role == "wall" ? structure : structure + "/" + level; }
+};
+
+// Every slab (base slabs and floors, bottom to top per structure) and every moat wall.
+std::vector<SiteBody> site_bodies(const ModelConfig& config);
+
+// A wall's outline in the building frame (before the building's placement).
+std::vector<Vec2> moat_wall_outline(const Building3DConfig& building, int side);
+
+// A pair of bodies that may meet: indices into site_bodies(); label "A|B".
+struct ContactPair3D {
+  int a = -1, b = -1;
+  std::string label;
+  double separation = 0.0;  // m, signed distance at rest (> 0 apart, < 0 overlapping)
+};
+
+// Floors of different structures with |Δz| <= elevation_tolerance and walls with the base slab
+// of their building, kept when their rest separation is below search_distance.
+std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
+                                           const ModelConfig::Contact3D& contact);
+
+// Adds a PolygonContact per pair (the model must hold the structures' DOFs already).
+void add_pounding3d(Model& model, const ModelConfig& config);
+
+// For the unobstructed comparison: per moat wall, the coordinates whose peaks give the critical
+// gap (the gap below which the wall is hit): for each slab vertex, its displacement along the
+// wall's outward normal, and the vertex's offset from the wall face's rest position minus the gap.
+struct WallClosing {
+  std::string label;  // the contact's label, "building/base|wall east"
+  double gap = 0.0;   // m as modelled
+  // vertex k of the slab: its closing = offset[k] + n · (u − yθ, v + xθ) at the vertex.
+  std::vector<double> offset;                       // m, <= 0
+  std::vector<std::array<double, 3>> coefficients;  // on (u, v, θ) of the base slab
+  std::array<std::string, 3> dof_labels;
+};
+std::vector<WallClosing> wall_closings(const ModelConfig& config);
+
+}  // namespace isopound
