@@ -419,7 +419,8 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
 }
 
 double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
-                       const GroundMotionPeaks& ground) {
+                       const GroundMotionPeaks& ground,
+                       const std::vector<double>* first_impact_times) {
   switch (r.kind) {
     case OutputSelector::Kind::kEnergy: {
       const EnergyBalance& e = result.energy;
@@ -471,7 +472,11 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
         double first = std::numeric_limits<double>::quiet_NaN();
         for (std::size_t j = 0; j < r.indices.size(); ++j) {
           const Peak& in_contact = result.element_outputs[r.indices[j]][r.element_outputs[j]];
-          if (in_contact.value > 0.0 && !(in_contact.time >= first)) first = in_contact.time;
+          const std::size_t e = static_cast<std::size_t>(r.indices[j]);
+          const double t = first_impact_times
+                               ? (e < first_impact_times->size() ? (*first_impact_times)[e] : -1.0)
+                               : (in_contact.value > 0.0 ? in_contact.time : -1.0);
+          if (t >= 0.0 && !(t >= first)) first = t;
         }
         return first;
       }

@@ -79,7 +79,11 @@ struct ResolvedOutput {
 // Throws std::invalid_argument when the model has no such level, story, element or output.
 ResolvedOutput resolve_output(const OutputSelector& selector, const Model& model);
 
+// `first_impact_times`: per element, the time of its first counted impact or -1 (the run's
+// contact log, ContactEventLog, as summary.json's first_impact_time_s); without it,
+// first_impact_time is the first accepted step in contact (one step after the located onset).
 double evaluate_output(const ResolvedOutput& output, const AnalysisResult& result,
-                       const GroundMotionPeaks& ground);
+                       const GroundMotionPeaks& ground,
+                       const std::vector<double>* first_impact_times = nullptr);
 
 }  // namespace isopound

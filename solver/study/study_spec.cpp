@@ -12,6 +12,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 
@@ -325,12 +326,21 @@ class StudyReader {
     if (!(intervals < static_cast<double>(kMaxAxisValues)))
       step.fail("the range has more than " + std::to_string(kMaxAxisValues) + " values");
     const auto count = static_cast<std::int64_t>(std::floor(intervals + 1e-9)) + 1;
-    const std::string unit = si_unit_of(a.dimension);
+    std::string unit = si_unit_of(a.dimension);
+    // Angles written in degrees are written back in degrees ("135 deg"), so that a case reads
+    // exactly the angle a model file with that value gives (pounding amplifies a 1e-12 rad
+    // difference to visible ones); their level is still the SI value, in rad.
+    double scale = 1.0;
+    if (const std::string written = from.string();
+        written.ends_with("deg") || written.ends_with("\xC2\xB0")) {
+      scale = 180.0 / std::numbers::pi;
+      unit = "deg";
+    }
     std::vector<Level> levels;
     for (std::int64_t i = 0; i < count; ++i) {
       // %.12g drops the last bits of a + i h, so 1 cm + 3 x 0.05 cm is written 0.0115 m.
       char number[40];
-      std::snprintf(number, sizeof number, "%.12g", a.si + static_cast<double>(i) * h.si);
+      std::snprintf(number, sizeof number, "%.12g", (a.si + static_cast<double>(i) * h.si) * scale);
       const std::string text =
           unit.empty() ? std::string(number) : std::string(number) + " " + unit;
       levels.push_back(value_level(range, path, YAML::Node(text)));
