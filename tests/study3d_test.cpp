@@ -366,6 +366,34 @@ TEST(Study3DSpec, QwEccentricityAndPointValuedAxesReachTheBuilding) {
   EXPECT_DOUBLE_EQ(builder.input_of(0).config.structures3d[0].storeys[0].floor.eccentricity.x, 0.0);
 }
 
+TEST(Study3DSpec, NeighbourStoreysAxisReachesTheAdjacentBuilding) {
+  std::string model = test::read_file(config("3d-thesis-building.yaml"));
+  model = model.substr(model.find("structures:"));
+  model = model.substr(0, model.find("ground_motion:")) +
+          "  - name: east-neighbour\n"
+          "    isolated: false\n"
+          "    adjacent: {to: building, side: east, gap: 5 cm}\n"
+          "    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}\n"
+          "    columns: {section: [35 cm, 35 cm], E: 30 GPa, nu: 0.2}\n"
+          "    storeys: {count: 2, height: 3.2 m, mass: 340 t, roof_mass: 250 t}\n"
+          "    damping: {type: rayleigh, ratios: [5 %, 5 %], modes: [1, 2]}\n";
+  test::write_file(scratch() / "neighbour.yaml", model);
+  const Study s = load_study_text(
+      "neighbour-study.yaml",
+      "model: neighbour.yaml\nset:\n  " + std::string(kPulsePair) +
+          "\naxes:\n  - {name: neighbour_storeys, path: \"structures[1].storeys.count\", values: "
+          "[2, 3, 4]}\noutputs: [\"building/floor 1|east-neighbour*.impacts\", "
+          "sum:contacts.impacts]\n");
+  const CaseBuilder builder(s);
+  for (int k = 0; k < 3; ++k) {
+    const ModelConfig c = builder.input_of(k).config;
+    ASSERT_EQ(c.structures3d.size(), 2u);
+    EXPECT_EQ(c.structures3d[1].storeys.size(), static_cast<std::size_t>(k + 2));
+  }
+  const ValidatedStudy v = validate_study(s, 1);  // the pair patterns resolve on every case
+  EXPECT_EQ(v.distinct_models, 3);
+}
+
 TEST(Study3DSpec, RecordPairsSetLAndTOfTheModel) {
   ISOPOUND_REQUIRE_RECORDS();
   const std::string records = test::records_dir().string();
