@@ -637,6 +637,24 @@ TEST(Study3DSweep, DoublySymmetricBuildingGivesTheSamePeaksAtEveryAngle) {
 namespace isopound {
 namespace {
 
+TEST(Study3DConfigs, Xy5StudiesValidate) {
+  ISOPOUND_REQUIRE_RECORDS();
+  const fs::path studies = test::source_dir() / "configs" / "studies";
+  const auto r = test::run_isopound("sweep '" + (studies / "3d-xy5-angles.yaml").string() +
+                                    "' --dry-run -j 2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("73 runs (73 distinct models, 73 ground motions)"), std::string::npos)
+      << r.output;
+  // The larger ones: read and checked without building their 1533 and 219 models.
+  const Study gaps = load_study_file((studies / "3d-xy5-angles-gaps.yaml").string());
+  EXPECT_EQ(gaps.case_count(), 73 * 21);
+  ASSERT_EQ(gaps.axes.size(), 3u);  // record, angle, gap
+  EXPECT_DOUBLE_EQ(gaps.axes[2].levels.front().si, 0.15);
+  EXPECT_DOUBLE_EQ(gaps.axes[2].levels.back().si, 0.65);
+  const Study tolerance = load_study_file((studies / "3d-xy5-angles-tolerance.yaml").string());
+  EXPECT_EQ(tolerance.case_count(), 3 * 73);
+}
+
 TEST(Study3DConfigs, TutorialStudyValidates) {
   const auto r = test::run_isopound(
       "sweep '" + (test::source_dir() / "configs" / "studies" / "tutorial-3d.yaml").string() +
