@@ -366,6 +366,19 @@ TEST(Study3DSpec, QwEccentricityAndPointValuedAxesReachTheBuilding) {
   EXPECT_DOUBLE_EQ(builder.input_of(0).config.structures3d[0].storeys[0].floor.eccentricity.x, 0.0);
 }
 
+TEST(Study3DSpec, AnUnquotedListIndexInAFlowMapGetsAHint) {
+  try {
+    load_study_text("flow.yaml",
+                    "model: " + config("3d-thesis-building.yaml") +
+                        "\naxes:\n  - {path: structures[0].bearing.QW, values: [5 %]}\n");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("flow.yaml:3:"), std::string::npos) << what;
+    EXPECT_NE(what.find("quote a path with a list index"), std::string::npos) << what;
+  }
+}
+
 TEST(Study3DSpec, NeighbourStoreysAxisReachesTheAdjacentBuilding) {
   std::string model = test::read_file(config("3d-thesis-building.yaml"));
   model = model.substr(model.find("structures:"));
@@ -651,6 +664,10 @@ TEST(Study3DConfigs, Xy5StudiesValidate) {
   ASSERT_EQ(gaps.axes.size(), 3u);  // record, angle, gap
   EXPECT_DOUBLE_EQ(gaps.axes[2].levels.front().si, 0.15);
   EXPECT_DOUBLE_EQ(gaps.axes[2].levels.back().si, 0.65);
+  const CaseBuilder builder(gaps);  // angle 5 deg, gap 17.5 cm: on every side
+  const ModelConfig c = builder.input_of(21 + 1).config;
+  for (const double gap : c.structures3d[0].walls.gap) EXPECT_DOUBLE_EQ(gap, 0.175);
+  EXPECT_EQ(c.ground_motion.angle, parse_quantity("5 deg").si);
   const Study tolerance = load_study_file((studies / "3d-xy5-angles-tolerance.yaml").string());
   EXPECT_EQ(tolerance.case_count(), 3 * 73);
 }

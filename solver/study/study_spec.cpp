@@ -43,7 +43,17 @@ std::string read_text(const std::string& path) {
 }
 
 YAML::Node parse_document(const std::string& text, const std::string& path) {
-  return parse_single_document(text, path, "a study or model file");
+  try {
+    return parse_single_document(text, path, "a study or model file");
+  } catch (const InputError& e) {
+    // The commonest cause in a study: {path: structures[0].x, ...}, where YAML's flow style
+    // reads the bare '[' as the start of a list.
+    if (e.detail().find("flow") == std::string::npos) throw;
+    throw InputError(e.file(), e.line(), e.column(), e.key(),
+                     e.detail() +
+                         " (inside {...}, quote a path with a list index: path: "
+                         "\"structures[0].bearing.QW\")");
+  }
 }
 
 std::string canonical_text(const YAML::Node& value) {
