@@ -96,8 +96,9 @@ void PolygonContact::gather(const Eigen::VectorXd& x, Vec6& q) const {
 //   place A, B by (u, v, θ); overlap → A_c, C, n, t, w, δ_N; status = geometry (or C's if frozen)
 //   δ̇_N = (v_A(C) − v_B(C))·n;  F_N = k_N A_c + 2ξ√(k_N A_c/δ_N m_eff) δ̇_N, clamped at 0
 //   Δu_T = (d_B(C) − d_A(C))·t, d = material displacement from the committed placement
-//   s_tr = s_C + k_T Δu_T; slip if |s_tr| > μ F_N (μ = μ_s from stick, μ_k from slip):
-//     s = μ_k F_N sign(s_tr), F_T = s; else stick: s = s_tr, F_T = s + c_T u̇_T
+//   s_tr = s_C + k_T Δu_T, f_tr = s_tr + c_T u̇_T; slip if |f_tr| > μ F_N (μ = μ_s from
+//     stick, μ_k from slip): F_T = μ_k F_N sign(f_tr), s = sign(s_tr) min(|s_tr|, μ_k F_N);
+//     else stick: s = s_tr, F_T = f_tr
 //   on B: F = F_N n − F_T t at C; on A: −F; generalized forces with (C − O') × F.
 void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, State& out) const {
   const State& C = committed_;
@@ -108,7 +109,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.area = out.indentation = out.width = 0.0;
   out.p_WC = out.n_AB = out.t_AB = Vec2{};
   out.rate_n = out.rate_t = out.raw_normal = out.elastic_normal = 0.0;
-  out.normal = out.tangential = out.spring = out.spring_trial = 0.0;
+  out.normal = out.tangential = out.spring = out.spring_trial = out.tangential_trial = 0.0;
   out.friction_dissipated = C.friction_dissipated;
   out.phase = C.phase;
 
@@ -182,32 +183,31 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     const double s_c = out.started ? 0.0 : C.spring;
     const double s_tr = s_c + cfg_.k_tangential * du_t;
     const double cap = cfg_.mu_kinetic * std::max(out.normal, 0.0);
-    if (freeze) {
-      // Status kept; a slip only lowers the spring (never above the elastic trial).
-      out.spring = out.slipping ? sign_or_zero(s_tr) * std::min(std::abs(s_tr), cap) : s_tr;
-    } else {
+    // Coulomb bounds the whole tangential force, dashpot included (THEORY-notes, "3D friction"):
+    // the trial force f_tr = s_tr + c_T u̇_T decides stick or slip. Slipping, |F_T| = μ_k F_N
+    // along f_tr and the spring is only ever lowered, s = sign(s_tr) min(|s_tr|, μ_k F_N); the
+    // rest, F_T − s, has the sign of u̇_T, so it dissipates. Slip → stick is continuous.
+    const double f_tr = s_tr + c_tangential_ * out.rate_t;
+    if (!freeze) {
       const double mu = out.slipping ? cfg_.mu_kinetic : cfg_.mu_static;
-      out.slipping = std::abs(s_tr) > mu * std::max(out.normal, 0.0);
-      out.spring = out.slipping ? sign_or_zero(s_tr) * cap : s_tr;
+      out.slipping = std::abs(f_tr) > mu * std::max(out.normal, 0.0);
+    }
+    if (out.slipping) {
+      out.spring = sign_or_zero(s_tr) * std::min(std::abs(s_tr), cap);
+      out.tangential = sign_or_zero(f_tr) * cap;
+    } else {
+      out.spring = s_tr;
+      out.tangential = f_tr;
     }
     out.spring_trial = s_tr;
-    // Coulomb bounds the whole tangential force, dashpot included: |F_T| ≤ μ F_N (μ_s in stick,
-    // μ_k in slip). The dashpot d = c_T u̇_T is saturated smoothly at the room B left on its side,
-    // d = B tanh(c_T u̇_T / B) (a clamp's kink makes Newton cycle): in a steady slip (u̇_T along
-    // s) B = 0 and F_T = s = μ_k F_N exactly; d keeps the sign of u̇_T and |d| ≤ c_T |u̇_T|, so it
-    // only dissipates, and stick ↔ slip changes F_T only by the μ_s/μ_k bound (THEORY-notes).
-    {
-      const double mu = out.slipping ? cfg_.mu_kinetic : cfg_.mu_static;
-      const double bound = mu * std::max(out.normal, 0.0);
-      const double d = c_tangential_ * out.rate_t;
-      const double room =
-          d > 0 ? std::max(bound - out.spring, 0.0) : std::max(bound + out.spring, 0.0);
-      out.tangential = out.spring + (room > 0 ? room * std::tanh(d / room) : 0.0);
-    }
-    // Work of the spring–slider over the step by the midpoint rule, (s_C + s)/2 · Δu_T, minus
-    // the change of s²/(2k_T): (s_C + s)(s_tr − s)/(2k_T); μ_k F_N Δu_T in a steady slip,
-    // 0 in stick.
-    out.friction_dissipated += (s_c + out.spring) * (s_tr - out.spring) / (2 * cfg_.k_tangential);
+    out.tangential_trial = f_tr;
+    // Tangential dissipation of the step: the work of F_T on the sliding, by the midpoint rule
+    // (F_T,C + F_T)/2 · Δu_T, minus the change of the spring's s²/(2k_T). Spring–slider alone
+    // this is (s_C + s)(s_tr − s)/(2k_T): μ_k F_N Δu_T in a steady slip, 0 in a dashpot-free
+    // stick; the tangential dashpot's c_T u̇_T² is counted here too (friction, not impact).
+    const double f_c = out.started ? 0.0 : C.tangential;
+    out.friction_dissipated += 0.5 * (f_c + out.tangential) * du_t -
+                               (out.spring * out.spring - s_c * s_c) / (2 * cfg_.k_tangential);
   }
 
   const Vec2 f_B = out.normal * ov.n_AB - out.tangential * ov.t_AB;  // on B
@@ -347,8 +347,8 @@ double PolygonContact::event_fraction() {
   if (f < 1.0) consider(f, C.closed ? Event::kSeparation : Event::kOnset, false);
   if (C.closed && T.closed && cfg_.friction && !C.slipping && T.slipping) {
     // Stick → slip: the force drops from μ_s F_N to μ_k F_N. Linear in the excess.
-    const double g0 = std::abs(C.spring) - cfg_.mu_static * C.normal;
-    const double g1 = std::abs(T.spring_trial) - cfg_.mu_static * T.normal;
+    const double g0 = std::abs(C.tangential) - cfg_.mu_static * C.normal;
+    const double g1 = std::abs(T.tangential_trial) - cfg_.mu_static * T.normal;
     consider(g0 >= 0 ? 0.0 : std::min(g0 / (g0 - g1), 1.0 - 1e-15), Event::kSlip, false);
   }
   // The approach → restitution switch (δ̇_N = 0) ends a step, as in the 2D contact: a kink of

@@ -135,6 +135,7 @@ class PolygonContact final : public Element {
     double normal = 0.0, tangential = 0.0;  // F_N, F_T as applied
     double spring = 0.0;                    // s, the tangential spring force after the return map
     double spring_trial = 0.0;              // s_tr, before it
+    double tangential_trial = 0.0;          // f_tr = s_tr + c_T u̇_T, the stick/slip test
     Vec6 force{};                // f_e on (u, v, θ) of A, B (restoring sign: −force on body)
     double work = 0.0;           // ∫ v·f_e dt, J (trapezoid), from the start
     double normal_energy = 0.0;  // E_N = ∫ F_el δ̇_N dt in this contact, J

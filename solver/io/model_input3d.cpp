@@ -624,7 +624,8 @@ void check_site3d(const ModelConfig& model, const InputNode& structures,
   // Neighbours close enough to meet: every floor of one within the other's height must face a
   // floor of the other (contact at mismatched levels is outside the model).
   const double reach = model.contact3d.search_distance;
-  for (std::size_t p = 0; p < model.structures3d.size(); ++p)
+  // (Later structures first: the neighbour listed after the building it stands by is blamed.)
+  for (std::size_t p = model.structures3d.size(); p-- > 0;)
     for (std::size_t q = 0; q < model.structures3d.size(); ++q) {
       if (p == q) continue;
       std::vector<const SiteBody*> mine, theirs;
@@ -658,7 +659,7 @@ void check_site3d(const ModelConfig& model, const InputNode& structures,
                "slab-to-column contact at mismatched levels is outside the model; give both "
                "equal storey heights, or place them farther apart than contact.search_distance ("
             << reach << " m)";
-        items.at(p).fail_at_key("storeys", msg.str());
+        items.at(p).required("storeys").fail(msg.str());
       }
     }
   (void)contact;

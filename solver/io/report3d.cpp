@@ -242,6 +242,7 @@ void print_summary3d(std::ostream& out, const JobResult& job) {
       if (br.contains("deformation")) d = std::max(d, br["deformation"]["value"].get<double>());
       if (br.contains("force")) f = std::max(f, br["force"]["value"].get<double>());
     }
+    if (b["bearings"].empty()) continue;  // a fixed-base building
     std::snprintf(line, sizeof line,
                   "  bearings (%zu): peak resultant deformation %.2f cm, force %.1f kN\n",
                   b["bearings"].size(), 100 * d, f / 1e3);

@@ -105,7 +105,10 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
                  .mass = b.walls.mass_per_length * length,
                  .building = static_cast<int>(i),
                  .wall_side = side};
-      if (config.structures3d.size() > 1) w.structure = b.name + " " + w.structure;
+      // Named by side alone unless several buildings have walls.
+      int walled = 0;
+      for (const Building3DConfig& other : config.structures3d) walled += other.walls.any() ? 1 : 0;
+      if (walled > 1) w.structure = b.name + " " + w.structure;
       out.push_back(std::move(w));
     }
   }
