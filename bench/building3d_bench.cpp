@@ -1,5 +1,6 @@
 // Benchmark of one 3D analysis: the eccentric validation building (configs/3d-eccentric-v30.yaml)
-// under the RSN1084 pair at 30 degrees, default adaptive settings, histories off.
+// under the RSN1084 pair at 30 degrees, default adaptive settings (and the all-modes step rule),
+// histories off.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -13,7 +14,9 @@ namespace {
 
 using namespace isopound;
 
-void BM_Eccentric3D_RSN1084Pair_Default(benchmark::State& state) {
+// state.range(0): 1 = the largest step from every mode (max_step_rule: all_modes, the rule
+// before issue 10's benchmark work), 0 = the config's default (participating modes).
+void BM_Eccentric3D_RSN1084Pair(benchmark::State& state) {
   const auto path =
       std::filesystem::path(ISOPOUND_SOURCE_DIR) / "configs" / "3d-eccentric-v30.yaml";
   ModelConfig config = load_model_file(path.string());
@@ -27,6 +30,7 @@ void BM_Eccentric3D_RSN1084Pair_Default(benchmark::State& state) {
   const RunOptions options = [&] {
     RunOptions o = run_options(config);
     o.output.histories = false;
+    if (state.range(0) == 1) o.analysis.max_step_rule = AnalysisConfig::MaxStepRule::kAllModes;
     return o;
   }();
   long steps = 0;
@@ -39,6 +43,14 @@ void BM_Eccentric3D_RSN1084Pair_Default(benchmark::State& state) {
   state.counters["steps"] = static_cast<double>(steps);
 }
 
-BENCHMARK(BM_Eccentric3D_RSN1084Pair_Default)->Unit(benchmark::kMillisecond);
+void BM_Eccentric3D_RSN1084Pair_Default(benchmark::State& state) {
+  BM_Eccentric3D_RSN1084Pair(state);
+}
+void BM_Eccentric3D_RSN1084Pair_AllModes(benchmark::State& state) {
+  BM_Eccentric3D_RSN1084Pair(state);
+}
+
+BENCHMARK(BM_Eccentric3D_RSN1084Pair_Default)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Eccentric3D_RSN1084Pair_AllModes)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -116,6 +116,10 @@ std::string divergence_message(const Model& model, const NewmarkStepper& stepper
 }  // namespace
 
 double shortest_period(Model& model) {
+  return max_step_period(model, AnalysisConfig::MaxStepRule::kAllModes, 0.0);
+}
+
+double max_step_period(Model& model, AnalysisConfig::MaxStepRule rule, double threshold) {
   const int n = model.size();
   Eigen::MatrixXd k = model.stiffness;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
@@ -124,11 +128,28 @@ double shortest_period(Model& model) {
     e->add_tangent(k, 0.0);
     e->revert();
   }
+  Modes modes;
   try {
-    return compute_modes(k, model.mass, model.influence).period.minCoeff();
+    modes = compute_modes(k, model.mass, model.influence);
   } catch (const std::invalid_argument&) {
     return 0.0;  // a mechanism at rest (e.g. only contacts hold a DOF): no period rule
   }
+  if (rule == AnalysisConfig::MaxStepRule::kAllModes) return modes.period.minCoeff();
+  // Effective mass ratio of each mode along each ground direction that moves mass; a mode
+  // counts if either ratio reaches the threshold. The ratios of one direction sum to 1, so
+  // at least one mode (the first of them) always counts.
+  Eigen::VectorXd ratio = modes.effective_mass_ratio;
+  if (model.influence_y.size() == n) {
+    const Eigen::VectorXd m_iota_y = model.mass * model.influence_y;
+    const double total_y = model.influence_y.dot(m_iota_y);
+    if (total_y > 0)
+      ratio = ratio.cwiseMax((modes.shape.transpose() * m_iota_y).cwiseAbs2() / total_y);
+  }
+  double period = 0.0;
+  for (int j = 0; j < n; ++j)
+    if (ratio[j] >= threshold && (period == 0.0 || modes.period[j] < period))
+      period = modes.period[j];
+  return period > 0.0 ? period : modes.period.minCoeff();
 }
 
 AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunOptions& options) {
@@ -174,8 +195,10 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   // Analysis interval H divides the record interval so that H <= the largest step.
   const bool adaptive = cfg.stepping == AnalysisConfig::Stepping::kAdaptive;
   double max_step = cfg.dt;
-  if (adaptive && max_step <= 0 && cfg.steps_per_period > 0)
-    max_step = shortest_period(model) / cfg.steps_per_period;
+  if (adaptive && max_step <= 0 && cfg.steps_per_period > 0) {
+    res.stats.step_period = max_step_period(model, cfg.max_step_rule, cfg.participation_threshold);
+    max_step = res.stats.step_period / cfg.steps_per_period;
+  }
   int per_sample = 1;
   if (max_step > 0)
     per_sample = std::max(1, static_cast<int>(std::ceil(motion.dt / max_step - 1e-9)));
@@ -250,14 +273,30 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   double initial_energy = -1.0;  // kinetic + recoverable energy of the initial conditions
   double stored_at_start = 0.0;  // element work is counted from 0, their energy from here
 
+  // The probes' terms in one contiguous list (the record runs every step): probe p's x terms
+  // are [probe_begin[2p], probe_begin[2p + 1]), its y terms [probe_begin[2p + 1], probe_begin[2p
+  // + 2]).
+  std::vector<int> probe_dof;
+  std::vector<double> probe_coefficient;
+  std::vector<std::size_t> probe_begin{0};
+  for (const PlanProbe& probe : model.probes)
+    for (const auto* terms : {&probe.x_terms, &probe.y_terms}) {
+      for (const auto& [dof, c] : *terms) {
+        probe_dof.push_back(dof);
+        probe_coefficient.push_back(c);
+      }
+      probe_begin.push_back(probe_dof.size());
+    }
+
   auto record = [&](double t, const GroundAcceleration& ag, double h) {
     const Eigen::VectorXd& u = stepper.u();
     const Eigen::VectorXd& v = stepper.v();
     const Eigen::VectorXd& a = stepper.a();
+    for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);  // absolute acceleration
     for (int i = 0; i < n; ++i) {
       update(res.displacement[i], u[i], t);
       update(res.velocity[i], v[i], t);
-      update(res.absolute_acceleration[i], a[i] + rigid(i, ag), t);
+      update(res.absolute_acceleration[i], work[i], t);
     }
     for (std::size_t s = 0; s < res.stories.size(); ++s) {
       const Story& st = res.stories[s];
@@ -265,7 +304,6 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       update(res.drift[s], drift, t);
       update(res.drift_ratio[s], drift / st.height, t);
     }
-    for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);
     inertia.noalias() = model.mass * work;
     for (std::size_t s = 0; s < above_story.size(); ++s) {
       double shear = 0.0;
@@ -295,13 +333,17 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
     for (std::size_t p = 0; p < model.probes.size(); ++p) {
       const PlanProbe& probe = model.probes[p];
-      const bool abs_acc = probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration;
-      const auto sum = [&](const std::vector<std::pair<int, double>>& terms) {
+      // work holds the absolute accelerations until the energy terms below.
+      const double* value =
+          probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration ? work.data() : u.data();
+      const auto sum = [&](std::size_t begin, std::size_t end) {
         double x = 0.0;
-        for (const auto& [dof, c] : terms) x += c * (abs_acc ? a[dof] + rigid(dof, ag) : u[dof]);
+        for (std::size_t k = begin; k < end; ++k) x += probe_coefficient[k] * value[probe_dof[k]];
         return x;
       };
-      const double x = sum(probe.x_terms), y = sum(probe.y_terms), r = std::sqrt(x * x + y * y);
+      const double x = sum(probe_begin[2 * p], probe_begin[2 * p + 1]);
+      const double y = sum(probe_begin[2 * p + 1], probe_begin[2 * p + 2]);
+      const double r = std::sqrt(x * x + y * y);
       ProbePeaks& pk = res.probes[p];
       update(pk.x, x, t);
       update(pk.y, y, t);
@@ -317,8 +359,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     // Energy.
     double p_in = -v.dot(m_iota.col(0)) * ag.x;
     if (ag.y != 0.0) p_in -= v.dot(m_iota.col(1)) * ag.y;
-    work.noalias() = model.damping * v;
-    const double p_visc = v.dot(work);
+    const double p_visc = v.dot(damping_force);  // C v, computed for the base shear
     double p_elem = 0.0, stored = 0.0;
     for (const auto& el : model.elements) {
       p_elem += el->power(v);

@@ -60,8 +60,9 @@ struct RunStatistics {
   long restarts = 0;  // restarts from equilibrium after a force jump at an event
   double min_step = 0.0, max_step = 0.0;  // s
   double wall_seconds = 0.0;
-  double duration = 0.0;  // s of analysed time
-  double interval = 0.0;  // s, the analysis interval H (the record interval / an integer)
+  double duration = 0.0;     // s of analysed time
+  double interval = 0.0;     // s, the analysis interval H (the record interval / an integer)
+  double step_period = 0.0;  // s, T_min of the largest-step rule (0: not used or a mechanism)
 };
 
 struct History {
@@ -149,6 +150,12 @@ std::vector<Story> stories_of(const Model& model);
 // Shortest undamped period of the model linearised at rest (element tangents at zero), s;
 // 0 if the model is a mechanism at rest.
 double shortest_period(Model& model);
+
+// The period that sets the largest adaptive step (T_min of AnalysisConfig::dt): the shortest
+// period of the model linearised at rest among the modes `rule` counts; with kParticipating,
+// only modes whose effective modal mass ratio along x or along y (each column of the influence
+// matrix that moves any mass) is >= threshold. 0 if the model is a mechanism at rest.
+double max_step_period(Model& model, AnalysisConfig::MaxStepRule rule, double threshold);
 
 // Runs the analysis (from rest unless initial conditions are given). Throws AnalysisError if it
 // diverges.

@@ -19,7 +19,8 @@ BearingLink::BearingLink(std::string label, DiaphragmDofs dofs, Eigen::Vector2d 
       dofs_(dofs),
       p_OB_(p_OB),
       law_(std::move(law)),
-      planar_(dofs.uy < 0 && dofs.theta < 0) {
+      planar_(dofs.uy < 0 && dofs.theta < 0),
+      consecutive_(dofs.ux >= 0 && dofs.uy == dofs.ux + 1 && dofs.theta == dofs.ux + 2) {
   if (!law_) throw std::invalid_argument("bearing '" + label_ + "': no law");
   if (dofs.ux < 0 && dofs.uy < 0 && dofs.theta < 0)
     throw std::invalid_argument("bearing '" + label_ + "': no diaphragm DOF");
@@ -56,6 +57,10 @@ void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const 
   Eigen::Matrix<double, 2, 3> T;
   T << 1.0, 0.0, -p_OB_.y(), 0.0, 1.0, p_OB_.x();
   const Eigen::Matrix3d kt = T.transpose() * k * T;
+  if (consecutive_) {  // (ux, uy, theta) = (i, i + 1, i + 2): one block, no index tests
+    K.block<3, 3>(dofs_.ux, dofs_.ux) += kt;
+    return;
+  }
   for (int a = 0; a < 3; ++a) {
     if (dof[a] < 0) continue;
     for (int b = 0; b < 3; ++b)

@@ -57,6 +57,7 @@ class BearingLink final : public Element {
   Eigen::Vector2d p_OB_;
   std::unique_ptr<BiaxialMaterial> law_;
   bool planar_;
+  bool consecutive_;  // the three DOFs are present and consecutive (a 3D diaphragm)
 };
 
 }  // namespace isopound

@@ -439,11 +439,14 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
   return g;
 }
 
-AnalysisConfig read_analysis(const InputNode& node) {
+// `three_d`: the model has 3D structures, whose largest step follows the participating modes by
+// default (a 2D building keeps every mode: its steps and results are those of before).
+AnalysisConfig read_analysis(const InputNode& node, bool three_d) {
   using Stepping = AnalysisConfig::Stepping;
-  node.expect_keys({"stepping", "dt", "steps_per_period", "tolerance", "max_halvings",
-                    "newton_tolerance", "max_iterations", "steps_per_contact", "locate_events",
-                    "t_end"});
+  using Rule = AnalysisConfig::MaxStepRule;
+  node.expect_keys({"stepping", "dt", "steps_per_period", "max_step_rule",
+                    "participation_threshold", "tolerance", "max_halvings", "newton_tolerance",
+                    "max_iterations", "steps_per_contact", "locate_events", "t_end"});
   AnalysisConfig a;
   node.read_choice<Stepping>(
       "stepping", {{"adaptive", Stepping::kAdaptive}, {"fixed", Stepping::kFixed}}, a.stepping);
@@ -451,8 +454,20 @@ AnalysisConfig read_analysis(const InputNode& node) {
     a.dt = node.required("dt").quantity(dim::kTime, Bound::kPositive);
   } else {
     node.read_quantity("dt", dim::kTime, Bound::kNonNegative, a.dt);
-    if (a.dt == 0.0)  // 0: the step follows the shortest period
+    if (a.dt == 0.0) {  // 0: the step follows the shortest period
       node.read_number("steps_per_period", Bound::kPositive, a.steps_per_period);
+      a.max_step_rule = three_d ? Rule::kParticipating : Rule::kAllModes;
+      node.read_choice<Rule>(
+          "max_step_rule",
+          {{"participating", Rule::kParticipating}, {"all_modes", Rule::kAllModes}},
+          a.max_step_rule);
+      if (a.max_step_rule == Rule::kParticipating) {
+        node.read_number("participation_threshold", Bound::kPositive, a.participation_threshold);
+        if (const auto t = node.find("participation_threshold");
+            t && !(a.participation_threshold < 1.0))
+          t->fail("must be below 1 (a fraction of the total mass, e.g. 1e-5)");
+      }
+    }
     node.read_number("tolerance", Bound::kPositive, a.tolerance);
     node.read_number("steps_per_contact", Bound::kPositive, a.steps_per_contact);
   }
@@ -523,7 +538,7 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
       if (const auto n = top.find(key)) return *n;
       return top.empty_child(key);
     };
-    model.analysis = read_analysis(section("analysis"));
+    model.analysis = read_analysis(section("analysis"), !model.structures3d.empty());
     model.output = read_output(section("output"));
     // Structure names label every output: two equal ones would mix their peaks.
     std::vector<std::string> names{model.building.name};

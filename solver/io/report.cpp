@@ -35,6 +35,10 @@ const char* stepping_name(AnalysisConfig::Stepping s) {
   return s == AnalysisConfig::Stepping::kAdaptive ? "adaptive" : "fixed";
 }
 
+const char* max_step_rule_name(AnalysisConfig::MaxStepRule rule) {
+  return rule == AnalysisConfig::MaxStepRule::kParticipating ? "participating" : "all_modes";
+}
+
 const char* isolator_name(IsolatorConfig::Model m) {
   switch (m) {
     case IsolatorConfig::Model::kLinear:
@@ -132,6 +136,8 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       {"dt_s", a.dt},
       {"analysis_interval_s", r.stats.interval},
       {"steps_per_period", a.steps_per_period},
+      {"max_step_rule", max_step_rule_name(a.max_step_rule)},
+      {"max_step_period_s", r.stats.step_period},
       {"tolerance", a.tolerance},
       {"max_halvings", a.max_halvings},
       {"newton_tolerance", a.newton_tolerance},
@@ -349,6 +355,15 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
       r.stats.interval > 0 ? static_cast<int>(std::lround(job.motion.dt / r.stats.interval)) : 0,
       config.output.interval > 0 ? config.output.interval : job.motion.dt);
   out << line;
+  if (r.stats.step_period > 0) {
+    std::snprintf(line, sizeof line,
+                  "  largest step from T_min %.4g s / %g steps per period (%s modes)\n",
+                  r.stats.step_period, config.analysis.steps_per_period,
+                  config.analysis.max_step_rule == AnalysisConfig::MaxStepRule::kParticipating
+                      ? "participating"
+                      : "all");
+    out << line;
+  }
   if (!config.structures3d.empty()) {  // report3d.cpp
     print_summary3d(out, job);
   } else {

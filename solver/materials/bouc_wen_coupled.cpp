@@ -89,9 +89,13 @@ Matrix2d CoupledBoucWenMaterial::phi_jacobian(const Vector2d& z, const Vector2d&
 
 double CoupledBoucWenMaterial::phi_parts(const Vector2d& z, const Vector2d& c, const Vector2d& w,
                                          Matrix2d& M, Matrix2d& J) const {
+  return phi_parts(z, z.norm(), c, w, M, J);
+}
+
+double CoupledBoucWenMaterial::phi_parts(const Vector2d& z, double r, const Vector2d& c,
+                                         const Vector2d& w, Matrix2d& M, Matrix2d& J) const {
   // phi_matrix and phi_jacobian with one |z| and one |z|^(n-2) (the inner loop's cost).
   M = p_.A * Matrix2d::Identity();
-  const double r = z.norm();
   if (r == 0.0) {
     J.setZero();
     return r;
@@ -175,7 +179,8 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
     const double max_slope = w_norm * p_.n * bound_pow_n / z_bound;
     const double h_bound = max_slope > 0 ? kMaxSubincrementStiffness / max_slope : 1e300;
     const double h_sub = std::max(h_bound, L / kMaxSubincrements);
-    const long full = static_cast<long>(std::floor(L / h_sub));
+    // L / h_sub >= 0: truncation is floor (without libm's call).
+    const long full = static_cast<long>(L / h_sub);
     const double remainder = L - static_cast<double>(full) * h_sub;
     // dh_sub/dx matters only when full sub-increments are taken.
     RowVector2d dh_sub_dx = RowVector2d::Zero();
@@ -187,7 +192,7 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
     }
 
     Matrix2d M0, J0;
-    phi_parts(z, c, w, M0, J0);
+    phi_parts(z, z_norm, c, w, M0, J0);
     Vector2d phi0 = M0 * e;
     // One trapezoidal step of size h (gradient dh_dx) from (z, phi0, M0, J0), updating S.
     // For gamma >= 0 the exact z never leaves the disc |z| <= z_sat (on its rim

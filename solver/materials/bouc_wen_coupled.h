@@ -56,6 +56,9 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   // Both at once, w = c o e; returns |z|.
   double phi_parts(const Eigen::Vector2d& z, const Eigen::Vector2d& c, const Eigen::Vector2d& w,
                    Eigen::Matrix2d& M, Eigen::Matrix2d& J) const;
+  // The same with r = |z| already known.
+  double phi_parts(const Eigen::Vector2d& z, double r, const Eigen::Vector2d& c,
+                   const Eigen::Vector2d& w, Eigen::Matrix2d& M, Eigen::Matrix2d& J) const;
   // One trapezoidal sub-increment of size h >= 0 along e from z (Phi(z) = phi_z).
   Eigen::Vector2d trapezoid_step(const Eigen::Vector2d& z, const Eigen::Vector2d& phi_z, double h,
                                  const Eigen::Vector2d& e, const Eigen::Vector2d& c) const;

@@ -109,10 +109,18 @@ struct AnalysisConfig {
   enum class Stepping { kAdaptive, kFixed };
   Stepping stepping = Stepping::kAdaptive;
   // Fixed: the step. Adaptive: the largest step; 0 = min(record interval,
-  // T_min / steps_per_period) with T_min the shortest period of the initial linearised model.
-  // Steps always divide the record interval, so samples are never skipped.
+  // T_min / steps_per_period) with T_min the shortest period of the initial linearised model
+  // among the modes max_step_rule counts. Steps always divide the record interval, so samples
+  // are never skipped.
   double dt = 0.0;
   double steps_per_period = 25.0;
+  // Which modes set T_min: every mode, or only those whose effective modal mass ratio along x
+  // or y, Gamma^2 / (iota^T M iota), is at least participation_threshold (THEORY-notes.md,
+  // "Largest step"). The model input defaults to kParticipating for 3D structures and keeps
+  // kAllModes for 2D buildings (their steps and results unchanged).
+  enum class MaxStepRule { kAllModes, kParticipating };
+  MaxStepRule max_step_rule = MaxStepRule::kAllModes;
+  double participation_threshold = 1e-5;
   // Adaptive: local error tolerance (see THEORY-notes.md, "Time integration").
   double tolerance = 1e-4;  // 1e-3 until issue 8: see bench/RESULTS.md, "Convergence battery"
   int max_halvings = 16;    // smallest adaptive step = dt / 2^max_halvings
