@@ -33,8 +33,10 @@ nlohmann::json peaks(const ProbePeaks& p, const char* unit) {
           {"resultant", peak_json(p.resultant, unit)}};
 }
 
+}  // namespace
+
 // Grid corner columns: the extreme letters and numbers among labels like "A1", "D4".
-std::vector<std::string> corner_labels(const std::vector<std::string>& labels) {
+std::vector<std::string> corner_column_labels(const std::vector<std::string>& labels) {
   char lo = 'Z' + 1, hi = 'A' - 1;
   int nlo = 1 << 30, nhi = -1;
   for (const std::string& l : labels) {
@@ -49,8 +51,6 @@ std::vector<std::string> corner_labels(const std::vector<std::string>& labels) {
   return {lo + std::to_string(nlo), hi + std::to_string(nlo), lo + std::to_string(nhi),
           hi + std::to_string(nhi)};
 }
-
-}  // namespace
 
 nlohmann::json summary3d_json(const JobResult& job) {
   using nlohmann::json;
@@ -124,7 +124,7 @@ nlohmann::json summary3d_json(const JobResult& job) {
       }
       st["envelope_over_columns"] = env;
       json corners = json::object();
-      for (const std::string& label : corner_labels(labels))
+      for (const std::string& label : corner_column_labels(labels))
         for (const json& c : st["columns"])
           if (c["label"] == label) corners[label] = c;
       st["corner_columns"] = corners;

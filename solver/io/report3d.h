@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "solver/structures/config3d.h"
 #include "solver/structures/job.h"
@@ -14,6 +16,9 @@ namespace isopound {
 // displacement and absolute acceleration x, y, resultant), storeys (each column's drift x, y,
 // resultant and ratio; the envelope over columns; the corner columns), bearings (peaks).
 nlohmann::json summary3d_json(const JobResult& job);
+// The grid's corner columns among a storey's column labels "A1".."D4": the extreme letters and
+// numbers (A1, D1, A4, D4); empty when a label is not a grid label (letter + number).
+std::vector<std::string> corner_column_labels(const std::vector<std::string>& labels);
 // "contacts_3d": per polygon contact pair, impacts, first-impact time, peaks of F_N, F_T, area,
 // δ_N and impact velocity, time in stick and slip, friction- and impact-dissipated energy.
 nlohmann::json contacts3d_json(const JobResult& job);

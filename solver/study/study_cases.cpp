@@ -22,9 +22,20 @@ const ParameterPath& record_path() {
   static const ParameterPath path = parse_parameter_path("ground_motion.record");
   return path;
 }
-const ParameterPath& pulse_path() {
-  static const ParameterPath path = parse_parameter_path("ground_motion.pulse");
-  return path;
+
+// Where a ground motion's record and pulse sit: the single component, and L and T of a pair.
+struct ComponentPaths {
+  ParameterPath record, pulse;
+};
+const std::vector<ComponentPaths>& component_paths() {
+  static const std::vector<ComponentPaths> paths = [] {
+    std::vector<ComponentPaths> out;
+    for (const char* c : {"ground_motion", "ground_motion.L", "ground_motion.T"})
+      out.push_back({parse_parameter_path(std::string(c) + ".record"),
+                     parse_parameter_path(std::string(c) + ".pulse")});
+    return out;
+  }();
+  return paths;
 }
 
 int line_of(const YAML::Mark& m) {
@@ -103,9 +114,11 @@ CaseInput CaseBuilder::input_of(std::int64_t case_id) const {
   for (const Override* o : overrides) {
     try {
       apply_override(tree, o->path, o->value);
-      // A record replaces the built-in pulse and the other way round.
-      if (o->path == record_path()) apply_override(tree, pulse_path(), YAML::Node());
-      if (is_prefix_of(pulse_path(), o->path)) apply_override(tree, record_path(), YAML::Node());
+      // A record replaces the built-in pulse and the other way round (of a pair's L or T too).
+      for (const ComponentPaths& c : component_paths()) {
+        if (o->path == c.record) apply_override(tree, c.pulse, YAML::Node());
+        if (is_prefix_of(c.pulse, o->path)) apply_override(tree, c.record, YAML::Node());
+      }
     } catch (const std::invalid_argument& e) {
       o->where.fail(e.what() + in_case());
     }
@@ -133,7 +146,9 @@ CaseInput CaseBuilder::input_of(std::int64_t case_id) const {
                      e.detail() + in_case());
   }
   input.config.output.histories = false;
-  input.motion_key = emit_flow(child_of(tree, "ground_motion"));
+  // A 3D model reads the same ground_motion subtree as a pair (two components).
+  input.motion_key =
+      (input.config.structures3d.empty() ? "" : "3D ") + emit_flow(child_of(tree, "ground_motion"));
   return input;
 }
 
@@ -237,13 +252,16 @@ ValidatedStudy validate_study(const Study& study, int threads) {
     const CaseInput input = builder.input_of(c);
     try {
       auto prepared = std::make_shared<PreparedMotion>();
-      prepared->motion = load_ground_motion(input.config.ground_motion);
+      // A 3D model takes two components (a record pair, or the built-in pulse pair).
+      prepared->motion =
+          load_ground_motion(input.config.ground_motion, !input.config.structures3d.empty());
       prepared->peaks = peaks_of(prepared->motion);
       out.motions.emplace(key, std::move(prepared));
     } catch (const std::exception& e) {
       const std::string what = std::string("cannot read the ground motion: ") + e.what() +
                                " (case " + std::to_string(c) + ": " + builder.describe(c) + ")";
-      if (const Override* o = builder.override_for(c, record_path())) o->where.fail(what);
+      for (const ComponentPaths& component : component_paths())
+        if (const Override* o = builder.override_for(c, component.record)) o->where.fail(what);
       const YAML::Mark mark = locate(study.model, record_path());
       if (mark.is_null()) study.model_where->fail(what);
       throw InputError(study.model_file, line_of(mark), column_of(mark), "ground_motion.record",

@@ -7,7 +7,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+
+#include "solver/elements/polygon_contact.h"
+#include "solver/io/report3d.h"
 
 namespace isopound {
 namespace {
@@ -15,6 +19,18 @@ namespace {
 constexpr std::string_view kLevelQuantities[] = {"displacement", "velocity",
                                                  "absolute_acceleration", "residual_displacement"};
 constexpr std::string_view kStoryQuantities[] = {"drift", "drift_ratio", "shear"};
+// 3D buildings: peaks at plan points (x, y, resultant) and of the diaphragm DOFs.
+constexpr std::string_view kLevelQuantities3D[] = {"displacement",
+                                                   "absolute_acceleration",
+                                                   "displacement_x",
+                                                   "displacement_y",
+                                                   "absolute_acceleration_x",
+                                                   "absolute_acceleration_y",
+                                                   "residual_displacement",
+                                                   "u",
+                                                   "v",
+                                                   "theta"};
+constexpr std::string_view kStoryQuantities3D[] = {"drift", "drift_x", "drift_y", "drift_ratio"};
 constexpr std::string_view kEnergyTerms[] = {"input",          "kinetic",           "elastic",
                                              "viscous",        "hysteretic",        "error",
                                              "relative_error", "max_relative_error"};
@@ -58,6 +74,143 @@ bool matches(const std::string& pattern, const std::string& label) {
          fnmatch(pattern.c_str(), label.c_str(), 0) == 0;
 }
 
+[[noreturn]] void fail_selector(const OutputSelector& s, const std::string& what) {
+  throw std::invalid_argument("peak '" + s.text + "': " + what);
+}
+
+// A 3D building: every level has the DOFs (u, v, theta).
+bool is_3d(const Model& model, const StructureInfo& b) {
+  if (b.level_dofs.empty()) return false;
+  const int d = b.level_dofs.front();
+  return d + 2 < model.size() && model.dofs[d + 2].kind == DofKind::kRotation;
+}
+
+// "building/floor 2" from the level's DOF label "building/floor 2 (x)".
+std::string level_name(const Model& model, int dof) {
+  const std::string& label = model.dofs[dof].label;
+  const std::size_t paren = label.rfind(" (");
+  return paren == std::string::npos ? label : label.substr(0, paren);
+}
+
+// The levels (indices into level_dofs) a level selector names.
+std::vector<int> selected_levels(const OutputSelector& s, const StructureInfo& b) {
+  const int first_floor = b.has_base ? 1 : 0;
+  const int levels = static_cast<int>(b.level_dofs.size());
+  if (s.where == "base") {
+    if (!b.has_base) fail_selector(s, "the building has a fixed base (no base slab)");
+    return {0};
+  }
+  if (s.where == "roof") return {levels - 1};
+  std::vector<int> out;
+  if (s.where == "floors" || s.where == "levels") {
+    for (int l = s.where == "floors" ? first_floor : 0; l < levels; ++l) out.push_back(l);
+    return out;
+  }
+  const int floor = numbered(s.where, "floor");
+  if (first_floor + floor - 1 >= levels)
+    fail_selector(s, "the building has " + std::to_string(levels - first_floor) + " floors");
+  return {first_floor + floor - 1};
+}
+
+// The stories (1-based) a story selector names; `count` stories in the building.
+std::vector<int> selected_stories(const OutputSelector& s, int count) {
+  std::vector<int> out;
+  if (s.where == "stories") {
+    for (int k = 1; k <= count; ++k) out.push_back(k);
+    return out;
+  }
+  const int story = numbered(s.where, "story");
+  if (story > count) fail_selector(s, "the building has " + std::to_string(count) + " stories");
+  return {story};
+}
+
+// 3D levels: the diaphragm DOFs (u, v, theta) or the plan probes at the chosen points.
+void resolve_level3d(const OutputSelector& s, const Model& model, const StructureInfo& b,
+                     ResolvedOutput& r) {
+  const std::string& q = s.quantity;
+  const std::vector<int> levels = selected_levels(s, b);
+  if (q == "u" || q == "v" || q == "theta") {
+    r.quantity = 0;  // displacement peaks of the DOFs
+    const int offset = q == "u" ? 0 : q == "v" ? 1 : 2;
+    for (const int l : levels) r.indices.push_back(b.level_dofs[l] + offset);
+    return;
+  }
+  if (index_in(kLevelQuantities3D, q) < 0)
+    fail_selector(s, "the building is 3D: peaks of its levels are " + joined(kLevelQuantities3D));
+  const bool acceleration = q.starts_with("absolute_acceleration");
+  const auto wanted = acceleration ? PlanProbe::Quantity::kAbsoluteAcceleration
+                                   : PlanProbe::Quantity::kDisplacement;
+  r.at_end = q == "residual_displacement";
+  r.probe_component = q.ends_with("_x") ? 0 : q.ends_with("_y") ? 1 : 2;
+  const std::string point = s.point.empty() ? "cm" : s.point;
+  const int corner = numbered(point, "corner");
+  for (const int l : levels) {
+    const std::string prefix = level_name(model, b.level_dofs[l]) + "/";
+    int corners = 0;
+    bool found = false;
+    for (std::size_t p = 0; p < model.probes.size(); ++p) {
+      const PlanProbe& probe = model.probes[p];
+      if (probe.quantity != wanted || !probe.label.starts_with(prefix)) continue;
+      const std::string name = probe.label.substr(prefix.size());
+      const bool is_corner = name.starts_with("corner ");
+      corners += is_corner ? 1 : 0;
+      const bool take = point == "points" || (point == "cm" && name == "CM") ||
+                        (point == "corners" && is_corner) ||
+                        (corner > 0 && name == "corner " + std::to_string(corner));
+      if (!take) continue;
+      found = true;
+      r.indices.push_back(static_cast<int>(p));
+      if (r.at_end) r.end_probes.push_back(probe);
+    }
+    if (!found)
+      fail_selector(s, prefix.substr(0, prefix.size() - 1) + " has no plan point '" + point +
+                           "' (its plan has " + std::to_string(corners) + " corners)");
+  }
+}
+
+// 3D stories: the column drift probes of each storey, all, the corner columns or a pattern.
+void resolve_story3d(const OutputSelector& s, const Model& model, const StructureInfo& b,
+                     ResolvedOutput& r) {
+  const std::string& q = s.quantity;
+  if (q == "shear")
+    fail_selector(s, "storey shear of 3D buildings is not recorded (peaks of a 3D storey: " +
+                         joined(kStoryQuantities3D) + ")");
+  r.probe_component = q == "drift_x" ? 0 : q == "drift_y" ? 1 : q == "drift_ratio" ? 3 : 2;
+  const int count = static_cast<int>(b.level_dofs.size()) - (b.has_base ? 1 : 0);
+  for (const int k : selected_stories(s, count)) {
+    const std::string prefix = b.name + "/story " + std::to_string(k) + "/";
+    std::vector<std::pair<std::string, int>> columns;  // label, probe
+    for (std::size_t p = 0; p < model.probes.size(); ++p)
+      if (model.probes[p].label.starts_with(prefix))
+        columns.emplace_back(model.probes[p].label.substr(prefix.size()), static_cast<int>(p));
+    std::vector<std::string> labels;
+    for (const auto& c : columns) labels.push_back(c.first);
+    const std::vector<std::string> corners =
+        s.point == "corners" ? corner_column_labels(labels) : std::vector<std::string>{};
+    if (s.point == "corners" && corners.empty())
+      fail_selector(s, "story " + std::to_string(k) +
+                           ": corner columns need grid labels (A1, B1, ...); name columns "
+                           "with a pattern instead, e.g. story1.A*." +
+                           q);
+    bool found = false;
+    for (const auto& [label, p] : columns) {
+      const bool take =
+          s.point.empty() ||
+          (s.point == "corners" ? std::find(corners.begin(), corners.end(), label) != corners.end()
+                                : fnmatch(s.point.c_str(), label.c_str(), 0) == 0);
+      if (!take) continue;
+      found = true;
+      r.indices.push_back(p);
+    }
+    if (!found) {
+      std::string names;
+      for (const std::string& l : labels) names += (names.empty() ? "" : ", ") + l;
+      fail_selector(s, "story " + std::to_string(k) + " has no column matching '" + s.point +
+                           "' (its columns: " + (names.empty() ? "none" : names) + ")");
+    }
+  }
+}
+
 }  // namespace
 
 OutputSelector parse_output_selector(std::string_view text) {
@@ -79,6 +232,15 @@ OutputSelector parse_output_selector(std::string_view text) {
         "expected <where>.<quantity>, e.g. base.displacement, stories.drift_ratio, isolator.force");
   s.where = std::string(rest.substr(0, dot));
   s.quantity = std::string(rest.substr(dot + 1));
+  // "base.corners", "story2.A1": a level or story, then a plan point or column set (3D).
+  if (const std::size_t first = s.where.find('.'); first != std::string::npos) {
+    const std::string place = s.where.substr(0, first);
+    if (is_level_place(place) || is_story_place(place)) {
+      s.point = s.where.substr(first + 1);
+      s.where = place;
+      if (s.point.empty()) fail("empty plan point or column after '" + place + ".'");
+    }
+  }
   if (s.where == "energy") {
     s.kind = OutputSelector::Kind::kEnergy;
     if (index_in(kEnergyTerms, s.quantity) < 0) fail("energy terms are " + joined(kEnergyTerms));
@@ -87,19 +249,33 @@ OutputSelector parse_output_selector(std::string_view text) {
     if (index_in(kGroundPeaks, s.quantity) < 0) fail("ground peaks are " + joined(kGroundPeaks));
   } else if (is_level_place(s.where)) {
     s.kind = OutputSelector::Kind::kLevel;
-    if (index_in(kLevelQuantities, s.quantity) < 0)
-      fail("peaks of a level are " + joined(kLevelQuantities) +
-           (index_in(kStoryQuantities, s.quantity) >= 0
+    if (index_in(kLevelQuantities, s.quantity) < 0 && index_in(kLevelQuantities3D, s.quantity) < 0)
+      fail("peaks of a level are " + joined(kLevelQuantities) + "; of a 3D level also " +
+           joined(kLevelQuantities3D) +
+           (index_in(kStoryQuantities3D, s.quantity) >= 0
                 ? " (drifts belong to stories: story<N> or stories)"
                 : ""));
+    if (!s.point.empty()) {
+      if (s.quantity == "u" || s.quantity == "v" || s.quantity == "theta")
+        fail("u, v and theta are the level's DOFs (at the plan origin): no plan point");
+      if (s.quantity == "velocity")
+        fail("plan points have displacement and absolute_acceleration peaks, not velocity");
+      if (s.point != "cm" && s.point != "corners" && s.point != "points" &&
+          numbered(s.point, "corner") < 0)
+        fail("plan point '" + s.point + "': expected cm, corners, corner<K> or points");
+    }
   } else if (is_story_place(s.where)) {
     s.kind = OutputSelector::Kind::kStory;
-    if (index_in(kStoryQuantities, s.quantity) < 0)
-      fail("peaks of a story are " + joined(kStoryQuantities));
+    if (index_in(kStoryQuantities, s.quantity) < 0 && index_in(kStoryQuantities3D, s.quantity) < 0)
+      fail("peaks of a story are " + joined(kStoryQuantities) + "; of a 3D storey " +
+           joined(kStoryQuantities3D));
+    if (!s.point.empty() && s.quantity == "shear") fail("shear is a storey's, not a column's");
   } else {
     s.kind = OutputSelector::Kind::kElement;
   }
   if (s.sum && s.kind != OutputSelector::Kind::kElement) fail("'sum:' applies to elements only");
+  if (s.sum && s.quantity == "first_impact_time")
+    fail("first_impact_time is the earliest over the matches: no 'sum:'");
   return s;
 }
 
@@ -122,7 +298,28 @@ std::string output_unit(const OutputSelector& s) {
       {"impacts", "-"},
       {"impact_velocity", "m/s"},
       {"indentation", "m"},
-      {"dissipated_energy", "J"}};
+      {"dissipated_energy", "J"},
+      {"displacement_x", "m"},
+      {"displacement_y", "m"},
+      {"absolute_acceleration_x", "m/s2"},
+      {"absolute_acceleration_y", "m/s2"},
+      {"u", "m"},
+      {"v", "m"},
+      {"theta", "rad"},
+      {"drift_x", "m"},
+      {"drift_y", "m"},
+      {"normal_force", "N"},
+      {"tangential_force", "N"},
+      {"area", "m2"},
+      {"time_in_stick", "s"},
+      {"first_impact_time", "s"},
+      {"time_in_slip", "s"},
+      {"friction_dissipated_energy", "J"},
+      {"impact_dissipated_energy", "J"},
+      {"force_x", "N"},
+      {"force_y", "N"},
+      {"deformation_x", "m"},
+      {"deformation_y", "m"}};
   if (s.kind == OutputSelector::Kind::kEnergy)
     return s.quantity == "relative_error" || s.quantity == "max_relative_error" ? "-" : "J";
   for (const auto& [name, unit] : kUnits)
@@ -145,49 +342,52 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
       r.quantity = index_in(kGroundPeaks, s.quantity);
       return r;
     case OutputSelector::Kind::kLevel: {
-      r.quantity = index_in(kLevelQuantities, s.quantity);
       if (model.structures.empty()) fail("the model has no building");
       const StructureInfo& b = model.structures.front();
-      const int first_floor = b.has_base ? 1 : 0;
-      const int levels = static_cast<int>(b.level_dofs.size());
-      if (s.where == "base") {
-        if (!b.has_base) fail("the building has a fixed base (no base slab)");
-        r.indices = {b.level_dofs[0]};
-      } else if (s.where == "roof") {
-        r.indices = {b.level_dofs.back()};
-      } else if (s.where == "floors" || s.where == "levels") {
-        const int from = s.where == "floors" ? first_floor : 0;
-        r.indices.assign(b.level_dofs.begin() + from, b.level_dofs.end());
-      } else {
-        const int floor = numbered(s.where, "floor");
-        if (first_floor + floor - 1 >= levels)
-          fail("the building has " + std::to_string(levels - first_floor) + " floors");
-        r.indices = {b.level_dofs[first_floor + floor - 1]};
+      if (is_3d(model, b)) {
+        resolve_level3d(s, model, b, r);
+        return r;
       }
+      if (!s.point.empty())
+        fail("plan points (" + s.point + ") belong to 3D buildings; this building is 2D");
+      r.quantity = index_in(kLevelQuantities, s.quantity);
+      if (r.quantity < 0)
+        fail("'" + s.quantity + "' is a peak of 3D buildings; a 2D level has " +
+             joined(kLevelQuantities));
+      for (const int l : selected_levels(s, b)) r.indices.push_back(b.level_dofs[l]);
       return r;
     }
     case OutputSelector::Kind::kStory: {
-      r.quantity = index_in(kStoryQuantities, s.quantity);
       if (model.structures.empty()) fail("the model has no building");
       const StructureInfo& b = model.structures.front();  // its stories come first (stories_of)
-      const int count = static_cast<int>(b.level_dofs.size()) - (b.has_base ? 1 : 0);
-      if (s.where == "stories") {
-        for (int k = 0; k < count; ++k) r.indices.push_back(k);
-      } else {
-        const int story = numbered(s.where, "story");
-        if (story > count) fail("the building has " + std::to_string(count) + " stories");
-        r.indices = {story - 1};
+      if (is_3d(model, b)) {
+        resolve_story3d(s, model, b, r);
+        return r;
       }
+      if (!s.point.empty())
+        fail("columns (" + s.point + ") belong to 3D buildings; this building is 2D");
+      r.quantity = index_in(kStoryQuantities, s.quantity);
+      if (r.quantity < 0)
+        fail("'" + s.quantity + "' is a peak of 3D storeys; a 2D story has " +
+             joined(kStoryQuantities));
+      const int count = static_cast<int>(b.level_dofs.size()) - (b.has_base ? 1 : 0);
+      for (const int k : selected_stories(s, count)) r.indices.push_back(k - 1);
       return r;
     }
     case OutputSelector::Kind::kElement: {
+      r.first_time = s.quantity == "first_impact_time";
       std::vector<std::string> seen_outputs;
+      const bool all_contacts = s.where == "contacts";  // every polygon contact pair
       for (std::size_t e = 0; e < model.elements.size(); ++e) {
         const Element& element = *model.elements[e];
-        if (!matches(s.where, element.label())) continue;
+        if (all_contacts ? dynamic_cast<const PolygonContact*>(&element) == nullptr
+                         : !matches(s.where, element.label()))
+          continue;
+        // first_impact_time: when in_contact first reached 1 (its peak's time).
+        const std::string wanted = r.first_time ? "in_contact" : s.quantity;
         int found = -1;
         for (int k = 0; k < element.output_count(); ++k) {
-          if (element.output_name(k) == s.quantity) found = k;
+          if (element.output_name(k) == wanted) found = k;
           seen_outputs.push_back(element.output_name(k));
         }
         if (found < 0) continue;
@@ -198,6 +398,8 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
         std::string labels;
         for (const auto& element : model.elements)
           labels += (labels.empty() ? "" : ", ") + element->label();
+        if (seen_outputs.empty() && all_contacts)
+          fail("the model has no 3D contact pairs (walls or neighbours in `structures:`)");
         if (seen_outputs.empty())
           fail("no element matches '" + s.where +
                "' (elements: " + (labels.empty() ? "none" : labels) +
@@ -217,7 +419,8 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
 }
 
 double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
-                       const GroundMotionPeaks& ground) {
+                       const GroundMotionPeaks& ground,
+                       const std::vector<double>* first_impact_times) {
   switch (r.kind) {
     case OutputSelector::Kind::kEnergy: {
       const EnergyBalance& e = result.energy;
@@ -232,6 +435,24 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
     case OutputSelector::Kind::kLevel:
     case OutputSelector::Kind::kStory: {
       double value = 0.0;
+      if (r.at_end) {  // the resultant at the end of the plan points
+        const auto sum = [&](const std::vector<std::pair<int, double>>& terms) {
+          double x = 0.0;
+          for (const auto& [dof, c] : terms) x += c * result.final_displacement[dof];
+          return x;
+        };
+        for (const PlanProbe& p : r.end_probes)
+          value = std::max(value, std::hypot(sum(p.x_terms), sum(p.y_terms)));
+        return value;
+      }
+      if (r.probe_component >= 0) {
+        for (const int i : r.indices) {
+          const ProbePeaks& p = result.probes[i];
+          const Peak* components[] = {&p.x, &p.y, &p.resultant, &p.ratio};
+          value = std::max(value, components[r.probe_component]->value);
+        }
+        return value;
+      }
       if (r.kind == OutputSelector::Kind::kLevel && r.quantity == 3) {  // |u| at the end
         for (const int i : r.indices)
           value = std::max(value, std::abs(result.final_displacement[i]));
@@ -247,6 +468,18 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
       return value;
     }
     case OutputSelector::Kind::kElement: {
+      if (r.first_time) {  // the earliest onset over the pairs; none: an empty cell
+        double first = std::numeric_limits<double>::quiet_NaN();
+        for (std::size_t j = 0; j < r.indices.size(); ++j) {
+          const Peak& in_contact = result.element_outputs[r.indices[j]][r.element_outputs[j]];
+          const std::size_t e = static_cast<std::size_t>(r.indices[j]);
+          const double t = first_impact_times
+                               ? (e < first_impact_times->size() ? (*first_impact_times)[e] : -1.0)
+                               : (in_contact.value > 0.0 ? in_contact.time : -1.0);
+          if (t >= 0.0 && !(t >= first)) first = t;
+        }
+        return first;
+      }
       double value = r.sum ? 0.0 : -1e300;
       for (std::size_t j = 0; j < r.indices.size(); ++j) {
         const double peak = result.element_outputs[r.indices[j]][r.element_outputs[j]].value;

@@ -36,6 +36,11 @@ std::string describe(const YAML::Node& node) {
 
 }  // namespace
 
+bool is_record_path(const std::string& path_text) {
+  return path_text == "ground_motion.record" || path_text == "ground_motion.L.record" ||
+         path_text == "ground_motion.T.record";
+}
+
 ParameterPath parse_parameter_path(std::string_view text) {
   ParameterPath path;
   std::size_t i = 0;

@@ -35,6 +35,11 @@ bool is_prefix_of(const ParameterPath& prefix, const ParameterPath& path);
 // or indexes past the end of a list.
 void apply_override(YAML::Node root, const ParameterPath& path, const YAML::Node& value);
 
+// A record file of the ground motion: "ground_motion.record", or a component's of a 3D model's
+// pair, "ground_motion.L.record" / "ground_motion.T.record". Such paths are written relative to
+// the study file, and setting one drops the built-in pulse beside it (and the other way round).
+bool is_record_path(const std::string& path_text);
+
 // The position of the deepest existing node on `path` in a parsed tree (for error messages);
 // a null mark if even the first step is missing.
 YAML::Mark locate(const YAML::Node& root, const ParameterPath& path);

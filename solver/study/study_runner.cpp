@@ -19,6 +19,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "solver/structures/contact_log.h"
 #include "solver/structures/job.h"
 #include "solver/study/study_ensemble.h"
 #include "solver/study/study_hash.h"
@@ -237,12 +238,17 @@ RunRecord CaseRunner::run(std::int64_t case_id) const {
       return record;
     }
     // As run_job (job.h), with the ground motion loaded once for the whole study.
+    check_step_against_record(input.config.analysis, motion.motion);
     Model model = build_model(input.config);
-    const AnalysisResult result = run_analysis(model, motion.motion, run_options(input.config));
+    RunOptions options = run_options(input.config);
+    ContactEventLog contacts(model, "");  // first-impact times, as summary.json (no file)
+    if (!contacts.empty()) options.observer = &contacts;
+    const AnalysisResult result = run_analysis(model, motion.motion, options);
+    const std::vector<double> first_impacts = contacts.first_impact_times(model);
     for (const OutputSelector& selector : selectors_) {
       try {
         record.values.push_back(
-            evaluate_output(resolve_output(selector, model), result, motion.peaks));
+            evaluate_output(resolve_output(selector, model), result, motion.peaks, &first_impacts));
       } catch (const std::invalid_argument&) {  // an element this case does not have (validated)
         record.values.push_back(std::numeric_limits<double>::quiet_NaN());
       }

@@ -13,6 +13,9 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
 #include <set>
 
 #include "solver/io/units.h"
@@ -42,7 +45,17 @@ std::string read_text(const std::string& path) {
 }
 
 YAML::Node parse_document(const std::string& text, const std::string& path) {
-  return parse_single_document(text, path, "a study or model file");
+  try {
+    return parse_single_document(text, path, "a study or model file");
+  } catch (const InputError& e) {
+    // The commonest cause in a study: {path: structures[0].x, ...}, where YAML's flow style
+    // reads the bare '[' as the start of a list.
+    if (e.detail().find("flow") == std::string::npos) throw;
+    throw InputError(e.file(), e.line(), e.column(), e.key(),
+                     e.detail() +
+                         " (inside {...}, quote a path with a list index: path: "
+                         "\"structures[0].bearing.QW\")");
+  }
 }
 
 std::string canonical_text(const YAML::Node& value) {
@@ -201,12 +214,26 @@ class StudyReader {
     } catch (const std::invalid_argument& e) {
       where.fail(e.what());
     }
-    YAML::Node copy = YAML::Clone(value);
-    if (path.text == kRecordPath) {
-      if (!value.IsScalar() || value.Scalar().empty()) where.fail("a record must be a file path");
-      copy = YAML::Node(resolve_record(where, value.Scalar()));
-    }
+    const YAML::Node copy = with_records_resolved(where, path.text, YAML::Clone(value));
     return Override{path, copy, canonical_text(copy), where};
+  }
+
+  // The value with every record file in it (at a record path, or inside a map set at one of its
+  // ancestors, e.g. ground_motion.L: {record: ...}) resolved relative to the study file.
+  YAML::Node with_records_resolved(const InputNode& where, const std::string& path,
+                                   const YAML::Node& value) {
+    if (is_record_path(path)) {
+      if (!value.IsScalar() || value.Scalar().empty()) where.fail("a record must be a file path");
+      return YAML::Node(resolve_record(where, value.Scalar()));
+    }
+    if (!value.IsMap() || !path.starts_with("ground_motion")) return value;
+    YAML::Node out(YAML::NodeType::Map);
+    for (auto entry : value) {
+      if (!entry.first.IsScalar()) return value;  // not a model key: the model reader says so
+      out[entry.first.Scalar()] =
+          with_records_resolved(where, path + "." + entry.first.Scalar(), entry.second);
+    }
+    return out;
   }
 
   // A record path relative to the study file, checked to exist; returns the absolute path.
@@ -264,8 +291,10 @@ class StudyReader {
     level.overrides.push_back(make_override(where, path.text, value));
     if (!value.IsDefined() || value.IsNull()) {
       level.label = "none";
-    } else if (path.text == kRecordPath) {
+    } else if (is_record_path(path.text)) {
       level.label = fs::path(value.Scalar()).stem().string();
+    } else if (value.IsSequence()) {
+      level.label = canonical_text(value);  // "[0.6 m, 0 m]", a label
     } else {
       level.label = value.Scalar();
       try {
@@ -310,12 +339,21 @@ class StudyReader {
     if (!(intervals < static_cast<double>(kMaxAxisValues)))
       step.fail("the range has more than " + std::to_string(kMaxAxisValues) + " values");
     const auto count = static_cast<std::int64_t>(std::floor(intervals + 1e-9)) + 1;
-    const std::string unit = si_unit_of(a.dimension);
+    std::string unit = si_unit_of(a.dimension);
+    // Angles written in degrees are written back in degrees ("135 deg"), so that a case reads
+    // exactly the angle a model file with that value gives (pounding amplifies a 1e-12 rad
+    // difference to visible ones); their level is still the SI value, in rad.
+    double scale = 1.0;
+    if (const std::string written = from.string();
+        written.ends_with("deg") || written.ends_with("\xC2\xB0")) {
+      scale = 180.0 / std::numbers::pi;
+      unit = "deg";
+    }
     std::vector<Level> levels;
     for (std::int64_t i = 0; i < count; ++i) {
       // %.12g drops the last bits of a + i h, so 1 cm + 3 x 0.05 cm is written 0.0115 m.
       char number[40];
-      std::snprintf(number, sizeof number, "%.12g", a.si + static_cast<double>(i) * h.si);
+      std::snprintf(number, sizeof number, "%.12g", (a.si + static_cast<double>(i) * h.si) * scale);
       const std::string text =
           unit.empty() ? std::string(number) : std::string(number) + " " + unit;
       levels.push_back(value_level(range, path, YAML::Node(text)));
@@ -366,8 +404,14 @@ class StudyReader {
       if (list.empty()) values->fail("empty axis: give at least one value");
       for (const InputNode& value : list) {
         const YAML::Node& v = value.yaml();
-        if (v.IsDefined() && !v.IsNull() && !v.IsScalar())
-          value.fail("a value must be a single value (use 'levels' for named sets of overrides)");
+        // A value is a scalar, or a list of scalars such as a point [e_x, e_y].
+        bool list_of_scalars = v.IsSequence() && v.size() > 0;
+        if (v.IsSequence())
+          for (const auto& item : v) list_of_scalars = list_of_scalars && item.IsScalar();
+        if (v.IsDefined() && !v.IsNull() && !v.IsScalar() && !list_of_scalars)
+          value.fail(
+              "a value must be a single value or a list of values such as [0.6 m, 0 m] (use "
+              "'levels' for named sets of overrides)");
         axis.levels.push_back(value_level(value, path, v));
       }
     } else {
@@ -402,7 +446,15 @@ class StudyReader {
       files.emplace_back(entry, entry.string());
     } else {
       entry.expect_keys({"file", "files", "folder", "glob", "components", "scale", "format",
-                         "column", "time_column", "dt", "unit"});
+                         "column", "time_column", "dt", "unit", "L", "T", "name", "pairs", "swap"});
+      if (entry.has("L") || entry.has("T") || entry.has("pairs")) {
+        read_record_pairs(entry, levels);
+        return;
+      }
+      if (const auto swap = entry.find("swap")) swap->fail("'swap' goes with 'pairs: rsn'");
+      if (const auto name = entry.find("name"))
+        name->fail(
+            "'name' labels a record pair {L, T, name}; a single record is named by its file");
       const auto file = entry.find("file");
       const auto list = entry.find("files");
       const auto folder = entry.find("folder");
@@ -461,6 +513,10 @@ class StudyReader {
         }
       }
     }
+    if (model_is_3d())
+      entry.fail(
+          "the model is 3D (structures:): its records are pairs, {L: file, T: file, name: ...} "
+          "or {folder, glob, pairs: rsn}");
     for (const auto& [where, written] : files) {
       Level level;
       level.overrides.push_back(make_override(where, kRecordPath, YAML::Node(written)));
@@ -477,6 +533,125 @@ class StudyReader {
         levels.push_back(std::move(component));
       }
     }
+  }
+
+  // The base model has `structures:` (3D buildings).
+  bool model_is_3d() const {
+    if (study_.model.IsMap())
+      for (auto entry : study_.model)
+        if (entry.first.IsScalar() && entry.first.Scalar() == "structures") return true;
+    return false;
+  }
+
+  // Record pairs for 3D models: {L: file, T: file, name, folder, scale, ...}, L and T possibly
+  // maps {file, scale, format, column, time_column, dt, unit} with options of their own; or
+  // {folder, glob, pairs: rsn, swap}: the matching files grouped by their PEER RSN (the name up to
+  // its first '_'), two per RSN, L the first by name (the second with swap: true).
+  void read_record_pairs(const InputNode& entry, std::vector<Level>& levels) {
+    fs::path folder;
+    if (const auto f = entry.find("folder")) {
+      folder = f->string();
+      const fs::path base = folder.is_relative() ? fs::path(study_.dir) / folder : folder;
+      std::error_code ec;
+      if (!fs::is_directory(base, ec))
+        f->fail("folder '" + base.lexically_normal().string() + "' not found");
+    }
+    if (const auto how = entry.find("pairs")) {
+      how->choice<int>({{"rsn", 0}});
+      for (const char* key : {"file", "files", "components", "L", "T", "name"})
+        if (const auto other = entry.find(key))
+          other->fail(std::string("'") + key +
+                      "' does not go with 'pairs': the pairs are the files 'glob' matches");
+      const auto glob = entry.find("glob");
+      if (!glob || !entry.has("folder"))
+        how->fail("pairs: rsn pairs the files of a folder matching a glob: give folder and glob");
+      const bool swap = entry.has("swap") && entry.find("swap")->boolean();
+      const std::string pattern = glob->string();
+      std::map<std::string, std::vector<std::string>> by_rsn;  // sorted: the order of cases
+      const fs::path base = folder.is_relative() ? fs::path(study_.dir) / folder : folder;
+      for (const auto& f : fs::directory_iterator(base)) {
+        const std::string name = f.path().filename().string();
+        if (f.is_regular_file() && fnmatch(pattern.c_str(), name.c_str(), 0) == 0)
+          by_rsn[name.substr(0, std::min(name.find('_'), name.rfind('.')))].push_back(name);
+      }
+      if (by_rsn.empty())
+        glob->fail("no file in '" + base.lexically_normal().string() + "' matches '" + pattern +
+                   "'");
+      for (auto& [rsn, files] : by_rsn) {
+        std::sort(files.begin(), files.end());
+        if (files.size() != 2) {
+          std::string names;
+          for (const std::string& n : files) names += (names.empty() ? "" : ", ") + n;
+          glob->fail("pairs: rsn needs two files (L and T) per RSN; '" + rsn + "' has " +
+                     std::to_string(files.size()) + ": " + names);
+        }
+        if (swap) std::swap(files[0], files[1]);
+        levels.push_back(pair_level(entry, {*glob, *glob}, {nullptr, nullptr}, files, folder, rsn));
+      }
+      return;
+    }
+    if (const auto swap = entry.find("swap")) swap->fail("'swap' goes with 'pairs: rsn'");
+    for (const char* key : {"file", "files", "glob", "components"})
+      if (const auto other = entry.find(key))
+        other->fail(std::string("'") + key +
+                    "' belongs to single records; a pair is {L: file, T: file, name: ...}");
+    const auto l = entry.find("L");
+    const auto t = entry.find("T");
+    if (!l || !t) entry.fail_at_key(l ? "T" : "L", "a record pair needs both components, L and T");
+    std::vector<InputNode> file_nodes;
+    std::vector<std::string> files;
+    for (const InputNode& c : {*l, *t}) {
+      if (c.is_map()) {
+        c.expect_keys({"file", "scale", "format", "column", "time_column", "dt", "unit"});
+        file_nodes.push_back(c.required("file"));
+      } else if (c.yaml().IsScalar()) {
+        file_nodes.push_back(c);
+      } else {
+        c.fail("expected a record file, or {file, scale, column, ...}");
+      }
+      files.push_back(file_nodes.back().string());
+      if (files.back().empty()) file_nodes.back().fail("expected a record file");
+    }
+    std::string label =
+        fs::path(files[0]).stem().string() + "+" + fs::path(files[1]).stem().string();
+    if (const auto name = entry.find("name")) {
+      label = name->string();
+      if (label.empty()) name->fail("must not be empty");
+    }
+    levels.push_back(pair_level(entry, file_nodes, {&*l, &*t}, files, folder, label));
+  }
+
+  // The level of one pair: ground_motion.L and .T set, the single-component keys removed.
+  Level pair_level(const InputNode& entry, const std::vector<InputNode>& file_nodes,
+                   const std::vector<const InputNode*>& own_options,
+                   const std::vector<std::string>& files, const fs::path& folder,
+                   const std::string& label) {
+    static constexpr const char* kOptions[] = {"scale",       "format", "column",
+                                               "time_column", "dt",     "unit"};
+    Level level;
+    level.label = label;
+    // A pair replaces a single-component motion (record or pulse) of the model. (Overrides hold
+    // YAML handles: they are appended, never shifted by insert, which would assign into them.)
+    for (const char* key :
+         {"record", "pulse", "scale", "format", "column", "time_column", "dt", "unit"})
+      level.overrides.push_back(Override{parse_parameter_path(std::string("ground_motion.") + key),
+                                         YAML::Node(), "~", entry});
+    for (std::size_t i = 0; i < 2; ++i) {
+      YAML::Node component(YAML::NodeType::Map);
+      component["record"] =
+          resolve_record(file_nodes[i], folder.empty() ? files[i] : (folder / files[i]).string());
+      for (const InputNode* options : {&entry, own_options[i]})  // the component's own win
+        for (const char* key : kOptions)
+          if (const auto option =
+                  options && options->is_map() ? options->find(key) : std::nullopt) {
+            if (!option->yaml().IsScalar()) option->fail("expected a single value");
+            component[key] = option->string();
+          }
+      level.overrides.push_back(
+          Override{parse_parameter_path(i == 0 ? "ground_motion.L" : "ground_motion.T"), component,
+                   canonical_text(component), own_options[i] ? *own_options[i] : file_nodes[i]});
+    }
+    return level;
   }
 
   void check_axis_names() {
