@@ -256,6 +256,11 @@ void PolygonContact::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
     p1 += trial_.force[k] * trial_.qdot[k];
   }
   trial_.work = C.work + 0.5 * h_ * (p0 + p1);
+  trial_.gross_work = C.gross_work + 0.5 * h_ * (std::abs(p0) + std::abs(p1));
+  if (trial_.started) {  // an episode starts with this step (its power at the start is 0)
+    trial_.episode_work = C.work;
+    trial_.episode_gross_work = C.gross_work;
+  }
   // E_N = ∫ F_el dδ_N along the path (trapezoid in time), from 0 at each onset.
   trial_.normal_energy =
       trial_.closed
@@ -320,9 +325,21 @@ void PolygonContact::commit() {
   if (trial_.closed) {
     (trial_.slipping ? time_slip_ : time_stick_) += h_;
   }
+  if (committed_.closed && !trial_.closed) end_episode(trial_);  // a separation no event located
   trial_.started = false;
   friction_dissipated_ = trial_.friction_dissipated;
   committed_ = trial_;
+}
+
+// The net work of the contact forces on the structures over the episode is −(W_sep − W_onset).
+void PolygonContact::end_episode(const State& s) {
+  const double net = -(s.work - s.episode_work);
+  const double gross = s.gross_work - s.episode_gross_work;
+  ++episodes_;
+  if (net > max_episode_net_work_) {
+    max_episode_net_work_ = net;
+    max_episode_net_work_relative_ = gross > 0 ? net / gross : 0.0;
+  }
 }
 
 void PolygonContact::revert() {
@@ -372,6 +389,8 @@ bool PolygonContact::settle_event() {
       C.slipping = false;
       C.spring = 0.0;
       C.normal_energy = 0.0;
+      C.episode_work = C.work;
+      C.episode_gross_work = C.gross_work;
       const double v_imp = std::max(C.witness_rate, 0.0);
       if (cfg_.normal_law) cfg_.normal_law->begin_contact(v_imp, C.phase);
       ++impacts_;
@@ -380,6 +399,7 @@ bool PolygonContact::settle_event() {
     }
     case Event::kSeparation:
       if (!C.closed) return false;
+      end_episode(C);
       if (cfg_.friction) C.friction_dissipated += C.spring * C.spring / (2 * cfg_.k_tangential);
       C.closed = C.slipping = false;
       C.spring = C.normal_energy = 0.0;

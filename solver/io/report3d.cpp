@@ -170,6 +170,13 @@ nlohmann::json contacts3d_json(const JobResult& job) {
     jc["time_in_slip_s"] = c->output(8);
     jc["friction_dissipated_J"] = c->output(9);
     jc["impact_dissipated_J"] = c->output(10);
+    // Passivity: completed contact episodes (onset to separation) and the largest net work the
+    // contact forces did on the structures over one of them (<= 0 up to round-off; null: none).
+    jc["episodes"] = c->episodes();
+    const bool any = c->episodes() > 0;
+    jc["max_episode_net_work_J"] = any ? json(c->max_episode_net_work()) : json(nullptr);
+    jc["max_episode_net_work_relative"] =
+        any ? json(c->max_episode_net_work_relative()) : json(nullptr);
     out.push_back(jc);
   }
   return out;

@@ -15,7 +15,8 @@ namespace isopound {
 // resultant and ratio; the envelope over columns; the corner columns), bearings (peaks).
 nlohmann::json summary3d_json(const JobResult& job);
 // "contacts_3d": per polygon contact pair, impacts, first-impact time, peaks of F_N, F_T, area,
-// δ_N and impact velocity, time in stick and slip, friction- and impact-dissipated energy.
+// δ_N and impact velocity, time in stick and slip, friction- and impact-dissipated energy, and
+// passivity: completed episodes, the largest net work of the contact forces over one episode.
 nlohmann::json contacts3d_json(const JobResult& job);
 // The console summary of 3D buildings (after the ground-motion line).
 void print_summary3d(std::ostream& out, const JobResult& job);
