@@ -14,7 +14,8 @@ namespace isopound {
 
 namespace {
 
-constexpr double kInsideEventFraction = 1e-4;  // continuous-force events only strictly inside
+constexpr double kInsideEventFraction = 1e-4;    // continuous-force events only strictly inside
+constexpr double kCountedImpactVelocity = 1e-3;  // m/s: impacts_above_1mm_s() counts from here
 
 Vec2 rotate(Vec2 p, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -321,6 +322,7 @@ void PolygonContact::commit() {
   if (trial_.started) {  // an onset no event located (events off, or within the tolerance)
     ++impacts_;
     max_impact_velocity_ = std::max(max_impact_velocity_, std::max(trial_.rate_n, 0.0));
+    if (trial_.rate_n >= kCountedImpactVelocity) ++impacts_above_1mm_s_;
   }
   if (trial_.closed) {
     (trial_.slipping ? time_slip_ : time_stick_) += h_;
@@ -395,6 +397,7 @@ bool PolygonContact::settle_event() {
       if (cfg_.normal_law) cfg_.normal_law->begin_contact(v_imp, C.phase);
       ++impacts_;
       max_impact_velocity_ = std::max(max_impact_velocity_, v_imp);
+      if (v_imp >= kCountedImpactVelocity) ++impacts_above_1mm_s_;
       break;
     }
     case Event::kSeparation:

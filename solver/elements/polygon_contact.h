@@ -105,6 +105,9 @@ class PolygonContact final : public Element {
   ContactSnapshot snapshot() const;
   // By name, for tests (committed counters, trial forces).
   int impacts() const { return impacts_; }
+  // Onsets with an impact velocity of at least 1 mm/s (grazing re-contacts left out), the
+  // count the window-convergence check of issue 16 compares.
+  int impacts_above_1mm_s() const { return impacts_above_1mm_s_; }
   double max_impact_velocity() const { return max_impact_velocity_; }
   // Passivity per contact episode (onset to separation): the net work of the contact forces on
   // the structures, −(W_sep − W_onset) with W the element work ∫ v·f_e dt. Completed episodes,
@@ -175,6 +178,7 @@ class PolygonContact final : public Element {
   State committed_, trial_;
   Event pending_ = Event::kNone;
   int impacts_ = 0;
+  int impacts_above_1mm_s_ = 0;
   double max_impact_velocity_ = 0.0;
   double friction_dissipated_ = 0.0;
   double time_stick_ = 0.0, time_slip_ = 0.0;

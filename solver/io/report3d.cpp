@@ -159,6 +159,7 @@ nlohmann::json contacts3d_json(const JobResult& job) {
     json jc = {{"label", label}, {"a", label.substr(0, bar)}, {"b", label.substr(bar + 1)}};
     const std::vector<Peak>& p = r.element_outputs[e];
     jc["impacts"] = c->impacts();
+    jc["impacts_above_1mm_s"] = c->impacts_above_1mm_s();
     const double first = e < job.first_impact_time.size() ? job.first_impact_time[e] : -1.0;
     jc["first_impact_time_s"] = first >= 0 ? json(first) : json(nullptr);
     jc["normal_force"] = peak_json(p[0], "N");
