@@ -16,11 +16,15 @@ for a in $angles; do
   sed -e "s#\.\./\.\./shared/records#$records#" -e "s#^  angle: .*#  angle: $a deg#" \
     configs/3d-xy5.yaml > "$base.yaml"
   nice -n 10 "$bin" run -q --no-histories --until 3.6 "$base.yaml" -o "$base-default"
+  # The light test's comparison run (tests/pounding3d_passivity_test.cpp): tolerance 1e-6.
+  sed "\$a analysis: {tolerance: 1e-6}" "$base.yaml" > "$base-tol1e-6.yaml"
+  nice -n 10 "$bin" run -q --no-histories --until 3.6 "$base-tol1e-6.yaml" -o "$base-tol1e-6"
   for k in 1024 2048; do
     dt=$(python3 -c "print(0.005 / $k)")
     sed "\$a analysis: {stepping: fixed, dt: $dt s}" "$base.yaml" > "$base-fixed$k.yaml"
     nice -n 10 "$bin" run -q --no-histories --until 3.6 "$base-fixed$k.yaml" -o "$base-fixed$k"
   done
   echo "theta $a: defaults vs fixed 0.005/1024: $(python3 bench/xy5_window.py "$base-default" "$base-fixed1024")"
+  echo "theta $a: tolerance 1e-6 vs fixed 0.005/1024: $(python3 bench/xy5_window.py "$base-tol1e-6" "$base-fixed1024")"
   echo "theta $a: fixed 0.005/1024 vs 0.005/2048: $(python3 bench/xy5_window.py "$base-fixed1024" "$base-fixed2048")"
 done
