@@ -14,7 +14,8 @@ namespace isopound {
 
 namespace {
 
-constexpr double kInsideEventFraction = 1e-4;  // continuous-force events only strictly inside
+constexpr double kInsideEventFraction = 1e-4;    // continuous-force events only strictly inside
+constexpr double kCountedImpactVelocity = 1e-3;  // m/s: impacts_above_1mm_s() counts from here
 
 Vec2 rotate(Vec2 p, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -278,6 +279,11 @@ void PolygonContact::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
     p1 += trial_.force[k] * trial_.qdot[k];
   }
   trial_.work = C.work + 0.5 * h_ * (p0 + p1);
+  trial_.gross_work = C.gross_work + 0.5 * h_ * (std::abs(p0) + std::abs(p1));
+  if (trial_.started) {  // an episode starts with this step (its power at the start is 0)
+    trial_.episode_work = C.work;
+    trial_.episode_gross_work = C.gross_work;
+  }
   // E_N = ∫ F_el dδ_N along the path (trapezoid in time), from 0 at each onset.
   trial_.normal_energy =
       trial_.closed
@@ -338,13 +344,26 @@ void PolygonContact::commit() {
   if (trial_.started) {  // an onset no event located (events off, or within the tolerance)
     ++impacts_;
     max_impact_velocity_ = std::max(max_impact_velocity_, std::max(trial_.rate_n, 0.0));
+    if (trial_.rate_n >= kCountedImpactVelocity) ++impacts_above_1mm_s_;
   }
   if (trial_.closed) {
     (trial_.slipping ? time_slip_ : time_stick_) += h_;
   }
+  if (committed_.closed && !trial_.closed) end_episode(trial_);  // a separation no event located
   trial_.started = false;
   friction_dissipated_ = trial_.friction_dissipated;
   committed_ = trial_;
+}
+
+// The net work of the contact forces on the structures over the episode is −(W_sep − W_onset).
+void PolygonContact::end_episode(const State& s) {
+  const double net = -(s.work - s.episode_work);
+  const double gross = s.gross_work - s.episode_gross_work;
+  ++episodes_;
+  if (net > max_episode_net_work_) {
+    max_episode_net_work_ = net;
+    max_episode_net_work_relative_ = gross > 0 ? net / gross : 0.0;
+  }
 }
 
 void PolygonContact::revert() {
@@ -414,14 +433,18 @@ bool PolygonContact::settle_event() {
       C.spring = 0.0;
       C.normal_energy = 0.0;
       if (!C.witness_valid) compute_witness(C);
+      C.episode_work = C.work;
+      C.episode_gross_work = C.gross_work;
       const double v_imp = std::max(C.witness_rate, 0.0);
       if (cfg_.normal_law) cfg_.normal_law->begin_contact(v_imp, C.phase);
       ++impacts_;
       max_impact_velocity_ = std::max(max_impact_velocity_, v_imp);
+      if (v_imp >= kCountedImpactVelocity) ++impacts_above_1mm_s_;
       break;
     }
     case Event::kSeparation:
       if (!C.closed) return false;
+      end_episode(C);
       if (cfg_.friction) C.friction_dissipated += C.spring * C.spring / (2 * cfg_.k_tangential);
       C.closed = C.slipping = false;
       C.spring = C.normal_energy = 0.0;

@@ -159,6 +159,7 @@ nlohmann::json contacts3d_json(const JobResult& job) {
     json jc = {{"label", label}, {"a", label.substr(0, bar)}, {"b", label.substr(bar + 1)}};
     const std::vector<Peak>& p = r.element_outputs[e];
     jc["impacts"] = c->impacts();
+    jc["impacts_above_1mm_s"] = c->impacts_above_1mm_s();
     const double first = e < job.first_impact_time.size() ? job.first_impact_time[e] : -1.0;
     jc["first_impact_time_s"] = first >= 0 ? json(first) : json(nullptr);
     jc["normal_force"] = peak_json(p[0], "N");
@@ -170,6 +171,13 @@ nlohmann::json contacts3d_json(const JobResult& job) {
     jc["time_in_slip_s"] = c->output(8);
     jc["friction_dissipated_J"] = c->output(9);
     jc["impact_dissipated_J"] = c->output(10);
+    // Passivity: completed contact episodes (onset to separation) and the largest net work the
+    // contact forces did on the structures over one of them (<= 0 up to round-off; null: none).
+    jc["episodes"] = c->episodes();
+    const bool any = c->episodes() > 0;
+    jc["max_episode_net_work_J"] = any ? json(c->max_episode_net_work()) : json(nullptr);
+    jc["max_episode_net_work_relative"] =
+        any ? json(c->max_episode_net_work_relative()) : json(nullptr);
     out.push_back(jc);
   }
   return out;

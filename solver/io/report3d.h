@@ -20,7 +20,8 @@ nlohmann::json summary3d_json(const JobResult& job);
 // numbers (A1, D1, A4, D4); empty when a label is not a grid label (letter + number).
 std::vector<std::string> corner_column_labels(const std::vector<std::string>& labels);
 // "contacts_3d": per polygon contact pair, impacts, first-impact time, peaks of F_N, F_T, area,
-// δ_N and impact velocity, time in stick and slip, friction- and impact-dissipated energy.
+// δ_N and impact velocity, time in stick and slip, friction- and impact-dissipated energy, and
+// passivity: completed episodes, the largest net work of the contact forces over one episode.
 nlohmann::json contacts3d_json(const JobResult& job);
 // "unobstructed_3d" (--compare-unobstructed): per building and level the peaks without
 // contacts and the amplification of each; the critical gap of each moat wall.
