@@ -41,20 +41,26 @@ bool is_angle_name(std::string n) {
 
 // Unit of a selector's quantity (SI) and how it is shown.
 DisplayUnit display_unit_of(const std::string& quantity) {
-  if (quantity == "displacement" || quantity == "drift" || quantity == "deformation" ||
-      quantity == "penetration" || quantity == "indentation" || quantity == "pgd")
+  const auto is = [&](std::initializer_list<const char*> names) {
+    for (const char* n : names)
+      if (quantity == n) return true;
+    return false;
+  };
+  if (is({"displacement", "displacement_x", "displacement_y", "residual_displacement", "drift",
+          "drift_x", "drift_y", "deformation", "deformation_x", "deformation_y", "penetration",
+          "indentation", "pgd", "u", "v"}))
     return {"cm", 0.01};
-  if (quantity == "velocity" || quantity == "impact_velocity" || quantity == "pgv")
-    return {"m/s", 1.0};
-  if (quantity == "absolute_acceleration" || quantity == "pga") return {"g", 9.81};
-  if (quantity == "force") return {"kN", 1e3};
-  if (quantity == "drift_ratio") return {"%", 0.01};
-  if (quantity == "impacts" || quantity == "z" || quantity == "relative_error" ||
-      quantity == "max_relative_error")
-    return {"-", 1.0};
-  if (quantity == "dissipated_energy" || quantity == "input" || quantity == "kinetic" ||
-      quantity == "elastic" || quantity == "viscous" || quantity == "hysteretic" ||
-      quantity == "error")
+  if (is({"velocity", "impact_velocity", "pgv"})) return {"m/s", 1.0};
+  if (is({"absolute_acceleration", "absolute_acceleration_x", "absolute_acceleration_y", "pga"}))
+    return {"g", 9.81};
+  if (is({"force", "force_x", "force_y", "normal_force", "tangential_force"})) return {"kN", 1e3};
+  if (is({"drift_ratio"})) return {"%", 0.01};
+  if (is({"theta"})) return {"rad", 1.0};
+  if (is({"area"})) return {"m2", 1.0};
+  if (is({"first_impact_time", "time_in_stick", "time_in_slip"})) return {"s", 1.0};
+  if (is({"impacts", "z", "relative_error", "max_relative_error"})) return {"-", 1.0};
+  if (is({"dissipated_energy", "friction_dissipated_energy", "impact_dissipated_energy", "input",
+          "kinetic", "elastic", "viscous", "hysteretic", "error"}))
     return {"kJ", 1e3};
   return {"SI", 1.0};
 }
@@ -89,7 +95,7 @@ double unit_divisor(const std::string& unit) {
   static const std::map<std::string, double> kUnits{
       {"m", 1.0},  {"cm", 0.01}, {"mm", 1e-3}, {"m/s", 1.0}, {"g", 9.81}, {"m/s2", 1.0},
       {"N", 1.0},  {"kN", 1e3},  {"MN", 1e6},  {"%", 0.01},  {"-", 1.0},  {"J", 1.0},
-      {"kJ", 1e3}, {"MJ", 1e6},  {"rad", 1.0}, {"SI", 1.0}};
+      {"kJ", 1e3}, {"MJ", 1e6},  {"rad", 1.0}, {"m2", 1.0},  {"s", 1.0},  {"SI", 1.0}};
   const auto it = kUnits.find(unit);
   if (it == kUnits.end()) {
     std::string names;
