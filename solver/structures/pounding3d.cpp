@@ -31,16 +31,20 @@ int find_dof(const Model& model, const std::string& label) {
   throw std::logic_error("3D pounding: no DOF labelled '" + label + "'");
 }
 
+// Outward normal of a wall side in plan: the building frame's axis turned by its rotation.
+Vec2 wall_normal_W(const Building3DConfig& b, int side) {
+  static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  const Vec2 a = kAxis[side];
+  const double c = std::cos(b.rotation), s = std::sin(b.rotation);
+  return {c * a.x - s * a.y, s * a.x + c * a.y};
+}
+
 }  // namespace
 
 std::vector<Vec2> moat_wall_outline(const Building3DConfig& b, int side) {
   const MoatWalls3DConfig& w = b.walls;
-  Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-  Vec2 hi{-lo.x, -lo.y};
-  for (const Vec2& p : b.base.plan) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
+  const ConvexPolygon slab = polygon_of(b.base.plan);
+  const Vec2 lo = slab.box_min(), hi = slab.box_max();
   const double g = w.gap[side], t = w.thickness, e = w.extension;
   double x0, x1, y0, y1;
   switch (side) {
@@ -175,10 +179,8 @@ void add_flexible_walls(Model& model, const ModelConfig& config) {
     const double k_t =
         1.0 / (h * h * h / (3.0 * E * t * L * L * L / 12.0) + h / (5.0 / 6.0 * G * t * L));
     const double k_theta = k_n * L * L / 12.0 + G * (L * t * t * t / 3.0) / h;
-    // Normal and tangent of the wall in plan (building frame axes turned by its rotation).
-    const double cr = std::cos(b.rotation), sr = std::sin(b.rotation);
-    const Vec2 n_B = along_y ? Vec2{1, 0} : Vec2{0, 1};
-    const Vec2 n{cr * n_B.x - sr * n_B.y, sr * n_B.x + cr * n_B.y}, tan{-n.y, n.x};
+    // Normal and tangent of the wall in plan (their signs do not enter n nᵀ and t tᵀ).
+    const Vec2 n = wall_normal_W(b, w.wall_side), tan{-n.y, n.x};
     const AreaProperties area = area_properties(w.plan_W);
     const Vec2 p = area.p_WC;
     Eigen::Matrix3d T = Eigen::Matrix3d::Identity();  // a point p moves by T q (DOFs at origin)
@@ -240,11 +242,7 @@ std::vector<WallClosing> wall_closings(const ModelConfig& config) {
     const SiteBody& wall = bodies[pair.b];
     if (wall.role != "wall") continue;
     const Building3DConfig& b = config.structures3d[wall.building];
-    // Outward normal of the side in plan: the building frame's axis turned by its rotation.
-    static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    const Vec2 a = kAxis[wall.wall_side];
-    const double c = std::cos(b.rotation), s = std::sin(b.rotation);
-    const Vec2 n{c * a.x - s * a.y, s * a.x + c * a.y};
+    const Vec2 n = wall_normal_W(b, wall.wall_side);
     double face = -std::numeric_limits<double>::infinity();
     for (const Vec2& p : slab.plan_W.vertices()) face = std::max(face, dot(n, p));
     WallClosing w;
