@@ -874,3 +874,98 @@ TEST(PolygonContactOutputs, SwappingTheBodiesGivesTheSameForces) {
 
 }  // namespace
 }  // namespace isopound
+
+namespace isopound {
+namespace {
+
+// What counts as an impact (THEORY-notes "What counts as an impact"): a slab that overlaps a
+// wall, is pulled back so hard that F_N is clamped at 0 (still overlapping), and then approaches
+// again starts a second compressive force pulse: a second impact with force_pulses (the
+// default), none with onsets. Loading again while still receding (δ̇_N < 1 mm/s) is no impact.
+TEST(PolygonContactImpactCount, AClampedContactLoadingAgainWhileApproachingIsAnImpact) {
+  for (const ImpactCount rule : {ImpactCount::kForcePulses, ImpactCount::kOnsets}) {
+    PolygonContactConfig cfg;
+    cfg.friction = false;
+    cfg.impact_count = rule;
+    PolygonContact c("slab|wall", slab(0), wall_at(0.5 * kSide + 1e-3), cfg);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(3), v = Eigen::VectorXd::Zero(3);
+    const auto step = [&](double x, double rate) {
+      u[0] = x;
+      v[0] = rate;
+      c.begin_step(1e-4, false);
+      c.set_trial(u, v);
+      c.commit();
+    };
+    step(2e-3, 0.5);  // 1 mm into the wall, approaching: the onset
+    EXPECT_GT(c.snapshot().normal_force, 0.0);
+    EXPECT_EQ(c.impacts_above_1mm_s(), 1);
+    // Receding at 10 m/s: c_N δ̇_N (~ -6e8 N) outweighs k_N A_c (2.8e8 N): clamped at 0.
+    step(2.1e-3, -10.0);
+    EXPECT_TRUE(c.snapshot().in_contact);
+    EXPECT_EQ(c.snapshot().normal_force, 0.0);
+    step(2.1e-3, -1e-4);  // loads again while still receding: no impact
+    EXPECT_GT(c.snapshot().normal_force, 0.0);
+    EXPECT_EQ(c.impacts_above_1mm_s(), 1);
+    step(2.1e-3, -10.0);  // clamped again
+    EXPECT_EQ(c.snapshot().normal_force, 0.0);
+    step(2.1e-3, 0.01);  // loads again approaching at 10 mm/s
+    EXPECT_GT(c.snapshot().normal_force, 0.0);
+    const int expected = rule == ImpactCount::kForcePulses ? 2 : 1;
+    EXPECT_EQ(c.impacts_above_1mm_s(), expected);
+    EXPECT_EQ(c.impacts(), expected);
+  }
+}
+
+}  // namespace
+}  // namespace isopound
+
+namespace isopound {
+namespace {
+
+// The step policy is the 2D contact's (contact_step.h): face-on, the polygon contact asks for the
+// same step as a Kelvin–Voigt Contact1D of k = k_N L at every state of an approach (time of
+// impact, and its floor near the wall), at the onset (1/32 of the contact step) and through the
+// graded steps after it. Differences come only from the witness rate's central difference and
+// the contact period's Newton iteration (< 1e-6 relative).
+TEST(PolygonContactStepLimit, FaceOnEqualsTheKelvinVoigtContact1D) {
+  const double gap = 1e-3, h = 2e-5;
+  PolygonContactConfig cfg;
+  cfg.friction = false;
+  cfg.keep_tension = true;
+  PolygonContact polygon("slab|wall", slab(0), wall_at(0.5 * kSide + gap), cfg);
+  ImpactLawConfig law;
+  law.law = "kelvin_voigt";
+  law.k = cfg.k_normal * kSide;
+  law.e = cfg.restitution;
+  law.mass_1 = kSlabMass;
+  law.mass_2 = kWallMass;
+  const double m_eff = effective_mass(kSlabMass, kWallMass);
+  Contact1D line("slab|wall", {0, 1.0}, {-1, 0.0}, gap, make_impact_law(law), m_eff,
+                 cfg.steps_per_contact);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(3), v = Eigen::VectorXd::Zero(3);
+  double x = -0.005, rate = 0.3;
+  int compared = 0, in_contact = 0;
+  for (int n = 0; n < 20000 && x < gap + 2e-4; ++n) {
+    // Decelerating approach (1 m/s² towards the wall is not enough to stop it).
+    x += h * rate;
+    rate -= h * 1.0;
+    u[0] = x;
+    v[0] = rate;
+    for (Element* e : {static_cast<Element*>(&polygon), static_cast<Element*>(&line)}) {
+      e->begin_step(h, false);
+      e->set_trial(u, v);
+      e->commit();
+    }
+    const double a = polygon.step_limit(), b = line.step_limit();
+    if (b < 1.0) {  // a limit that can bind
+      EXPECT_NEAR(a, b, 1e-6 * b) << "step " << n << ", x = " << x;
+      ++compared;
+      in_contact += x > gap;
+    }
+  }
+  EXPECT_GT(compared, 100);
+  EXPECT_GE(in_contact, 6);  // the onset and the graded steps after it
+}
+
+}  // namespace
+}  // namespace isopound

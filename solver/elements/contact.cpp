@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "solver/elements/contact_step.h"
 #include "solver/elements/witness.h"
 
 namespace isopound {
@@ -221,62 +222,38 @@ bool Contact1D::settle_event() {
   return true;
 }
 
-// Pseudocode. Open: conservative advancement (time of impact): with |delta''| <= A, taken as
-// twice the mean |delta''| of the last step (an estimate, not a proof: the interior-crossing
-// test of event_fraction() is the backstop), the gap -delta cannot close before
-//   t = 2 d / (v + sqrt(v^2 + 2 A d)),  d = -delta > 0, v = delta' (the earliest root of
-// -d + v t + A t^2 / 2); the step is at most t, but never below the step of a contact that
-// would begin at the arrival speed sqrt(v^2 + 2 A d) (else the steps would shrink to 0 along a
-// grazing approach). Closed: a fraction of the contact period, graded from the onset.
+// Pseudocode. Open: conservative advancement (time of impact, contact_step.h) with |delta''|
+// <= A, taken as twice the mean |delta''| of the last step (an estimate, not a proof: the
+// interior-crossing test of event_fraction() is the backstop); the step is at most that time,
+// but never below the step of a contact that would begin at the arrival speed (else the steps
+// would shrink to 0 along a grazing approach). Closed: a fraction of the contact period, graded
+// from the onset.
 double Contact1D::step_limit() const {
   const State& C = committed_;
   if (!C.in_contact) {
-    const double distance = -C.delta, v = C.rate, bound = 2.0 * rate_change_;
-    const double arrival = std::sqrt(std::max(v * v + 2.0 * bound * std::max(distance, 0.0), 0.0));
-    if (!(v + arrival > 0)) return 1e300;  // receding with no acceleration towards the wall
-    const double time_of_impact = distance > 0 ? 2.0 * distance / (v + arrival) : 0.0;
+    const TimeOfImpact toi = time_of_impact(-C.delta, C.rate, 2.0 * rate_change_);
+    if (toi.time >= 1e300) return 1e300;
     // The floor changes slowly with the speed (not at all for the linear-type laws, as
     // v^(-1/5) for Hertz): recomputed only when it may bind and the speed moved by 25 %.
-    if (time_of_impact >= 2.0 * approach_step_) return time_of_impact;
-    const double speed = std::max(arrival, kCountedImpactVelocity);
+    if (toi.time >= 2.0 * approach_step_) return toi.time;
+    const double speed = std::max(toi.arrival_speed, kCountedImpactVelocity);
     if (!(std::abs(speed - approach_speed_) <= 0.25 * approach_speed_)) {
       ImpactPhase phase;
       law_->begin_contact(speed, phase);
       approach_step_ = contact_period_estimate(phase.impact_velocity, phase) / steps_per_contact_;
       approach_speed_ = speed;
     }
-    return std::max(time_of_impact, approach_step_);
+    return std::max(toi.time, approach_step_);
   }
-  // Graded from the onset (1/32 of the contact step, doubling each step): the force of the
-  // Hertz-type laws grows as delta^(n-1), Jankowski's damping as delta^(1/4) (infinite slope).
-  double limit = contact_step_ * std::ldexp(1.0, std::min(steps_in_contact_, 5) - 5);
+  double limit = graded_contact_step(contact_step_, steps_in_contact_);
   if (C.stiffness > 0)
     limit =
         std::min(limit, std::numbers::pi * std::sqrt(m_eff_ / C.stiffness) / steps_per_contact_);
   return limit;
 }
 
-// Pseudocode: the elastic part F_e(delta) = F(delta, 0) stores E(delta) = F_e delta / (n + 1)
-// (power law); Newton on E(delta) = m_eff v_imp^2 / 2 gives the peak penetration delta_max, and
-// pi sqrt(m_eff delta_max / F_e(delta_max)) the duration of a contact of secant stiffness.
 double Contact1D::contact_period_estimate(double impact_velocity, const ImpactPhase& phase) const {
-  const double energy = 0.5 * m_eff_ * impact_velocity * impact_velocity;
-  if (!(energy > 0)) return 1e300;
-  double delta = 1e-3;
-  for (int it = 0; it < 60; ++it) {
-    const ImpactResponse e = law_->respond(delta, 0.0, phase);
-    if (!(e.force > 0)) return 1e300;
-    const double stored = e.force * e.force * delta / (e.force + delta * e.stiffness);
-    const double next = delta - (stored - energy) / e.force;
-    const double updated = next > 0 ? next : 0.5 * delta;
-    if (std::abs(updated - delta) < 1e-10 * delta) {
-      delta = updated;
-      break;
-    }
-    delta = updated;
-  }
-  const double force = law_->respond(delta, 0.0, phase).force;
-  return force > 0 ? std::numbers::pi * std::sqrt(m_eff_ * delta / force) : 1e300;
+  return isopound::contact_period_estimate(*law_, phase, m_eff_, impact_velocity);
 }
 
 std::string Contact1D::output_name(int i) const {

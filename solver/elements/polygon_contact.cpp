@@ -8,6 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "solver/elements/contact_step.h"
 #include "solver/elements/witness.h"
 
 namespace isopound {
@@ -16,6 +17,11 @@ namespace {
 
 constexpr double kInsideEventFraction = 1e-4;    // continuous-force events only strictly inside
 constexpr double kCountedImpactVelocity = 1e-3;  // m/s: impacts_above_1mm_s() counts from here
+// Depth of the sliver that gives a contact at A_c → 0 (and any shallower overlap) its shape
+// (w, n, C), relative to the body size (0.17 µm for a 16.5 m slab). The limit is discontinuous
+// at face-on: a slab turned by θ has its sliver's centroid θL²/(12 δ) off the middle, so a
+// shallow sliver turns round-off rotations into torques (THEORY-notes, "Face-on rotation").
+constexpr double kSurfaceSliver = 1e-8;
 
 Vec2 rotate(Vec2 p, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -115,7 +121,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.force.fill(0.0);
   out.area = out.indentation = out.width = 0.0;
   out.p_WC = out.n_AB = out.t_AB = Vec2{};
-  out.rate_n = out.rate_t = out.raw_normal = out.elastic_normal = 0.0;
+  out.rate_n = out.rate_t = out.raw_normal = out.elastic_normal = out.secant_width = 0.0;
   out.normal = out.tangential = out.spring = out.spring_trial = out.tangential_trial = 0.0;
   out.friction_dissipated = C.friction_dissipated;
   out.phase = C.phase;
@@ -141,7 +147,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     return;
   }
   bool at_surface = false;
-  const double sliver = 1e-12 * length_scale_;
+  const double sliver = kSurfaceSliver * length_scale_;
   const double actual_area = ov.area;
   if (overlapping && ov.area < sliver * length(ov.p_WP2 - ov.p_WP1)) {
     // Shallower than the sliver: the shape (w, n, C) is taken from the sliver too, so that the
@@ -156,14 +162,10 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   if (!overlapping) {
     // Frozen closed at the contact surface (a step cut to end at an onset or a separation ends
     // within round-off of A_c = 0, on either side): take the limit A_c → 0+, whose damping
-    // force c_N δ̇_N is the Kelvin–Voigt jump. Its shape (w, n, C) is that of a sliver 1e-12 of
-    // the body size deep; its area counts as 0.
-    const Separation sep = separation_of(pa, pb);
-    if (sep.distance > 1e-9 * length_scale_) return;  // really apart: no force
-    const double shift = std::max(sep.distance, 0.0) + sliver;
-    const ConvexPolygon deeper =
-        b_.shape.placed({q[3] - shift * sep.n_AB.x, q[4] - shift * sep.n_AB.y, q[5]}, b_.p_WO);
-    ov = overlap_of(pa, deeper, cfg_.overlap);
+    // force c_N δ̇_N is the Kelvin–Voigt jump. Its shape (w, n, C) is that of a sliver
+    // kSurfaceSliver of the body size deep; its area counts as 0.
+    if (separation_of(pa, pb).distance > 1e-9 * length_scale_) return;  // apart: no force
+    ov = surface_overlap(pa, pb, q, sliver);
     if (!(ov.area > 0.0)) return;
     at_surface = true;
   }
@@ -175,7 +177,8 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.width = length(ov.p_WP2 - ov.p_WP1);
   const bool thesis = cfg_.indentation == IndentationRule::kThesis;
   // A_c / δ_N: w (quadrilateral and up, or the mean-depth rule) or w/2 (triangle, thesis rule).
-  const double area_per_depth = thesis && ov.vertex_count == 3 ? 0.5 * out.width : out.width;
+  const double area_per_depth = secant_width_of(ov);
+  out.secant_width = area_per_depth;
   out.indentation =
       at_surface ? 0.0 : (thesis && ov.vertex_count == 3 ? 2.0 : 1.0) * out.area / out.width;
   const Vec2 r_A = ov.p_WC - o_A, r_B = ov.p_WC - o_B;
@@ -260,6 +263,25 @@ void PolygonContact::compute_witness(State& s) const {
   s.witness_valid = true;
 }
 
+Overlap PolygonContact::surface_overlap(const ConvexPolygon& pa, const ConvexPolygon& pb,
+                                        const Vec6& q, double sliver) const {
+  const Separation sep = separation_of(pa, pb);
+  const double shift = std::max(sep.distance, 0.0) + sliver;
+  const ConvexPolygon deeper =
+      b_.shape.placed({q[3] - shift * sep.n_AB.x, q[4] - shift * sep.n_AB.y, q[5]}, b_.p_WO);
+  return overlap_of(pa, deeper, cfg_.overlap);
+}
+
+double PolygonContact::secant_width_of(const Overlap& ov) const {
+  const double w = length(ov.p_WP2 - ov.p_WP1);
+  return cfg_.indentation == IndentationRule::kThesis && ov.vertex_count == 3 ? 0.5 * w : w;
+}
+
+double PolygonContact::area_contact_step(double secant_width) const {
+  const double k_sec = cfg_.k_normal * std::max(secant_width, width_floor_);
+  return std::numbers::pi * std::sqrt(m_eff_ / k_sec) / cfg_.steps_per_contact;
+}
+
 double PolygonContact::trial_witness() const {
   if (trial_.witness_valid) return trial_.witness;
   State copy = trial_;
@@ -341,18 +363,49 @@ double PolygonContact::stored_energy() const {
 
 void PolygonContact::commit() {
   // (The witness is computed when an event test or an onset needs it, not here.)
+  const State& C = committed_;
   if (trial_.started) {  // an onset no event located (events off, or within the tolerance)
-    ++impacts_;
-    max_impact_velocity_ = std::max(max_impact_velocity_, std::max(trial_.rate_n, 0.0));
-    if (trial_.rate_n >= kCountedImpactVelocity) ++impacts_above_1mm_s_;
+    count_impact(std::max(trial_.rate_n, 0.0));
+  } else if (cfg_.impact_count == ImpactCount::kForcePulses && C.closed && trial_.closed &&
+             C.normal == 0.0 && C.raw_normal < 0.0 && trial_.normal > 0.0 &&
+             trial_.rate_n >= kCountedImpactVelocity) {
+    // A closed contact whose F_N was clamped at 0 (no force, the bodies still overlapping)
+    // loads again while approaching: a new force pulse, as if it had opened (THEORY-notes).
+    count_impact(trial_.rate_n);
   }
   if (trial_.closed) {
     (trial_.slipping ? time_slip_ : time_stick_) += h_;
   }
-  if (committed_.closed && !trial_.closed) end_episode(trial_);  // a separation no event located
+  if (C.closed && !trial_.closed) end_episode(trial_);  // a separation no event located
+  if (h_ > 0) {
+    // |δ̈| is bounded by the bodies' accelerations: |Δ(u̇, v̇)| + |Δθ̇| L of each, over the step.
+    double change = 0.0;
+    for (int body = 0; body < 2; ++body) {
+      const int k = 3 * body;
+      change += std::hypot(trial_.qdot[k] - C.qdot[k], trial_.qdot[k + 1] - C.qdot[k + 1]) +
+                std::abs(trial_.qdot[k + 2] - C.qdot[k + 2]) * length_scale_;
+    }
+    rate_change_ = change / h_;
+  }
+  if (trial_.started) contact_step_ = onset_contact_step(trial_);
+  steps_in_contact_ = trial_.started ? 0 : steps_in_contact_ + 1;
   trial_.started = false;
   friction_dissipated_ = trial_.friction_dissipated;
   committed_ = trial_;
+  approach_cached_ = false;
+}
+
+void PolygonContact::count_impact(double approach_rate) {
+  ++impacts_;
+  max_impact_velocity_ = std::max(max_impact_velocity_, approach_rate);
+  if (approach_rate >= kCountedImpactVelocity) ++impacts_above_1mm_s_;
+}
+
+double PolygonContact::onset_contact_step(const State& s) const {
+  if (cfg_.normal_law)
+    return contact_period_estimate(*cfg_.normal_law, s.phase, m_eff_, s.phase.impact_velocity) /
+           cfg_.steps_per_contact;
+  return area_contact_step(s.secant_width);
 }
 
 // The net work of the contact forces on the structures over the episode is −(W_sep − W_onset).
@@ -437,9 +490,9 @@ bool PolygonContact::settle_event() {
       C.episode_gross_work = C.gross_work;
       const double v_imp = std::max(C.witness_rate, 0.0);
       if (cfg_.normal_law) cfg_.normal_law->begin_contact(v_imp, C.phase);
-      ++impacts_;
-      max_impact_velocity_ = std::max(max_impact_velocity_, v_imp);
-      if (v_imp >= kCountedImpactVelocity) ++impacts_above_1mm_s_;
+      count_impact(v_imp);
+      contact_step_ = onset_contact_step(C);
+      steps_in_contact_ = 0;
       break;
     }
     case Event::kSeparation:
@@ -465,24 +518,61 @@ bool PolygonContact::settle_event() {
   }
   friction_dissipated_ = C.friction_dissipated;
   trial_ = C;
+  approach_cached_ = false;
   return true;
 }
 
-// A fraction of the contact period π √(m_eff δ_N / F_el) = π √(m_eff / k_sec), the secant
-// stiffness k_sec = k_N A_c/δ_N = k_N w (triangle: k_N w/2) with w ≥ width_floor_.
+// Closed: a fraction of the contact period π √(m_eff δ_N / F_el) = π √(m_eff / k_sec), the
+// secant stiffness k_sec = k_N A_c/δ_N = k_N w (triangle: k_N w/2) with w ≥ width_floor_,
+// graded from the onset as the 2D contact's (contact_step.h). Open: approach_limit().
 double PolygonContact::step_limit() const {
   const State& C = committed_;
-  if (!C.closed) return 1e300;
-  double k_sec = 0.0;
+  if (!C.closed) return approach_limit();
+  double limit = 1e300;
   if (cfg_.normal_law) {
     const double delta = std::max(C.indentation, 1e-3);
-    k_sec = cfg_.normal_law->respond(delta, 0.0, C.phase).force / delta;
+    const double k_sec = cfg_.normal_law->respond(delta, 0.0, C.phase).force / delta;
+    if (k_sec > 0) limit = std::numbers::pi * std::sqrt(m_eff_ / k_sec) / cfg_.steps_per_contact;
   } else {
-    const double ratio = C.area > 0 && C.indentation > 0 ? C.area / C.indentation : 0.0;
-    k_sec = cfg_.k_normal * std::max(ratio, width_floor_);
+    limit = area_contact_step(C.secant_width);
   }
-  if (!(k_sec > 0)) return 1e300;
-  return std::numbers::pi * std::sqrt(m_eff_ / k_sec) / cfg_.steps_per_contact;
+  return std::min(graded_contact_step(contact_step_, steps_in_contact_), limit);
+}
+
+// Pseudocode (as Contact1D's, on the witness −separation): the time of impact from the
+// separation d, its rate and |δ̈| ≤ 2 rate_change_; at most that, but never below the contact
+// step at arrival (the area law's from the width of the sliver the contact would start with).
+// A cheap lower bound first: the bounding boxes' gap (≤ the separation) closed at the bodies'
+// speed bound (≥ the witness rate). When even that exceeds twice the longest step tried, no
+// step can reach it and the witness is not needed: the steps are the same as with it.
+double PolygonContact::approach_limit() const {
+  if (approach_cached_) return approach_limit_;
+  const State& C = committed_;
+  double speed_bound = 0.0;
+  for (int body = 0; body < 2; ++body)
+    speed_bound += std::hypot(C.qdot[3 * body], C.qdot[3 * body + 1]) +
+                   std::abs(C.qdot[3 * body + 2]) * length_scale_;
+  const double acceleration_bound = 2.0 * rate_change_;
+  const TimeOfImpact far = time_of_impact(C.box_gap, speed_bound, acceleration_bound);
+  approach_cached_ = true;
+  if (far.time >= 2.0 * longest_step_) return approach_limit_ = far.time;
+  State s = C;
+  if (!s.witness_valid) compute_witness(s);
+  const TimeOfImpact toi = time_of_impact(-s.witness, s.witness_rate, acceleration_bound);
+  if (toi.time >= 1e300) return approach_limit_ = 1e300;
+  double floor = 0.0;
+  if (cfg_.normal_law) {
+    ImpactPhase phase;
+    cfg_.normal_law->begin_contact(std::max(toi.arrival_speed, kCountedImpactVelocity), phase);
+    floor = contact_period_estimate(*cfg_.normal_law, phase, m_eff_, phase.impact_velocity) /
+            cfg_.steps_per_contact;
+  } else if (toi.time < area_contact_step(0.0)) {  // the floor's largest value (w = width_floor_)
+    const ConvexPolygon pa = place(a_, C.q[0], C.q[1], C.q[2]);
+    const ConvexPolygon pb = place(b_, C.q[3], C.q[4], C.q[5]);
+    const Overlap ov = surface_overlap(pa, pb, C.q, kSurfaceSliver * length_scale_);
+    floor = area_contact_step(ov.area > 0.0 ? secant_width_of(ov) : 0.0);
+  }
+  return approach_limit_ = std::max(toi.time, floor);
 }
 
 ContactSnapshot PolygonContact::snapshot() const {

@@ -4,6 +4,7 @@
 // (p_WC − p_WO) × F about each body's DOF origin O (which moves with the body). THEORY-notes.md.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <memory>
@@ -43,6 +44,12 @@ enum class IndentationRule {
   kMeanDepth,  // A_c/w always (continuous)
 };
 
+// How impacts are counted (THEORY-notes, "3D contact": what an impact is).
+enum class ImpactCount {
+  kForcePulses,  // overlap onsets, and reloadings of a force-free closed contact (default)
+  kOnsets,       // overlap onsets only
+};
+
 struct PolygonContactConfig {
   double k_normal = 2.58e10;     // N/m²
   double k_tangential = 5.74e9;  // N/m
@@ -54,6 +61,10 @@ struct PolygonContactConfig {
   IndentationRule indentation = IndentationRule::kThesis;
   OverlapMethod overlap = OverlapMethod::kFast;
   double steps_per_contact = 100;  // step limit in contact: T_c / steps_per_contact
+  // What counts as an impact (impacts(), impacts_above_1mm_s()): every onset of a compressive
+  // normal force pulse (kForcePulses: an onset of overlap, and a closed contact whose F_N was
+  // clamped at 0 loading again while approaching), or overlap onsets only (kOnsets).
+  ImpactCount impact_count = ImpactCount::kForcePulses;
   // Option: one of the ten 2D impact laws along the normal with δ_N as the penetration
   // (its k in N/m); null = the area law k_N A_c + c_N δ̇_N.
   std::shared_ptr<const ImpactLaw> normal_law;
@@ -78,6 +89,7 @@ class PolygonContact final : public Element {
 
   void begin_step(double h, bool freeze_status) override {
     h_ = h;
+    longest_step_ = std::max(longest_step_, h);
     freeze_ = freeze_status;
   }
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
@@ -141,6 +153,7 @@ class PolygonContact final : public Element {
     Vec2 p_WC, n_AB, t_AB;
     double rate_n = 0.0;          // δ̇_N: approach rate at C along n_AB, m/s (> 0 closing)
     double rate_t = 0.0;          // u̇_T: sliding rate of B on A at C along t_AB, m/s
+    double secant_width = 0.0;    // A_c/δ_N of the overlap's shape (w, or w/2), m
     double raw_normal = 0.0;      // F_N before the no-tension clamp
     double elastic_normal = 0.0;  // k_N A_c (or the law's F(δ_N, 0))
     double normal = 0.0, tangential = 0.0;  // F_N, F_T as applied
@@ -165,6 +178,21 @@ class PolygonContact final : public Element {
   void gather(const Eigen::VectorXd& x, Vec6& q) const;
   static ConvexPolygon place(const PolygonBody& body, double u, double v, double theta);
   void compute_witness(State& s) const;
+  // The overlap of A and B moved together along their separation direction until B is a sliver
+  // `sliver` deep inside A: the shape of a contact at A_c → 0+ (empty if they are far apart).
+  Overlap surface_overlap(const ConvexPolygon& pa, const ConvexPolygon& pb, const Vec6& q,
+                          double sliver) const;
+  // A_c/δ_N of an overlap's shape under the configured indentation rule (w, or w/2).
+  double secant_width_of(const Overlap& ov) const;
+  // The contact step of the area law at a secant width (m): π √(m_eff/(k_N w_s))/steps, w_s
+  // bounded below by width_floor_.
+  double area_contact_step(double secant_width) const;
+  // Step limit while open: time of impact, floored by the contact step at arrival.
+  double approach_limit() const;
+  void count_impact(double approach_rate);
+  // The contact step of a contact begun at state s (area law: at its secant width; a normal
+  // law: its contact period at s's impact velocity).
+  double onset_contact_step(const State& s) const;
   double trial_stored() const;
 
   std::string label_;
@@ -177,8 +205,14 @@ class PolygonContact final : public Element {
   double length_scale_ = 1.0;  // m, converts a rotation to a displacement (FD steps, witness)
   double width_floor_ = 0.0;   // m, lower bound of w in the step limit
   double h_ = 0.0;
+  double longest_step_ = 0.0;  // s, the longest step tried so far (the analysis interval)
   bool freeze_ = false;
   State committed_, trial_;
+  double contact_step_ = 1e300;  // s, the contact step from the current contact's onset
+  int steps_in_contact_ = 0;     // accepted steps since the current contact began
+  double rate_change_ = 0.0;     // bound of |δ̈| over the last accepted step (kinematic), m/s²
+  mutable bool approach_cached_ = false;  // approach_limit() of the committed state is known
+  mutable double approach_limit_ = 1e300;
   Event pending_ = Event::kNone;
   int impacts_ = 0;
   int impacts_above_1mm_s_ = 0;

@@ -533,6 +533,7 @@ ModelConfig::Contact3D read_contact3d(const InputNode& node) {
                     "keep_tension",
                     "indentation",
                     "overlap",
+                    "impact_count",
                     "elevation_tolerance",
                     "search_distance",
                     "law",
@@ -594,6 +595,10 @@ ModelConfig::Contact3D read_contact3d(const InputNode& node) {
   }
   node.read_choice<OverlapMethod>(
       "overlap", {{"fast", OverlapMethod::kFast}, {"exact", OverlapMethod::kExact}}, law.overlap);
+  node.read_choice<ImpactCount>(
+      "impact_count",
+      {{"force_pulses", ImpactCount::kForcePulses}, {"onsets", ImpactCount::kOnsets}},
+      law.impact_count);
   node.read_quantity("elevation_tolerance", dim::kLength, Bound::kPositive, c.elevation_tolerance);
   node.read_quantity("search_distance", dim::kLength, Bound::kPositive, c.search_distance);
   return c;
