@@ -38,6 +38,18 @@ PolygonBody wall_at(double face_x) {
   return {-1, -1, -1, {0, 0}, rectangle(face_x, -10.0, face_x + 1.0, 10.0), kWallMass};
 }
 
+// The 2D Kelvin–Voigt law a face-on contact of the kSide-long slab reduces to: k = k_N L, the same
+// e and masses.
+ImpactLawConfig face_on_kelvin_voigt(const PolygonContactConfig& cfg) {
+  ImpactLawConfig law;
+  law.law = "kelvin_voigt";
+  law.k = cfg.k_normal * kSide;
+  law.e = cfg.restitution;
+  law.mass_1 = kSlabMass;
+  law.mass_2 = kWallMass;
+  return law;
+}
+
 double polar_moment(double m) {
   return m * (kSide * kSide + kSide * kSide) / 12.0;
 }
@@ -186,12 +198,7 @@ TEST(PolygonContactFaceOn, ReducesToKelvinVoigtContact1D) {
   m1.stiffness = Eigen::MatrixXd::Constant(1, 1, kx);
   m1.damping = Eigen::MatrixXd::Zero(1, 1);
   m1.influence = Eigen::VectorXd::Ones(1);
-  ImpactLawConfig law;
-  law.law = "kelvin_voigt";
-  law.k = cfg.k_normal * kSide;
-  law.e = cfg.restitution;
-  law.mass_1 = kSlabMass;
-  law.mass_2 = kWallMass;
+  const ImpactLawConfig law = face_on_kelvin_voigt(cfg);
   m1.elements.push_back(std::make_unique<Contact1D>("slab-wall", ContactBody{0, 1.0}, ContactBody{},
                                                     gap, make_impact_law(law),
                                                     effective_mass(kSlabMass, kWallMass), 100));
@@ -655,11 +662,7 @@ TEST(PolygonContactFaceOn, RunAnalysisAtDefaultsAgreesWithContact1D) {
   m1.stiffness = Eigen::MatrixXd::Constant(1, 1, kx);
   m1.damping = Eigen::MatrixXd::Zero(1, 1);
   m1.influence = Eigen::VectorXd::Ones(1);
-  ImpactLawConfig law;
-  law.k = cfg.k_normal * kSide;
-  law.e = cfg.restitution;
-  law.mass_1 = kSlabMass;
-  law.mass_2 = kWallMass;
+  const ImpactLawConfig law = face_on_kelvin_voigt(cfg);
   m1.elements.push_back(std::make_unique<Contact1D>("c", ContactBody{0, 1.0}, ContactBody{}, gap,
                                                     make_impact_law(law),
                                                     effective_mass(kSlabMass, kWallMass), 100));
@@ -728,12 +731,7 @@ TEST(PolygonContactOptions, NormalLawExactPathAndIndentationRule) {
       area.k_normal * kSide * delta + 2 * xi * std::sqrt(area.k_normal * kSide * m_eff) * rate,
       1e-9 * f_area);
 
-  ImpactLawConfig law;
-  law.law = "kelvin_voigt";
-  law.k = area.k_normal * kSide;
-  law.e = area.restitution;
-  law.mass_1 = kSlabMass;
-  law.mass_2 = kWallMass;
+  ImpactLawConfig law = face_on_kelvin_voigt(area);
   PolygonContactConfig kv = area;
   kv.normal_law = make_impact_law(law);
   EXPECT_NEAR(force(kv), f_area, 1e-9 * f_area);
@@ -933,12 +931,7 @@ TEST(PolygonContactStepLimit, FaceOnEqualsTheKelvinVoigtContact1D) {
   cfg.friction = false;
   cfg.keep_tension = true;
   PolygonContact polygon("slab|wall", slab(0), wall_at(0.5 * kSide + gap), cfg);
-  ImpactLawConfig law;
-  law.law = "kelvin_voigt";
-  law.k = cfg.k_normal * kSide;
-  law.e = cfg.restitution;
-  law.mass_1 = kSlabMass;
-  law.mass_2 = kWallMass;
+  const ImpactLawConfig law = face_on_kelvin_voigt(cfg);
   const double m_eff = effective_mass(kSlabMass, kWallMass);
   Contact1D line("slab|wall", {0, 1.0}, {-1, 0.0}, gap, make_impact_law(law), m_eff,
                  cfg.steps_per_contact);
