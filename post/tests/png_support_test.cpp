@@ -1,11 +1,6 @@
-// PNG reading for the post tests (VTK's PNG reader) and a check of it on a figure with a known
+// A check of the PNG reading (tests/png_image.h) on a figure with a known
 // rectangle, so that pixel tests elsewhere cannot pass for a misread image.
 #include <gtest/gtest.h>
-#include <vtkDataArray.h>
-#include <vtkImageData.h>
-#include <vtkNew.h>
-#include <vtkPNGReader.h>
-#include <vtkPointData.h>
 
 #include <stdexcept>
 
@@ -15,40 +10,6 @@
 #include "post_test_support.h"
 
 namespace isopound::post::test {
-
-Image read_png(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such PNG");
-  vtkNew<vtkPNGReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkImageData* img = reader->GetOutput();
-  int dims[3];
-  img->GetDimensions(dims);
-  Image out;
-  out.width = dims[0];
-  out.height = dims[1];
-  vtkDataArray* s = img->GetPointData()->GetScalars();
-  const int nc = s->GetNumberOfComponents();
-  out.rgb.resize(3 * static_cast<std::size_t>(out.width) * out.height);
-  // VTK images start at the bottom row.
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x)
-      for (int c = 0; c < 3; ++c)
-        out.rgb[3 * (static_cast<std::size_t>(out.height - 1 - y) * out.width + x) + c] =
-            static_cast<unsigned char>(s->GetComponent(y * out.width + x, std::min(c, nc - 1)));
-  return out;
-}
-
-double Image::variance() const {
-  double sum = 0, sum2 = 0;
-  const std::size_t n = rgb.size() / 3;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double g = (rgb[3 * i] + rgb[3 * i + 1] + rgb[3 * i + 2]) / 3.0;
-    sum += g;
-    sum2 += g * g;
-  }
-  return sum2 / n - (sum / n) * (sum / n);
-}
 
 TEST(PostRender, FigureLandsOnTheExpectedPixels) {
   const PrivateDisplay display(false);

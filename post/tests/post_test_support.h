@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "png_image.h"
 #include "test_support.h"
 
 namespace isopound::post::test {
@@ -31,16 +32,7 @@ inline ::isopound::test::CommandResult run_solver(const std::string& args) {
   return ::isopound::test::run_command(std::string(ISOPOUND_BINARY) + " " + args);
 }
 
-struct Image {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;  // row 0 = top
-  const unsigned char* at(int x, int y_up) const {
-    return &rgb[3 * (static_cast<std::size_t>(height - 1 - y_up) * width + x)];
-  }
-  // Variance of the grey level: 0 for a blank image.
-  double variance() const;
-};
-
-Image read_png(const std::string& path);  // throws std::runtime_error
+using ::isopound::test::Image;
+using ::isopound::test::read_png;
 
 }  // namespace isopound::post::test

@@ -1,11 +1,6 @@
 // plan.png rendered by isopound-pre with no DISPLAY (a private Xvfb), read back: size,
 // non-blank, and known features at the pixels the drawing's scale puts them.
 #include <gtest/gtest.h>
-#include <vtkDataArray.h>
-#include <vtkImageData.h>
-#include <vtkNew.h>
-#include <vtkPNGReader.h>
-#include <vtkPointData.h>
 
 #include <cmath>
 #include <set>
@@ -18,28 +13,6 @@
 #include "pre_test_support.h"
 
 namespace isopound::pre::test {
-
-Image read_png(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such PNG");
-  vtkNew<vtkPNGReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkImageData* img = reader->GetOutput();
-  int dims[3];
-  img->GetDimensions(dims);
-  Image out;
-  out.width = dims[0];
-  out.height = dims[1];
-  vtkDataArray* s = img->GetPointData()->GetScalars();
-  const int nc = s->GetNumberOfComponents();
-  out.rgb.resize(3 * static_cast<std::size_t>(out.width) * out.height);
-  for (int y = 0; y < out.height; ++y)  // VTK images start at the bottom row
-    for (int x = 0; x < out.width; ++x)
-      for (int c = 0; c < 3; ++c)
-        out.rgb[3 * (static_cast<std::size_t>(out.height - 1 - y) * out.width + x) + c] =
-            static_cast<unsigned char>(s->GetComponent(y * out.width + x, std::min(c, nc - 1)));
-  return out;
-}
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "png_image.h"
 #include "test_support.h"
 
 namespace isopound::pre::test {
@@ -36,13 +37,7 @@ inline CommandResult run_pre(const std::string& args) {
                                        args);
 }
 
-struct Image {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;  // row 0 = top
-  const unsigned char* at(int x, int y_up) const {
-    return &rgb[3 * (static_cast<std::size_t>(height - 1 - y_up) * width + x)];
-  }
-};
-Image read_png(const std::string& path);
+using ::isopound::test::Image;
+using ::isopound::test::read_png;
 
 }  // namespace isopound::pre::test
