@@ -230,9 +230,16 @@ Figure frame_figure(const FrameMesh& mesh, double scale, int width, int height) 
       {{{margin / 2, margin + (-1.0 - z0) * s}, {width - margin / 2, margin + (-1.0 - z0) * s}},
        {0, 0, 0},
        1.0});
+  static constexpr const char* kNames[] = {"slab", "column", "bearing", "wall", "contact"};
+  add_frame_caption(fig, mesh.time, scale, kNames, kColours, 110, 40);
+  return fig;
+}
+
+void add_frame_caption(Figure& fig, double time, double scale, std::span<const char* const> names,
+                       std::span<const Rgb> colours, double spacing, double drop) {
   char title[96];
-  std::snprintf(title, sizeof title, "t = %.3f s   (displacements × %g)", mesh.time, scale);
-  fig.texts.push_back({{width / 2.0, height - 12.0},
+  std::snprintf(title, sizeof title, "t = %.3f s   (displacements × %g)", time, scale);
+  fig.texts.push_back({{fig.width / 2.0, fig.height - 12.0},
                        title,
                        14,
                        {0, 0, 0},
@@ -240,13 +247,11 @@ Figure frame_figure(const FrameMesh& mesh, double scale, int width, int height) 
                        VAlign::kTop,
                        0.0,
                        true});
-  const char* names[] = {"slab", "column", "bearing", "wall", "contact"};
-  for (int b = 0; b < 5; ++b) {
-    const double x = 20 + 110 * b, y = height - 40.0;
-    fig.lines.push_back({{{x, y}, {x + 20, y}}, kColours[b], 4.0});
+  for (std::size_t b = 0; b < names.size() && b < colours.size(); ++b) {
+    const double x = 20 + spacing * static_cast<double>(b), y = fig.height - drop;
+    fig.lines.push_back({{{x, y}, {x + 20, y}}, colours[b], 4.0});
     fig.texts.push_back({{x + 26, y}, names[b], 11, {0, 0, 0}, HAlign::kLeft, VAlign::kCentre});
   }
-  return fig;
 }
 
 std::string pvd_text(const std::vector<double>& times, const std::vector<std::string>& files) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,12 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
 // A picture of one frame (x-z view, equal axes, coloured by block, with the time and the scale):
 // the README's preview of an animation, and a quick look without ParaView.
 Figure frame_figure(const FrameMesh& mesh, double scale, int width = 900, int height = 520);
+
+// The caption of a frame picture: the title (time and displacement scale) at the top, and the
+// legend in a row below it, `spacing` px apart, `drop` px below the top: a short line in each
+// block's colour and the block's name.
+void add_frame_caption(Figure& fig, double time, double scale, std::span<const char* const> names,
+                       std::span<const Rgb> colours, double spacing, double drop);
 
 // The .pvd collection (ParaView Data) for files written at times.
 std::string pvd_text(const std::vector<double>& times, const std::vector<std::string>& files);

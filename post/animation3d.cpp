@@ -322,22 +322,9 @@ Figure frame_figure3d(const FrameMesh& mesh, double scale, int width, int height
          {static_cast<unsigned char>(base.r * light), static_cast<unsigned char>(base.g * light),
           static_cast<unsigned char>(base.b * light)}});
   }
-  char title[96];
-  std::snprintf(title, sizeof title, "t = %.3f s   (displacements × %g)", mesh.time, scale);
-  fig.texts.push_back({{width / 2.0, height - 12.0},
-                       title,
-                       14,
-                       {0, 0, 0},
-                       HAlign::kCentre,
-                       VAlign::kTop,
-                       0.0,
-                       true});
-  const char* names[] = {"slab", "column", "bearing", "wall", "contact", "F_N", "F_T"};
-  for (int b = 0; b < 7; ++b) {
-    const double x = 20 + 105 * b, y = height - 44.0;
-    fig.lines.push_back({{{x, y}, {x + 20, y}}, kColours[b], 4.0});
-    fig.texts.push_back({{x + 26, y}, names[b], 11, {0, 0, 0}, HAlign::kLeft, VAlign::kCentre});
-  }
+  static constexpr const char* kNames[] = {"slab",    "column", "bearing", "wall",
+                                           "contact", "F_N",    "F_T"};
+  add_frame_caption(fig, mesh.time, scale, kNames, kColours, 105, 44);
   return fig;
 }
 

@@ -11,18 +11,6 @@
 namespace isopound::post {
 namespace {
 
-std::vector<double> scaled(const std::vector<double>& v, double divisor) {
-  std::vector<double> out(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) out[i] = v[i] / divisor;
-  return out;
-}
-
-double peak_of(const std::vector<double>& v) {
-  double m = 0.0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  return m;
-}
-
 std::string short_label(const std::string& label, const RunData& run) {
   // Drop the structure name when there is one structure.
   if (run.structures.size() == 1) {

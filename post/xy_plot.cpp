@@ -6,6 +6,19 @@
 #include <limits>
 
 namespace isopound::post {
+
+std::vector<double> scaled(const std::vector<double>& v, double divisor) {
+  std::vector<double> out(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out[i] = v[i] / divisor;
+  return out;
+}
+
+double peak_of(const std::vector<double>& v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
 namespace {
 
 constexpr Rgb kBlack{0, 0, 0};

@@ -26,6 +26,11 @@ inline Series line_series(std::string label, std::vector<double> x, std::vector<
   return s;
 }
 
+// Every value of v divided by divisor (a change of unit for a series).
+std::vector<double> scaled(const std::vector<double>& v, double divisor);
+// The largest |value| of v (0 for an empty series).
+double peak_of(const std::vector<double>& v);
+
 struct Panel {
   std::string title;
   std::string x_title, y_title;  // with units, e.g. "time [s]"
