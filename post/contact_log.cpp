@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 namespace isopound::post {
-namespace {
 
 std::vector<std::string> split_csv(const std::string& line) {
   std::vector<std::string> out;
@@ -18,8 +17,6 @@ std::vector<std::string> split_csv(const std::string& line) {
   if (!line.empty() && line.back() == ',') out.push_back("");
   return out;
 }
-
-}  // namespace
 
 const ContactEvent* ContactLog::state_at(const std::string& pair, double t) const {
   const auto it = pairs.find(pair);

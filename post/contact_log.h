@@ -10,6 +10,10 @@
 
 namespace isopound::post {
 
+// The cells of one CSV line split at commas (no quoting: the files isopound writes need none);
+// a trailing comma gives a last empty cell.
+std::vector<std::string> split_csv(const std::string& line);
+
 struct ContactEvent {
   double time = 0.0;  // s
   std::string event;  // onset | contact | separation

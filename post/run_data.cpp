@@ -14,15 +14,6 @@ namespace fs = std::filesystem;
 namespace isopound::post {
 namespace {
 
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cell;
-  std::stringstream ss(line);
-  while (std::getline(ss, cell, ',')) out.push_back(cell);
-  if (!line.empty() && line.back() == ',') out.push_back("");
-  return out;
-}
-
 // A summary number that may be written as a bare number or as {value, unit}.
 std::optional<double> number_of(const nlohmann::json& j, const std::string& key) {
   if (!j.is_object() || !j.contains(key)) return std::nullopt;
