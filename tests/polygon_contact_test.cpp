@@ -962,3 +962,44 @@ TEST(PolygonContactStepLimit, FaceOnEqualsTheKelvinVoigtContact1D) {
 
 }  // namespace
 }  // namespace isopound
+
+namespace isopound {
+namespace {
+
+// Coulomb holds from the first instant of a contact: a slab that reaches a wall while sliding
+// along it at 2 m/s (c_T u̇_T ~ 18 MN > μ_s F_N) starts slipping at the onset (|F_T| = μ_k F_N),
+// not with the dashpot acting unbounded at the located onset (it was 2.3x F_N between adjacent
+// floors).
+TEST(PolygonContactFriction, ASlabArrivingWhileSlidingSlipsFromTheOnset) {
+  const double gap = 1e-5, h = 4e-4;
+  PolygonContactConfig cfg;
+  PolygonContact c("slab|wall", slab(0), wall_at(0.5 * kSide + gap), cfg);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(3), v = Eigen::VectorXd::Zero(3);
+  v[0] = 0.05;  // approaching the wall slowly: F_N = c_N v_imp ~ 3 MN
+  v[1] = 2.0;  // sliding along it
+  const auto trial = [&](double t, double step, bool freeze) {
+    u[0] = v[0] * t;
+    u[1] = v[1] * t;
+    c.begin_step(step, freeze);
+    c.set_trial(u, v);
+  };
+  trial(0.0, h, false);
+  c.commit();
+  trial(h, h, false);  // the gap closes at t = gap / 0.05 = 2e-4 s, half-way
+  const double theta = c.event_fraction();
+  ASSERT_NEAR(theta, 0.5, 1e-6);
+  c.revert();
+  trial(theta * h, theta * h, true);  // the step cut to end at the onset
+  c.commit();
+  ASSERT_TRUE(c.settle_event());
+  trial(theta * h, theta * h, true);  // the restart's evaluation at the onset
+  const ContactSnapshot s = c.snapshot();
+  ASSERT_TRUE(s.in_contact);
+  EXPECT_GT(s.normal_force, 0.0);  // the Kelvin–Voigt jump c_N v_imp
+  EXPECT_TRUE(s.slipping);
+  EXPECT_NEAR(std::abs(s.tangential_force), cfg.mu_kinetic * s.normal_force,
+              1e-9 * s.normal_force);
+}
+
+}  // namespace
+}  // namespace isopound

@@ -490,6 +490,17 @@ bool PolygonContact::settle_event() {
       C.episode_gross_work = C.gross_work;
       const double v_imp = std::max(C.witness_rate, 0.0);
       if (cfg_.normal_law) cfg_.normal_law->begin_contact(v_imp, C.phase);
+      // The contact's state at its onset (the limit A_c → 0+): its shape sets the first contact
+      // step, and Coulomb decides whether it starts sliding: a slab that arrives sliding along
+      // the other body at u̇_T has f_tr = c_T u̇_T against μ_s F_N (without this test the frozen
+      // status "stick" let c_T u̇_T act unbounded at the onset: 17 MN against F_N = 7 MN, seen
+      // between adjacent floors).
+      State at_onset;
+      evaluate(C.q, C.qdot, true, at_onset);
+      C.secant_width = at_onset.secant_width;
+      if (cfg_.friction)
+        C.slipping = std::abs(at_onset.tangential_trial) >
+                     cfg_.mu_static * std::max(at_onset.normal, 0.0);
       count_impact(v_imp);
       contact_step_ = onset_contact_step(C);
       steps_in_contact_ = 0;
