@@ -55,7 +55,7 @@ def main():
             first = max(first, abs(ta - tb))
     impacts = " ".join(f"{a['impacts_above_1mm_s']}/{b['impacts_above_1mm_s']}"
                        f"({a['impacts']}/{b['impacts']})" for a, b in zip(sr, sq))
-    print(f"worst peak {100 * worst[0]:.4f} % ({worst[1]}); impacts >= 1 mm/s per wall run/ref (all onsets) {impacts} "
+    print(f"worst peak {100 * worst[0]:.4f} % ({worst[1]}); impacts >= 1 mm/s per wall run/ref (all impacts) {impacts} "
           f"({'same' if same_impacts else 'DIFFER'}); first impacts within {1e3 * first:.4f} ms")
 
 
