@@ -112,9 +112,10 @@ TEST(Pounding3D, FaceOnReducesToThe2DKelvinVoigtWalls) {
                   tol * r2.absolute_acceleration[level].value)
           << mode << ", level " << level;
       EXPECT_LE(r3.displacement[3 * level + 1].value, 1e-10) << "y, level " << level;
-      // No rotation: its corner displacement below 1e-10 of the base displacement (measured
-      // 2e-14 rad x 8.25 m at the fixed step, 3e-13 rad at defaults).
-      EXPECT_LE(r3.displacement[3 * level + 2].value * 8.25, 1e-10 * u_base)
+      // No rotation: its corner displacement below 1e-8 of the base displacement, θ < 1e-10 rad
+      // (measured 2e-14 rad at the fixed step, 3e-13 rad at defaults; the margin is for the
+      // round-off seeds, which other summation orders change; 7e-8 rad with the old sliver).
+      EXPECT_LE(r3.displacement[3 * level + 2].value * 8.25, 1e-8 * u_base)
           << mode << ", rotation, level " << level;
     }
   }
