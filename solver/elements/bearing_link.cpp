@@ -58,7 +58,7 @@ void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const 
     const double x = p_OB_.x(), y = p_OB_.y();
     const double k02 = x * k(0, 1) - y * k(0, 0), k12 = x * k(1, 1) - y * k(1, 0);
     const double k20 = x * k(1, 0) - y * k(0, 0), k21 = x * k(1, 1) - y * k(0, 1);
-    const double k22 = x * k12 - y * k02;
+    const double k22 = x * k21 - y * k20;  // (T^T k) T, as Eigen associates it
     double* c0 = &K(dofs_.ux, dofs_.ux);
     double* c1 = &K(dofs_.ux, dofs_.ux + 1);
     double* c2 = &K(dofs_.ux, dofs_.ux + 2);
