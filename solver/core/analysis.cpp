@@ -35,6 +35,9 @@ std::vector<Story> stories_of(const Model& model) {
 namespace {
 
 void update(Peak& peak, double value, double t) {
+  // Most calls change nothing: peak.value = max(positive, -negative) (all start at 0), so a value
+  // within [negative, positive] cannot raise any of the three (NaN falls through as before).
+  if (value <= peak.positive && value >= peak.negative) return;
   const double a = std::abs(value);
   if (a > peak.value) {
     peak.value = a;

@@ -52,15 +52,32 @@ void BearingLink::add_force(Eigen::VectorXd& f) const {
 void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
   Eigen::Matrix2d k = law_->tangent();
   if (velocity_factor != 0.0) k += velocity_factor * law_->rate_tangent();
+  if (consecutive_) {
+    // (ux, uy, theta) = (i, i + 1, i + 2): T^T k T written out (T = [[1, 0, -y], [0, 1, x]]),
+    // added column by column to the contiguous 3x3 block.
+    const double x = p_OB_.x(), y = p_OB_.y();
+    const double k02 = x * k(0, 1) - y * k(0, 0), k12 = x * k(1, 1) - y * k(1, 0);
+    const double k20 = x * k(1, 0) - y * k(0, 0), k21 = x * k(1, 1) - y * k(0, 1);
+    const double k22 = x * k21 - y * k20;  // (T^T k) T, as Eigen associates it
+    double* c0 = &K(dofs_.ux, dofs_.ux);
+    double* c1 = &K(dofs_.ux, dofs_.ux + 1);
+    double* c2 = &K(dofs_.ux, dofs_.ux + 2);
+    c0[0] += k(0, 0);
+    c0[1] += k(1, 0);
+    c0[2] += k20;
+    c1[0] += k(0, 1);
+    c1[1] += k(1, 1);
+    c1[2] += k21;
+    c2[0] += k02;
+    c2[1] += k12;
+    c2[2] += k22;
+    return;
+  }
   // Columns of T for (ux, uy, theta).
   const int dof[3] = {dofs_.ux, dofs_.uy, dofs_.theta};
   Eigen::Matrix<double, 2, 3> T;
   T << 1.0, 0.0, -p_OB_.y(), 0.0, 1.0, p_OB_.x();
   const Eigen::Matrix3d kt = T.transpose() * k * T;
-  if (consecutive_) {  // (ux, uy, theta) = (i, i + 1, i + 2): one block, no index tests
-    K.block<3, 3>(dofs_.ux, dofs_.ux) += kt;
-    return;
-  }
   for (int a = 0; a < 3; ++a) {
     if (dof[a] < 0) continue;
     for (int b = 0; b < 3; ++b)

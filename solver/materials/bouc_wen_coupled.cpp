@@ -131,6 +131,77 @@ Vector2d CoupledBoucWenMaterial::trapezoid_step(const Vector2d& z, const Vector2
   return z1;
 }
 
+// The common case for n = 2 (a Newton iterate's increment): the whole path is one remainder
+// sub-increment (no full sub-increment, no component crossing 0). Then the general scheme below
+// reduces to z1 = lambda b (trapezoid_step's closed form) and, because M(z) e = Phi(z) and
+// de/dx = (I - e e^T)/l, its chain rule S = (I - l/2 J1)^-1 [(Phi0 + Phi1)/2 e^T + l/2 (M0 + M1)
+// de/dx] collapses to S = (I - l/2 J1)^-1 (M0 + M1)/2, with J(z) = -(w.z) I - z w^T and
+// M(z) = A I - z (c o z)^T for n = 2. The same scheme; only the rounding differs. Returns false
+// (nothing written) when the general path is needed.
+bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const Vector2d& dx,
+                                                      double length, ZUpdate& out) const {
+  const double e0 = dx[0] / length, e1 = dx[1] / length;
+  const double z0x = z0[0], z0y = z0[1];
+  const bool unloading0 = z0x * e0 < 0.0, unloading1 = z0y * e1 < 0.0;
+  const double c0 = p_.beta + (unloading0 ? -p_.gamma : p_.gamma);
+  const double c1 = p_.beta + (unloading1 ? -p_.gamma : p_.gamma);
+  const double w0 = c0 * e0, w1 = c1 * e1;
+  const double w_norm = std::sqrt(w0 * w0 + w1 * w1);
+  const double z_norm = std::sqrt(z0x * z0x + z0y * z0y);
+  // Sub-increment bound as in integrate(): h |dPhi/dz| <= 1/4 with |dPhi/dz| <= 2 |w| z_b.
+  const bool beyond = z_norm > z_saturation_;
+  const double z_bound = beyond ? z_norm : z_saturation_;
+  const double bound_pow_n = beyond ? z_norm * z_norm : z_saturation_pow_n_;
+  const double max_slope = w_norm * 2.0 * bound_pow_n / z_bound;
+  const double h_bound = max_slope > 0 ? kMaxSubincrementStiffness / max_slope : 1e300;
+  const double h_sub = std::max(h_bound, length / kMaxSubincrements);
+  if (!(length < h_sub)) return false;  // full sub-increments: the general path
+  const double A = p_.A;
+  // Phi0 = A e - z0 (w.z0).
+  const double s0 = w0 * z0x + w1 * z0y;
+  const double phi0x = A * e0 - z0x * s0, phi0y = A * e1 - z0y * s0;
+  // A component reaching 0 within the step: the general path splits there.
+  if (unloading0 && -2.0 * z0x / (phi0x + A * e0) < length) return false;
+  if (unloading1 && -2.0 * z0y / (phi0y + A * e1) < length) return false;
+  // Trapezoidal step (n = 2 closed form): z1 = 2 b / (1 + sqrt(1 + 2 l w.b)).
+  const double hh = 0.5 * length;
+  const double bx = z0x + hh * phi0x + hh * A * e0, by = z0y + hh * phi0y + hh * A * e1;
+  const double discriminant = 1.0 + 2.0 * length * (w0 * bx + w1 * by);
+  if (!(discriminant >= 0.0)) return false;
+  const double lambda = 2.0 / (1.0 + std::sqrt(discriminant));
+  const double z1x = lambda * bx, z1y = lambda * by;
+  // (M0 + M1)/2 with M(z) = A I - z (c o z)^T.
+  const double r00 = A - 0.5 * (z0x * c0 * z0x + z1x * c0 * z1x);
+  const double r01 = -0.5 * (z0x * c1 * z0y + z1x * c1 * z1y);
+  const double r10 = -0.5 * (z0y * c0 * z0x + z1y * c0 * z1x);
+  const double r11 = A - 0.5 * (z0y * c1 * z0y + z1y * c1 * z1y);
+  // I - l/2 J1 = (1 + l/2 w.z1) I + l/2 z1 w^T, inverted in closed form.
+  const double s1 = w0 * z1x + w1 * z1y;
+  const double a = 1.0 + hh * s1;
+  const double m00 = a + hh * z1x * w0, m01 = hh * z1x * w1;
+  const double m10 = hh * z1y * w0, m11 = a + hh * z1y * w1;
+  const double inv_det = 1.0 / (m00 * m11 - m01 * m10);
+  Matrix2d S;
+  S(0, 0) = (m11 * r00 - m01 * r10) * inv_det;
+  S(0, 1) = (m11 * r01 - m01 * r11) * inv_det;
+  S(1, 0) = (m00 * r10 - m10 * r00) * inv_det;
+  S(1, 1) = (m00 * r11 - m10 * r01) * inv_det;
+  Vector2d z(z1x, z1y);
+  // Back onto the rim when the trapezoidal map left the disc (as in integrate()).
+  if (p_.gamma >= 0.0 && z_norm <= z_saturation_ * (1.0 + 1e-12)) {
+    const double r1 = std::sqrt(z1x * z1x + z1y * z1y);
+    if (r1 > z_saturation_) {
+      const double scale = z_saturation_ / r1;
+      const Vector2d n = z / r1;
+      S = scale * (Matrix2d::Identity() - n * n.transpose()) * S;
+      z *= scale;
+    }
+  }
+  out.z = z;
+  out.dz_dx = S;
+  return true;
+}
+
 // Pseudocode of integrate(z0, dx), l = |dx|, e = dx/l, S = dz/dx carried along:
 //   repeat (at most 3 branches: each split turns an unloading component into a loading one)
 //     c_i = beta - gamma where e_i z_i < 0 (unloading), else beta + gamma; w = c o e
@@ -150,6 +221,10 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
     // A diverging Newton iterate: report NaN (the stepper then cuts the step), never loop.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return {Vector2d::Constant(nan), Matrix2d::Constant(nan)};
+  }
+  if (p_.n == 2.0) {
+    ZUpdate fast;
+    if (integrate_single_step_n2(z0, dx, length, fast)) return fast;
   }
   const Matrix2d I = Matrix2d::Identity();
   const Vector2d e = dx / length;

@@ -63,6 +63,10 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   Eigen::Vector2d trapezoid_step(const Eigen::Vector2d& z, const Eigen::Vector2d& phi_z, double h,
                                  const Eigen::Vector2d& e, const Eigen::Vector2d& c) const;
   double pow_n_minus_2(double r) const;  // r^(n-2) for r > 0
+  // integrate() for n = 2 when the increment is one remainder sub-increment on one branch (the
+  // common case); false when the general path is needed.
+  bool integrate_single_step_n2(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx, double length,
+                                ZUpdate& out) const;
 
   BoucWenParameters p_;
   double z_saturation_, z_saturation_pow_n_;
