@@ -122,8 +122,7 @@ double Contact1D::stored_energy() const {
 
 void Contact1D::commit() {
   if (trial_.started) {
-    contact_step_ =
-        contact_period_estimate(trial_.phase.impact_velocity, trial_.phase) / steps_per_contact_;
+    contact_step_ = contact_period_estimate(*law_, trial_.phase, m_eff_) / steps_per_contact_;
     ++impacts_;
     if (trial_.onset_rate >= kCountedImpactVelocity) ++counted_impacts_;
     max_impact_velocity_ = std::max(max_impact_velocity_, trial_.phase.impact_velocity);
@@ -194,8 +193,7 @@ bool Contact1D::settle_event() {
     case Event::kOnset:
       if (C.in_contact) return false;
       law_->begin_contact(std::max(C.rate, 0.0), C.phase);
-      contact_step_ =
-          contact_period_estimate(C.phase.impact_velocity, C.phase) / steps_per_contact_;
+      contact_step_ = contact_period_estimate(*law_, C.phase, m_eff_) / steps_per_contact_;
       steps_in_contact_ = 0;
       C.in_contact = true;
       ++impacts_;
@@ -240,7 +238,7 @@ double Contact1D::step_limit() const {
     if (!(std::abs(speed - approach_speed_) <= 0.25 * approach_speed_)) {
       ImpactPhase phase;
       law_->begin_contact(speed, phase);
-      approach_step_ = contact_period_estimate(phase.impact_velocity, phase) / steps_per_contact_;
+      approach_step_ = contact_period_estimate(*law_, phase, m_eff_) / steps_per_contact_;
       approach_speed_ = speed;
     }
     return std::max(toi.time, approach_step_);
@@ -250,10 +248,6 @@ double Contact1D::step_limit() const {
     limit =
         std::min(limit, std::numbers::pi * std::sqrt(m_eff_ / C.stiffness) / steps_per_contact_);
   return limit;
-}
-
-double Contact1D::contact_period_estimate(double impact_velocity, const ImpactPhase& phase) const {
-  return isopound::contact_period_estimate(*law_, phase, m_eff_, impact_velocity);
 }
 
 std::string Contact1D::output_name(int i) const {

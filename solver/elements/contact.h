@@ -88,7 +88,6 @@ class Contact1D final : public Element {
     double end_indentation = 0.0;  // penetration left when a no-tension contact ended
   };
   double kinematics(const Eigen::VectorXd& x) const;
-  double contact_period_estimate(double impact_velocity, const ImpactPhase& phase) const;
 
   std::string label_;
   ContactBody a_, b_;

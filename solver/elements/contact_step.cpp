@@ -17,9 +17,8 @@ TimeOfImpact time_of_impact(double distance, double approach_rate, double accele
   return r;
 }
 
-double contact_period_estimate(const ImpactLaw& law, const ImpactPhase& phase, double m_eff,
-                               double impact_velocity) {
-  const double energy = 0.5 * m_eff * impact_velocity * impact_velocity;
+double contact_period_estimate(const ImpactLaw& law, const ImpactPhase& phase, double m_eff) {
+  const double energy = 0.5 * m_eff * phase.impact_velocity * phase.impact_velocity;
   if (!(energy > 0)) return 1e300;
   double delta = 1e-3;
   for (int it = 0; it < 60; ++it) {

@@ -15,11 +15,11 @@ struct TimeOfImpact {
 };
 TimeOfImpact time_of_impact(double distance, double approach_rate, double acceleration_bound);
 
-// Duration of a contact of the law at impact velocity v_imp (s), from the peak penetration of
-// its elastic part (Newton on F_e delta / (n + 1) = m_eff v_imp^2 / 2) and the secant stiffness
-// there: pi sqrt(m_eff delta_max / F_e(delta_max)). 1e300 if the law stores no energy.
-double contact_period_estimate(const ImpactLaw& law, const ImpactPhase& phase, double m_eff,
-                               double impact_velocity);
+// Duration of a contact of the law begun with `phase` (s), from the peak penetration of its
+// elastic part (Newton on F_e delta / (n + 1) = m_eff v_imp^2 / 2, v_imp the phase's impact
+// velocity) and the secant stiffness there: pi sqrt(m_eff delta_max / F_e(delta_max)). 1e300 if
+// the law stores no energy.
+double contact_period_estimate(const ImpactLaw& law, const ImpactPhase& phase, double m_eff);
 
 // The step in the first steps of a contact: contact_step / 32, doubling each accepted step up to
 // contact_step from the sixth on (the force of the Hertz-type laws grows as delta^(n-1), the

@@ -277,6 +277,14 @@ double PolygonContact::secant_width_of(const Overlap& ov) const {
   return cfg_.indentation == IndentationRule::kThesis && ov.vertex_count == 3 ? 0.5 * w : w;
 }
 
+double PolygonContact::speed_bound(const Vec6& qdot) const {
+  double v = 0.0;
+  for (int body = 0; body < 2; ++body)
+    v += std::hypot(qdot[3 * body], qdot[3 * body + 1]) +
+         std::abs(qdot[3 * body + 2]) * length_scale_;
+  return v;
+}
+
 double PolygonContact::area_contact_step(double secant_width) const {
   const double k_sec = cfg_.k_normal * std::max(secant_width, width_floor_);
   return std::numbers::pi * std::sqrt(m_eff_ / k_sec) / cfg_.steps_per_contact;
@@ -378,14 +386,10 @@ void PolygonContact::commit() {
   }
   if (C.closed && !trial_.closed) end_episode(trial_);  // a separation no event located
   if (h_ > 0) {
-    // |δ̈| is bounded by the bodies' accelerations: |Δ(u̇, v̇)| + |Δθ̇| L of each, over the step.
-    double change = 0.0;
-    for (int body = 0; body < 2; ++body) {
-      const int k = 3 * body;
-      change += std::hypot(trial_.qdot[k] - C.qdot[k], trial_.qdot[k + 1] - C.qdot[k + 1]) +
-                std::abs(trial_.qdot[k + 2] - C.qdot[k + 2]) * length_scale_;
-    }
-    rate_change_ = change / h_;
+    // |δ̈| is bounded by the bodies' accelerations: the speed bound of the change of rates.
+    Vec6 change;
+    for (int k = 0; k < kDofs; ++k) change[k] = trial_.qdot[k] - C.qdot[k];
+    rate_change_ = speed_bound(change) / h_;
   }
   if (trial_.started) contact_step_ = onset_contact_step(trial_);
   steps_in_contact_ = trial_.started ? 0 : steps_in_contact_ + 1;
@@ -403,8 +407,7 @@ void PolygonContact::count_impact(double approach_rate) {
 
 double PolygonContact::onset_contact_step(const State& s) const {
   if (cfg_.normal_law)
-    return contact_period_estimate(*cfg_.normal_law, s.phase, m_eff_, s.phase.impact_velocity) /
-           cfg_.steps_per_contact;
+    return contact_period_estimate(*cfg_.normal_law, s.phase, m_eff_) / cfg_.steps_per_contact;
   return area_contact_step(s.secant_width);
 }
 
@@ -433,14 +436,7 @@ double PolygonContact::event_fraction() {
   // basis peaks at 4/27), and |ẇ| is at most the bodies' speed bound; so a box gap larger than
   // h (speed_C + speed_T) at both ends excludes a crossing without the three separation_of
   // calls of the witness.
-  const auto speed = [&](const State& s) {
-    double v = 0.0;
-    for (int body = 0; body < 2; ++body)
-      v += std::hypot(s.qdot[3 * body], s.qdot[3 * body + 1]) +
-           std::abs(s.qdot[3 * body + 2]) * length_scale_;
-    return v;
-  };
-  const double margin = h_ * (speed(C) + speed(T)) + 1e-9 * length_scale_;
+  const double margin = h_ * (speed_bound(C.qdot) + speed_bound(T.qdot)) + 1e-9 * length_scale_;
   const bool far = !C.closed && !T.closed && C.box_gap > margin && T.box_gap > margin;
   if (!far) {
     if (!C.witness_valid) compute_witness(C);
@@ -499,8 +495,8 @@ bool PolygonContact::settle_event() {
       evaluate(C.q, C.qdot, true, at_onset);
       C.secant_width = at_onset.secant_width;
       if (cfg_.friction)
-        C.slipping = std::abs(at_onset.tangential_trial) >
-                     cfg_.mu_static * std::max(at_onset.normal, 0.0);
+        C.slipping =
+            std::abs(at_onset.tangential_trial) > cfg_.mu_static * std::max(at_onset.normal, 0.0);
       count_impact(v_imp);
       contact_step_ = onset_contact_step(C);
       steps_in_contact_ = 0;
@@ -559,12 +555,8 @@ double PolygonContact::step_limit() const {
 double PolygonContact::approach_limit() const {
   if (approach_cached_) return approach_limit_;
   const State& C = committed_;
-  double speed_bound = 0.0;
-  for (int body = 0; body < 2; ++body)
-    speed_bound += std::hypot(C.qdot[3 * body], C.qdot[3 * body + 1]) +
-                   std::abs(C.qdot[3 * body + 2]) * length_scale_;
   const double acceleration_bound = 2.0 * rate_change_;
-  const TimeOfImpact far = time_of_impact(C.box_gap, speed_bound, acceleration_bound);
+  const TimeOfImpact far = time_of_impact(C.box_gap, speed_bound(C.qdot), acceleration_bound);
   approach_cached_ = true;
   if (far.time >= 2.0 * longest_step_) return approach_limit_ = far.time;
   State s = C;
@@ -575,8 +567,7 @@ double PolygonContact::approach_limit() const {
   if (cfg_.normal_law) {
     ImpactPhase phase;
     cfg_.normal_law->begin_contact(std::max(toi.arrival_speed, kCountedImpactVelocity), phase);
-    floor = contact_period_estimate(*cfg_.normal_law, phase, m_eff_, phase.impact_velocity) /
-            cfg_.steps_per_contact;
+    floor = contact_period_estimate(*cfg_.normal_law, phase, m_eff_) / cfg_.steps_per_contact;
   } else if (toi.time < area_contact_step(0.0)) {  // the floor's largest value (w = width_floor_)
     const ConvexPolygon pa = place(a_, C.q[0], C.q[1], C.q[2]);
     const ConvexPolygon pb = place(b_, C.q[3], C.q[4], C.q[5]);

@@ -182,6 +182,9 @@ class PolygonContact final : public Element {
   // `sliver` deep inside A: the shape of a contact at A_c → 0+ (empty if they are far apart).
   Overlap surface_overlap(const ConvexPolygon& pa, const ConvexPolygon& pb, const Vec6& q,
                           double sliver) const;
+  // Bound of the speed of any material point of the two bodies, relative to the other: Σ over
+  // A and B of |(u̇, v̇)| + |θ̇| L (m/s; of accelerations times a step when given rate changes).
+  double speed_bound(const Vec6& qdot) const;
   // A_c/δ_N of an overlap's shape under the configured indentation rule (w, or w/2).
   double secant_width_of(const Overlap& ov) const;
   // The contact step of the area law at a secant width (m): π √(m_eff/(k_N w_s))/steps, w_s
