@@ -10,6 +10,7 @@
 #include "solver/core/constants.h"
 #include "solver/core/modes.h"
 #include "solver/core/newmark.h"
+#include "solver/core/probe_record.h"
 
 namespace isopound {
 
@@ -33,25 +34,6 @@ std::vector<Story> stories_of(const Model& model) {
 }
 
 namespace {
-
-void update(Peak& peak, double value, double t) {
-  // Most calls change nothing: peak.value = max(positive, -negative) (all start at 0), so a value
-  // within [negative, positive] cannot raise any of the three (NaN falls through as before).
-  if (value <= peak.positive && value >= peak.negative) return;
-  const double a = std::abs(value);
-  if (a > peak.value) {
-    peak.value = a;
-    peak.time = t;
-  }
-  if (value > peak.positive) {
-    peak.positive = value;
-    peak.time_positive = t;
-  }
-  if (value < peak.negative) {
-    peak.negative = value;
-    peak.time_negative = t;
-  }
-}
 
 // Keeps the rows in AnalysisResult::history when no sink is given.
 class MemoryHistory : public HistorySink {
@@ -267,6 +249,20 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     outputs_total += output_count[e];
   }
   std::vector<double> output_scratch(outputs_total);
+  const auto bands_of = [](std::vector<Peak>& peaks) {
+    std::vector<Peak*> pointers;
+    for (Peak& peak : peaks) pointers.push_back(&peak);
+    return PeakBands(std::move(pointers));
+  };
+  PeakBands displacement_peaks = bands_of(res.displacement);
+  PeakBands velocity_peaks = bands_of(res.velocity);
+  PeakBands acceleration_peaks = bands_of(res.absolute_acceleration);
+  PeakBands output_peaks([&] {
+    std::vector<Peak*> peaks;
+    for (auto& element : res.element_outputs)
+      for (Peak& peak : element) peaks.push_back(&peak);
+    return peaks;
+  }());
 
   // Energy terms (trapezoidal rule on the powers).
   Eigen::VectorXd work(n);
@@ -276,43 +272,28 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   double initial_energy = -1.0;  // kinetic + recoverable energy of the initial conditions
   double stored_at_start = 0.0;  // element work is counted from 0, their energy from here
 
-  // The probes' terms in one contiguous list (the record runs every step): probe p's x terms
-  // are [probe_begin[2p], probe_begin[2p + 1]), its y terms [probe_begin[2p + 1], probe_begin[2p
-  // + 2]).
-  std::vector<int> probe_dof;
-  std::vector<double> probe_coefficient;
-  std::vector<std::size_t> probe_begin{0};
-  for (const PlanProbe& probe : model.probes)
-    for (const auto* terms : {&probe.x_terms, &probe.y_terms}) {
-      for (const auto& [dof, c] : *terms) {
-        probe_dof.push_back(dof);
-        probe_coefficient.push_back(c);
-      }
-      probe_begin.push_back(probe_dof.size());
-    }
+  ProbeRecorder probe_recorder(model.probes);
 
   auto record = [&](double t, const GroundAcceleration& ag, double h) {
     const Eigen::VectorXd& u = stepper.u();
     const Eigen::VectorXd& v = stepper.v();
     const Eigen::VectorXd& a = stepper.a();
     for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);  // absolute acceleration
-    for (int i = 0; i < n; ++i) {
-      update(res.displacement[i], u[i], t);
-      update(res.velocity[i], v[i], t);
-      update(res.absolute_acceleration[i], work[i], t);
-    }
+    displacement_peaks.record(u.data(), t);
+    velocity_peaks.record(v.data(), t);
+    acceleration_peaks.record(work.data(), t);
     for (std::size_t s = 0; s < res.stories.size(); ++s) {
       const Story& st = res.stories[s];
       const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
-      update(res.drift[s], drift, t);
-      update(res.drift_ratio[s], drift / st.height, t);
+      update_peak(res.drift[s], drift, t);
+      update_peak(res.drift_ratio[s], drift / st.height, t);
     }
     inertia.noalias() = model.mass * work;
     for (std::size_t s = 0; s < above_story.size(); ++s) {
       double shear = 0.0;
       for (const int d : above_story[s]) shear -= inertia[d];
       story_shear_now[s] = shear;
-      update(res.story_shear[s], shear, t);
+      update_peak(res.story_shear[s], shear, t);
     }
     // Base shear: the force of the isolation layer, isolator + isolation damping. The
     // superstructure's damping is internal to the levels and cancels in the sum.
@@ -325,39 +306,20 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       double shear = 0.0;
       for (const int d : above_base[s]) shear += isolator_force[d] + damping_force[d];
       base_shear_now[s] = shear;
-      update(res.base_shear[s], shear, t);
+      update_peak(res.base_shear[s], shear, t);
     }
     for (std::size_t k = 0; k < options.tracked.size(); ++k) {
       const TrackedCoordinate& c = options.tracked[k];
       const double x = (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) +
                        (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0) +
                        (c.dof_c >= 0 ? c.c_c * u[c.dof_c] : 0.0);
-      update(res.tracked[k], x, t);
+      update_peak(res.tracked[k], x, t);
     }
-    for (std::size_t p = 0; p < model.probes.size(); ++p) {
-      const PlanProbe& probe = model.probes[p];
-      // work holds the absolute accelerations until the energy terms below.
-      const double* value =
-          probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration ? work.data() : u.data();
-      const auto sum = [&](std::size_t begin, std::size_t end) {
-        double x = 0.0;
-        for (std::size_t k = begin; k < end; ++k) x += probe_coefficient[k] * value[probe_dof[k]];
-        return x;
-      };
-      const double x = sum(probe_begin[2 * p], probe_begin[2 * p + 1]);
-      const double y = sum(probe_begin[2 * p + 1], probe_begin[2 * p + 2]);
-      const double r = std::sqrt(x * x + y * y);
-      ProbePeaks& pk = res.probes[p];
-      update(pk.x, x, t);
-      update(pk.y, y, t);
-      update(pk.resultant, r, t);
-      if (probe.length > 0) update(pk.ratio, r / probe.length, t);
-    }
-    for (int e = 0; e < n_elements; ++e) {
-      double* values = output_scratch.data() + output_offset[e];
-      model.elements[e]->outputs(values);
-      for (int k = 0; k < output_count[e]; ++k) update(res.element_outputs[e][k], values[k], t);
-    }
+    // work holds the absolute accelerations until the energy terms below.
+    probe_recorder.record(u.data(), work.data(), t, res.probes);
+    for (int e = 0; e < n_elements; ++e)
+      model.elements[e]->outputs(output_scratch.data() + output_offset[e]);
+    output_peaks.record(output_scratch.data(), t);
 
     // Energy.
     double p_in = -v.dot(m_iota.col(0)) * ag.x;

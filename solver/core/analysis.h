@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "solver/core/model.h"
+#include "solver/core/peak.h"
+#include "solver/core/probe_record.h"
 #include "solver/excitation/ground_motion.h"
 #include "solver/structures/config.h"
 
@@ -24,13 +26,6 @@ class AnalysisError : public std::runtime_error {
  private:
   double time_;
   std::string dof_;
-};
-
-struct Peak {
-  double value = 0.0;                          // max |x| over time
-  double time = 0.0;                           // s, when it occurred
-  double positive = 0.0, time_positive = 0.0;  // max(x, 0) over time and when
-  double negative = 0.0, time_negative = 0.0;  // min(x, 0) over time (<= 0) and when
 };
 
 // A story: deformation u[upper] - u[lower] (lower = -1: the ground).
@@ -97,12 +92,6 @@ class StepObserver {
  public:
   virtual ~StepObserver() = default;
   virtual void after_step(double t, const Model& model) = 0;
-};
-
-// Peaks of a PlanProbe (model.h).
-struct ProbePeaks {
-  Peak x, y, resultant;  // m or m/s^2
-  Peak ratio;            // resultant / length, when length > 0
 };
 
 struct AnalysisResult {

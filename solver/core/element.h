@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <string>
+#include <vector>
 
 namespace isopound {
 
@@ -18,6 +19,10 @@ class Element {
   virtual void add_force(Eigen::VectorXd& f) const = 0;
   // K += df/du + velocity_factor df/dv (Newmark passes velocity_factor = dv/du = 2/h).
   virtual void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const = 0;
+  // Appends the DOFs whose force and tangent this element may ever touch and returns true;
+  // false (the default): it may touch any DOF. The stepper eliminates the DOFs no element
+  // touches once per step size (newmark.h).
+  virtual bool add_dofs(std::vector<int>& /*dofs*/) const { return false; }
   // False if add_tangent() may add a non-symmetric matrix (coupled bearings, friction): the
   // stepper then factors with LU instead of a symmetric factorisation.
   virtual bool symmetric_tangent() const { return true; }

@@ -2,6 +2,7 @@
 // step size, element tangents added each iteration, Cholesky (LDL^T fallback) or LU solve.
 #include "solver/core/newmark.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -23,7 +24,30 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   for (int i = 0; i < n; ++i) residual_weight_[i] = 1.0 / model.dofs[i].length;
   for (const auto& e : model.elements) use_lu_ = use_lu_ || !e->symmetric_tangent();
   k_tangent_.setZero(n, n);
-  k_hat_scratch_.setZero(n, n);
+  // Block elimination when every element declares its DOFs and enough DOFs stay linear.
+  bool declared = true;
+  for (const auto& e : model.elements) declared = e->add_dofs(element_dofs_) && declared;
+  std::sort(element_dofs_.begin(), element_dofs_.end());
+  element_dofs_.erase(std::unique(element_dofs_.begin(), element_dofs_.end()), element_dofs_.end());
+  for (int i = 0, k = 0; i < n; ++i) {
+    if (k < static_cast<int>(element_dofs_.size()) && element_dofs_[k] == i)
+      ++k;
+    else
+      linear_dofs_.push_back(i);
+  }
+  const int n_a = static_cast<int>(element_dofs_.size());
+  const int n_s = static_cast<int>(linear_dofs_.size());
+  use_blocks_ = declared && n_a > 0 && n_s >= kMinLinearDofs;
+  if (use_blocks_) {
+    k_elements_.setZero(n, n);
+    schur_.setZero(n_a, n_a);
+    schur_lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n_a);
+    r_s_.setZero(n_s);
+    y_s_.setZero(n_s);
+    r_a_.setZero(n_a);
+    x_a_.setZero(n_a);
+    k_ss_llt_ = Eigen::LLT<Eigen::MatrixXd>(n_s);
+  }
   // The accelerations come from M^-1: a mass matrix that is not symmetric positive definite
   // (a DOF without mass, a negative or NaN mass) is an input error, not a numerical accident.
   if (model.mass.rows() != n || model.mass.cols() != n)
@@ -83,23 +107,63 @@ void NewmarkStepper::restart(GroundAcceleration ag0) {
   for (auto& e : model_.elements) e->commit();
 }
 
-const Eigen::MatrixXd& NewmarkStepper::effective_linear(double h, bool cache) {
-  for (const auto& [step, matrix] : k_hat_cache_)
-    if (step == h) return matrix;
+void NewmarkStepper::fill_effective_linear(double h, EffectiveLinear& e) {
+  e.h = h;
+  e.k_hat = model_.stiffness;
+  e.k_hat += (2.0 / h) * model_.damping;
+  e.k_hat += (4.0 / (h * h)) * model_.mass;
+  e.blocks = false;
+  if (!use_blocks_) return;
+  // K_ss is K_hat's linear block: positive definite with M (4/h^2 M dominates).
+  e.k_ss_inv = e.k_hat(linear_dofs_, linear_dofs_);
+  k_ss_llt_.compute(e.k_ss_inv);
+  if (k_ss_llt_.info() != Eigen::Success) return;  // the full factorisation for this h
+  e.k_ss_inv.setIdentity();
+  k_ss_llt_.solveInPlace(e.k_ss_inv);
+  e.k_as = e.k_hat(element_dofs_, linear_dofs_);
+  e.k_ss_inv_sa.noalias() = e.k_ss_inv * e.k_hat(linear_dofs_, element_dofs_);
+  e.schur = e.k_hat(element_dofs_, element_dofs_);
+  e.schur.noalias() -= e.k_as * e.k_ss_inv_sa;
+  e.blocks = true;
+}
+
+const NewmarkStepper::EffectiveLinear& NewmarkStepper::effective_linear(double h, bool cache) {
+  for (const EffectiveLinear& e : k_hat_cache_)
+    if (e.h == h) return e;
   if (!cache) {
-    k_hat_scratch_ = model_.stiffness;
-    k_hat_scratch_ += (2.0 / h) * model_.damping;
-    k_hat_scratch_ += (4.0 / (h * h)) * model_.mass;
-    return k_hat_scratch_;
+    fill_effective_linear(h, k_hat_uncached_);
+    return k_hat_uncached_;
   }
-  k_hat_cache_.emplace_back(
-      h, model_.stiffness + (2.0 / h) * model_.damping + (4.0 / (h * h)) * model_.mass);
-  return k_hat_cache_.back().second;
+  k_hat_cache_.emplace_back();
+  fill_effective_linear(h, k_hat_cache_.back());
+  return k_hat_cache_.back();
+}
+
+void NewmarkStepper::solve_blocks(const EffectiveLinear& e) {
+  // Plain loops for the gathers: Eigen's indexed views copy a std::vector index (an allocation).
+  const int n_a = static_cast<int>(element_dofs_.size());
+  const int n_s = static_cast<int>(linear_dofs_.size());
+  for (const int i : element_dofs_)
+    for (const int j : element_dofs_) k_elements_(i, j) = 0.0;
+  for (const auto& el : model_.elements) el->add_tangent(k_elements_, 2.0 / h_);
+  for (int j = 0; j < n_a; ++j)
+    for (int i = 0; i < n_a; ++i)
+      schur_(i, j) = e.schur(i, j) + k_elements_(element_dofs_[i], element_dofs_[j]);
+  for (int i = 0; i < n_s; ++i) r_s_[i] = r_[linear_dofs_[i]];
+  for (int i = 0; i < n_a; ++i) r_a_[i] = r_[element_dofs_[i]];
+  y_s_.noalias() = e.k_ss_inv * r_s_;  // K_ss^-1 r_s
+  r_a_.noalias() -= e.k_as * y_s_;
+  schur_lu_.compute(schur_);
+  x_a_ = schur_lu_.solve(r_a_);
+  y_s_.noalias() -= e.k_ss_inv_sa * x_a_;
+  for (int i = 0; i < n_a; ++i) du_[element_dofs_[i]] = x_a_[i];
+  for (int i = 0; i < n_s; ++i) du_[linear_dofs_[i]] = y_s_[i];
 }
 
 StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cache, bool freeze) {
   h_ = h;
-  const Eigen::MatrixXd& k_hat = effective_linear(h, cache);
+  const EffectiveLinear& linear = effective_linear(h, cache);
+  const Eigen::MatrixXd& k_hat = linear.k_hat;
   for (auto& e : model_.elements) e->begin_step(h, freeze);
   const double c1 = 4.0 / (h * h), c2 = 4.0 / h;
   // Incremental form: the unknown is du = u1 - u0, so that a1 = 4/h^2 du - 4/h v0 - a0 carries
@@ -135,6 +199,11 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
       break;
     }
     if (it == settings_.max_iterations) break;
+    if (linear.blocks) {
+      solve_blocks(linear);
+      delta_ -= du_;
+      continue;
+    }
     k_tangent_ = k_hat;
     for (const auto& e : model_.elements) e->add_tangent(k_tangent_, 2.0 / h);
     if (use_lu_) {

@@ -29,6 +29,15 @@ struct StepOutcome {
 // factored by Cholesky (LDL^T fallback), or by LU when an element's tangent may be
 // non-symmetric (Element::symmetric_tangent()).
 // Nothing is allocated per step once each distinct h has been seen (K_hat is cached per h).
+//
+// Block elimination. When the elements declare their DOFs (Element::add_dofs) and leave at least
+// kMinLinearDofs of them untouched (a superstructure above the bearings), those linear DOFs s
+// are eliminated once per h: with a the element DOFs,
+//   [K_ss K_sa; K_as K_aa + E] [x_s; x_a] = [r_s; r_a]  (E: the elements' tangent)
+//   (S0 + E) x_a = r_a - K_as K_ss^-1 r_s,  S0 = K_aa - K_as K_ss^-1 K_sa,
+//   x_s = K_ss^-1 r_s - (K_ss^-1 K_sa) x_a,
+// so a Newton iteration factors only the small (S0 + E) by LU. The same equations as the full
+// factorisation, in another order: results agree to round-off.
 class NewmarkStepper {
  public:
   // Throws std::invalid_argument if M is not symmetric positive definite (e.g. a DOF without
@@ -64,7 +73,20 @@ class NewmarkStepper {
   bool uses_lu() const { return use_lu_; }
 
  private:
-  const Eigen::MatrixXd& effective_linear(double h, bool cache);
+  // K_hat and, with the block elimination, its linear-block terms for step h.
+  struct EffectiveLinear {
+    double h = 0.0;
+    Eigen::MatrixXd k_hat;        // K + 2/h C + 4/h^2 M
+    Eigen::MatrixXd k_ss_inv;     // K_ss^-1 (linear DOFs)
+    Eigen::MatrixXd k_ss_inv_sa;  // K_ss^-1 K_sa
+    Eigen::MatrixXd k_as;         // K_as
+    Eigen::MatrixXd schur;        // S0 = K_aa - K_as K_ss^-1 K_sa
+    bool blocks = false;          // the block terms are set (else: the full factorisation)
+  };
+  const EffectiveLinear& effective_linear(double h, bool cache);
+  void fill_effective_linear(double h, EffectiveLinear& e);
+  // du_ = (K_hat + element tangent)^-1 r_ by block elimination (the tangent in k_elements_).
+  void solve_blocks(const EffectiveLinear& e);
 
   Model& model_;
   NewtonSettings settings_;
@@ -76,14 +98,23 @@ class NewmarkStepper {
   bool use_lu_ = false;
   Eigen::VectorXd delta_;  // u1 - u0 of the trial
   Eigen::MatrixXd k_tangent_;
-  Eigen::MatrixXd k_hat_scratch_;  // K_hat of an uncached step
   // Factorisations are only ever computed in place, never copied (an unused Eigen
   // factorisation holds uninitialised state).
   Eigen::LLT<Eigen::MatrixXd> llt_;
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   Eigen::LLT<Eigen::MatrixXd> mass_llt_;
-  std::vector<std::pair<double, Eigen::MatrixXd>> k_hat_cache_;
+  std::vector<EffectiveLinear> k_hat_cache_;
+  EffectiveLinear k_hat_uncached_;
+  // Block elimination (see above): element DOFs a and linear DOFs s, in index order.
+  static constexpr int kMinLinearDofs = 8;
+  bool use_blocks_ = false;
+  std::vector<int> element_dofs_, linear_dofs_;
+  Eigen::MatrixXd k_elements_;  // the elements' tangent (nonzero only on a x a)
+  Eigen::MatrixXd schur_;       // S0 + E
+  Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;
+  Eigen::VectorXd r_s_, r_a_, y_s_, x_a_;
+  Eigen::LLT<Eigen::MatrixXd> k_ss_llt_;
   double h_ = 0.0;
 };
 

@@ -19,6 +19,7 @@ BearingLink::BearingLink(std::string label, DiaphragmDofs dofs, Eigen::Vector2d 
       dofs_(dofs),
       p_OB_(p_OB),
       law_(std::move(law)),
+      coupled_(dynamic_cast<CoupledBoucWenMaterial*>(law_.get())),
       planar_(dofs.uy < 0 && dofs.theta < 0),
       consecutive_(dofs.ux >= 0 && dofs.uy == dofs.ux + 1 && dofs.theta == dofs.ux + 2) {
   if (!law_) throw std::invalid_argument("bearing '" + label_ + "': no law");
@@ -39,19 +40,35 @@ Eigen::Vector2d BearingLink::deformation_of(const Eigen::VectorXd& u) const {
 }
 
 void BearingLink::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
-  law_->set_trial(deformation_of(u), deformation_of(v));
+  const Eigen::Vector2d d = deformation_of(u), rate = deformation_of(v);
+  with_law([&](auto& law) { law.set_trial(d, rate); });
+}
+
+double BearingLink::stored_energy() const {
+  return with_law([](const auto& law) { return law.stored_energy(); });
+}
+
+void BearingLink::commit() {
+  with_law([](auto& law) { law.commit(); });
+}
+
+void BearingLink::revert() {
+  with_law([](auto& law) { law.revert(); });
 }
 
 void BearingLink::add_force(Eigen::VectorXd& f) const {
-  const Eigen::Vector2d F = law_->force();
+  const Eigen::Vector2d F = with_law([](const auto& law) { return law.force(); });
   if (dofs_.ux >= 0) f[dofs_.ux] += F[0];
   if (dofs_.uy >= 0) f[dofs_.uy] += F[1];
   if (dofs_.theta >= 0) f[dofs_.theta] += p_OB_.x() * F[1] - p_OB_.y() * F[0];
 }
 
 void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
-  Eigen::Matrix2d k = law_->tangent();
-  if (velocity_factor != 0.0) k += velocity_factor * law_->rate_tangent();
+  const Eigen::Matrix2d k = with_law([&](const auto& law) {
+    Eigen::Matrix2d tangent = law.tangent();
+    if (velocity_factor != 0.0) tangent += velocity_factor * law.rate_tangent();
+    return tangent;
+  });
   if (consecutive_) {
     // (ux, uy, theta) = (i, i + 1, i + 2): T^T k T written out (T = [[1, 0, -y], [0, 1, x]]),
     // added column by column to the contiguous 3x3 block.
@@ -86,7 +103,7 @@ void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const 
 }
 
 double BearingLink::power(const Eigen::VectorXd& v) const {
-  return law_->force().dot(deformation_of(v));
+  return with_law([](const auto& law) { return law.force(); }).dot(deformation_of(v));
 }
 
 std::string BearingLink::output_name(int i) const {
@@ -98,9 +115,12 @@ std::string BearingLink::output_unit(int i) const {
 }
 
 void BearingLink::outputs(double* out) const {
-  const Eigen::Vector2d F = law_->force();
-  const Eigen::Vector2d d = law_->deformation();
-  const Eigen::Vector2d z = law_->internal();
+  Eigen::Vector2d F, d, z;
+  with_law([&](const auto& law) {
+    F = law.force();
+    d = law.deformation();
+    z = law.internal();
+  });
   if (planar_) {
     out[0] = F[0];
     out[1] = d[0];

@@ -8,6 +8,7 @@
 
 #include "solver/core/element.h"
 #include "solver/materials/biaxial_material.h"
+#include "solver/materials/bouc_wen_coupled.h"
 
 namespace isopound {
 
@@ -32,12 +33,17 @@ class BearingLink final : public Element {
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
+  bool add_dofs(std::vector<int>& dofs) const override {
+    for (const int d : {dofs_.ux, dofs_.uy, dofs_.theta})
+      if (d >= 0) dofs.push_back(d);
+    return true;
+  }
   // The law's symmetry; a planar bearing (one DOF) always gives a symmetric 1x1 block.
   bool symmetric_tangent() const override { return planar_ || law_->symmetric_tangent(); }
   double power(const Eigen::VectorXd& v) const override;
-  double stored_energy() const override { return law_->stored_energy(); }
-  void commit() override { law_->commit(); }
-  void revert() override { law_->revert(); }
+  double stored_energy() const override;
+  void commit() override;
+  void revert() override;
 
   int output_count() const override { return planar_ ? 3 : 9; }
   std::string output_name(int i) const override;
@@ -52,10 +58,18 @@ class BearingLink final : public Element {
   Eigen::Vector2d deformation_of(const Eigen::VectorXd& u) const;
 
  private:
+  // f(law) with the law's concrete type when it is the coupled Bouc-Wen (a final class, so its
+  // calls are direct and inline: the bearing is called ~200 times a step), else virtually.
+  template <class F>
+  decltype(auto) with_law(F&& f) const {
+    return coupled_ ? f(*coupled_) : f(*law_);
+  }
+
   std::string label_;
   DiaphragmDofs dofs_;
   Eigen::Vector2d p_OB_;
   std::unique_ptr<BiaxialMaterial> law_;
+  CoupledBoucWenMaterial* coupled_;  // law_ when it is one, else null
   bool planar_;
   bool consecutive_;  // the three DOFs are present and consecutive (a 3D diaphragm)
 };

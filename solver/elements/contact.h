@@ -36,6 +36,11 @@ class Contact1D final : public Element {
     h_ = h;
     freeze_ = freeze_status;
   }
+  bool add_dofs(std::vector<int>& dofs) const override {
+    for (const ContactBody& body : {a_, b_})
+      if (body.dof >= 0) dofs.push_back(body.dof);
+    return true;
+  }
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;

@@ -97,6 +97,11 @@ class PolygonContact final : public Element {
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
   // The thesis force acts at C along the chord normal: not the gradient of a potential once
   // the bodies rotate, so the tangent is non-symmetric even without friction.
+  bool add_dofs(std::vector<int>& dofs) const override {
+    for (const int d : dof_)
+      if (d >= 0) dofs.push_back(d);
+    return true;
+  }
   bool symmetric_tangent() const override { return false; }
   double power(const Eigen::VectorXd& v) const override;
   double stored_energy() const override;

@@ -17,6 +17,11 @@ class UniaxialLink final : public Element {
   // dof_i may be kGround. The link owns its material.
   UniaxialLink(std::string label, int dof_i, int dof_j, std::unique_ptr<UniaxialMaterial> law);
 
+  bool add_dofs(std::vector<int>& dofs) const override {
+    dofs.push_back(j_);
+    if (i_ != kGround) dofs.push_back(i_);
+    return true;
+  }
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;

@@ -1,0 +1,138 @@
+// Plan-probe peaks with a per-group bound that skips groups which cannot raise a peak.
+#include "solver/core/probe_record.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+
+namespace isopound {
+
+namespace {
+
+using Terms = std::vector<std::pair<int, double>>;
+
+std::vector<int> dofs_of(const Terms& terms) {
+  std::vector<int> dofs;
+  for (const auto& term : terms) dofs.push_back(term.first);
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  return dofs;
+}
+
+// Bounds are inflated by this factor, and get this share of the terms' magnitudes added: a
+// probe's sum and the bound round differently (a drift cancels two large displacements), and a
+// skipped group must never hide a raise.
+constexpr double kBoundInflation = 1.0 + 1e-9;
+constexpr double kRoundOffSlack = 1e-12;
+
+}  // namespace
+
+double ProbeRecorder::Bound::value(const double* q) const {
+  double b = 0.0;
+  for (std::size_t j = 0; j < basis.size(); ++j) {
+    double w_q = 0.0;
+    for (const Term& term : basis[j]) w_q += term.coefficient * q[term.dof];
+    b += weight[j] * std::abs(w_q);
+  }
+  double scale = 0.0;
+  for (const Term& term : magnitude) scale += term.coefficient * std::abs(q[term.dof]);
+  return b * kBoundInflation + kRoundOffSlack * scale;
+}
+
+ProbeRecorder::ProbeRecorder(const std::vector<PlanProbe>& probes) {
+  begin_.push_back(0);
+  for (const PlanProbe& probe : probes) {
+    for (const auto* terms : {&probe.x_terms, &probe.y_terms}) {
+      for (const auto& [dof, c] : *terms) terms_.push_back({dof, c});
+      begin_.push_back(terms_.size());
+    }
+    length_.push_back(probe.length);
+  }
+  // Group by quantity and DOFs, in order of first appearance.
+  std::map<std::tuple<bool, std::vector<int>, std::vector<int>>, std::size_t> group_of;
+  for (std::size_t p = 0; p < probes.size(); ++p) {
+    const bool acceleration = probes[p].quantity == PlanProbe::Quantity::kAbsoluteAcceleration;
+    const auto key =
+        std::make_tuple(acceleration, dofs_of(probes[p].x_terms), dofs_of(probes[p].y_terms));
+    const auto [it, added] = group_of.try_emplace(key, groups_.size());
+    if (added) {
+      groups_.emplace_back();
+      groups_.back().acceleration = acceleration;
+    }
+    groups_[it->second].members.push_back(p);
+  }
+  // Each bound from the members' coefficient matrix C (DOFs x members): a basis W of C's columns
+  // (rank-revealing QR) and the coordinates beta of every member in it; when the coordinates do
+  // not reproduce C (never for probes of a rigid floor), the basis is every member itself.
+  const auto make_bound = [&](const std::vector<std::size_t>& members, bool y) {
+    const std::vector<int> dofs =
+        dofs_of(y ? probes[members[0]].y_terms : probes[members[0]].x_terms);
+    const Eigen::Index n_dofs = static_cast<Eigen::Index>(dofs.size());
+    const Eigen::Index n_members = static_cast<Eigen::Index>(members.size());
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n_dofs, n_members);
+    for (Eigen::Index k = 0; k < n_members; ++k)
+      for (const auto& [d, c] : y ? probes[members[k]].y_terms : probes[members[k]].x_terms)
+        C(std::lower_bound(dofs.begin(), dofs.end(), d) - dofs.begin(), k) += c;
+    Bound bound;
+    for (Eigen::Index i = 0; i < n_dofs; ++i)
+      bound.magnitude.push_back({dofs[i], C.row(i).cwiseAbs().maxCoeff()});
+    if (n_dofs == 0) return bound;
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(C);
+    const Eigen::Index rank = qr.rank();
+    Eigen::MatrixXd W(n_dofs, rank);
+    for (Eigen::Index j = 0; j < rank; ++j) W.col(j) = C.col(qr.colsPermutation().indices()[j]);
+    Eigen::MatrixXd beta = W.colPivHouseholderQr().solve(C);
+    if (!((W * beta - C).norm() <= 1e-12 * C.norm())) {
+      W = C;
+      beta = Eigen::MatrixXd::Identity(n_members, n_members);
+    }
+    for (Eigen::Index j = 0; j < W.cols(); ++j) {
+      std::vector<Term> w;
+      for (Eigen::Index i = 0; i < n_dofs; ++i)
+        if (W(i, j) != 0.0) w.push_back({dofs[i], W(i, j)});
+      bound.basis.push_back(std::move(w));
+      bound.weight.push_back(beta.row(j).cwiseAbs().maxCoeff());
+    }
+    return bound;
+  };
+  for (Group& g : groups_) {
+    g.x = make_bound(g.members, false);
+    g.y = make_bound(g.members, true);
+  }
+}
+
+void ProbeRecorder::record(const double* u, const double* a_abs, double t,
+                           std::vector<ProbePeaks>& peaks) {
+  for (Group& g : groups_) {
+    const double* q = g.acceleration ? a_abs : u;
+    const double bx = g.x.value(q), by = g.y.value(q);
+    // NaN bounds fail every test and fall through to the members (which record the NaN).
+    if (bx <= g.limit_x && by <= g.limit_y &&
+        (bx * bx + by * by) * kBoundInflation <= g.limit_resultant * g.limit_resultant)
+      continue;
+    g.limit_x = g.limit_y = g.limit_resultant = std::numeric_limits<double>::infinity();
+    for (const std::size_t p : g.members) {
+      const auto sum = [&](std::size_t begin, std::size_t end) {
+        double x = 0.0;
+        for (std::size_t k = begin; k < end; ++k) x += terms_[k].coefficient * q[terms_[k].dof];
+        return x;
+      };
+      const double x = sum(begin_[2 * p], begin_[2 * p + 1]);
+      const double y = sum(begin_[2 * p + 1], begin_[2 * p + 2]);
+      ProbePeaks& pk = peaks[p];
+      update_peak(pk.x, x, t);
+      update_peak(pk.y, y, t);
+      const double r = std::sqrt(x * x + y * y);
+      update_peak(pk.resultant, r, t);
+      if (length_[p] > 0) update_peak(pk.ratio, r / length_[p], t);
+      g.limit_x = std::min({g.limit_x, pk.x.positive, -pk.x.negative});
+      g.limit_y = std::min({g.limit_y, pk.y.positive, -pk.y.negative});
+      g.limit_resultant = std::min(g.limit_resultant, pk.resultant.value);
+    }
+  }
+}
+
+}  // namespace isopound

@@ -1,0 +1,59 @@
+// Peaks of the model's plan probes (model.h): x = sum c_k q_k, y likewise, and the resultant
+// sqrt(x^2 + y^2) at each instant, q the displacements or the absolute accelerations.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "solver/core/model.h"
+#include "solver/core/peak.h"
+
+namespace isopound {
+
+// Peaks of a PlanProbe.
+struct ProbePeaks {
+  Peak x, y, resultant;  // m or m/s^2
+  Peak ratio;            // resultant / length, when length > 0
+};
+
+// Records the probes' peaks every step, exactly as evaluating every probe would, but cheaply.
+// Probes of one quantity over the same DOFs (a floor's centre and corners, a storey's columns)
+// form a group. Their x coefficient vectors span a small space (rank 2 for the columns of a
+// storey: drift - y dtheta) with a basis w_j taken from the members, c_k = sum_j beta_kj w_j, so
+//   |x_k| <= sum_j max_k |beta_kj| |w_j . q|.
+// A group whose bounds (inflated well beyond round-off) cannot raise any member's peak is skipped
+// whole: after the strong motion almost no probe is evaluated.
+class ProbeRecorder {
+ public:
+  explicit ProbeRecorder(const std::vector<PlanProbe>& probes);
+
+  // u: displacements, a_abs: absolute accelerations (per DOF); t: the time, s.
+  void record(const double* u, const double* a_abs, double t, std::vector<ProbePeaks>& peaks);
+
+ private:
+  struct Term {
+    int dof;
+    double coefficient;
+  };
+  // A bound of |x| (or |y|) over a group: sum_j weight_j |w_j . q| + slack sum_d c_d |q_d|.
+  struct Bound {
+    std::vector<std::vector<Term>> basis;  // w_j
+    std::vector<double> weight;            // max_k |beta_kj|
+    std::vector<Term> magnitude;           // (d, max_k |c_kd|): scale of the round-off
+    double value(const double* q) const;
+  };
+  struct Group {
+    bool acceleration = false;  // the members read a_abs (else u)
+    std::vector<std::size_t> members;
+    Bound x, y;
+    // The members' smallest margins: no |x| <= limit_x raises an x peak, etc.
+    double limit_x = 0.0, limit_y = 0.0, limit_resultant = 0.0;
+  };
+  // Probe p's x terms are terms_[begin_[2p], begin_[2p + 1]), its y terms up to begin_[2p + 2].
+  std::vector<Term> terms_;
+  std::vector<std::size_t> begin_;
+  std::vector<double> length_;
+  std::vector<Group> groups_;
+};
+
+}  // namespace isopound
