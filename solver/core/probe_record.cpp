@@ -30,16 +30,19 @@ constexpr double kRoundOffSlack = 1e-12;
 
 }  // namespace
 
-double ProbeRecorder::Bound::value(const double* q) const {
-  double b = 0.0;
-  for (std::size_t j = 0; j < basis.size(); ++j) {
+double ProbeRecorder::bound(const Bound& b, const double* q) const {
+  double sum = 0.0;
+  std::size_t k = b.first;
+  for (std::size_t j = 0; j < b.ends.size(); ++j) {
     double w_q = 0.0;
-    for (const Term& term : basis[j]) w_q += term.coefficient * q[term.dof];
-    b += weight[j] * std::abs(w_q);
+    for (const std::size_t end = b.first + b.ends[j]; k < end; ++k)
+      w_q += bound_terms_[k].coefficient * q[bound_terms_[k].dof];
+    sum += b.weight[j] * std::abs(w_q);
   }
   double scale = 0.0;
-  for (const Term& term : magnitude) scale += term.coefficient * std::abs(q[term.dof]);
-  return b * kBoundInflation + kRoundOffSlack * scale;
+  for (k = b.magnitude; k < b.magnitude_end; ++k)
+    scale += bound_terms_[k].coefficient * std::abs(q[bound_terms_[k].dof]);
+  return sum * kBoundInflation + kRoundOffSlack * scale;
 }
 
 ProbeRecorder::ProbeRecorder(const std::vector<PlanProbe>& probes) {
@@ -77,8 +80,11 @@ ProbeRecorder::ProbeRecorder(const std::vector<PlanProbe>& probes) {
       for (const auto& [d, c] : y ? probes[members[k]].y_terms : probes[members[k]].x_terms)
         C(std::lower_bound(dofs.begin(), dofs.end(), d) - dofs.begin(), k) += c;
     Bound bound;
+    bound.magnitude = bound_terms_.size();
     for (Eigen::Index i = 0; i < n_dofs; ++i)
-      bound.magnitude.push_back({dofs[i], C.row(i).cwiseAbs().maxCoeff()});
+      bound_terms_.push_back({dofs[i], C.row(i).cwiseAbs().maxCoeff()});
+    bound.magnitude_end = bound_terms_.size();
+    bound.first = bound_terms_.size();
     if (n_dofs == 0) return bound;
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(C);
     const Eigen::Index rank = qr.rank();
@@ -90,10 +96,9 @@ ProbeRecorder::ProbeRecorder(const std::vector<PlanProbe>& probes) {
       beta = Eigen::MatrixXd::Identity(n_members, n_members);
     }
     for (Eigen::Index j = 0; j < W.cols(); ++j) {
-      std::vector<Term> w;
       for (Eigen::Index i = 0; i < n_dofs; ++i)
-        if (W(i, j) != 0.0) w.push_back({dofs[i], W(i, j)});
-      bound.basis.push_back(std::move(w));
+        if (W(i, j) != 0.0) bound_terms_.push_back({dofs[i], W(i, j)});
+      bound.ends.push_back(bound_terms_.size() - bound.first);
       bound.weight.push_back(beta.row(j).cwiseAbs().maxCoeff());
     }
     return bound;
@@ -108,7 +113,7 @@ void ProbeRecorder::record(const double* u, const double* a_abs, double t,
                            std::vector<ProbePeaks>& peaks) {
   for (Group& g : groups_) {
     const double* q = g.acceleration ? a_abs : u;
-    const double bx = g.x.value(q), by = g.y.value(q);
+    const double bx = bound(g.x, q), by = bound(g.y, q);
     // NaN bounds fail every test and fall through to the members (which record the NaN).
     if (bx <= g.limit_x && by <= g.limit_y &&
         (bx * bx + by * by) * kBoundInflation <= g.limit_resultant * g.limit_resultant)

@@ -35,13 +35,16 @@ class ProbeRecorder {
     int dof;
     double coefficient;
   };
-  // A bound of |x| (or |y|) over a group: sum_j weight_j |w_j . q| + slack sum_d c_d |q_d|.
+  // A bound of |x| (or |y|) over a group: sum_j weight_j |w_j . q| + slack sum_d c_d |q_d|,
+  // stored flat in bound_terms_: basis vector j's terms [first + ends[j-1], first + ends[j]).
   struct Bound {
-    std::vector<std::vector<Term>> basis;  // w_j
-    std::vector<double> weight;            // max_k |beta_kj|
-    std::vector<Term> magnitude;           // (d, max_k |c_kd|): scale of the round-off
-    double value(const double* q) const;
+    std::size_t first = 0;          // in bound_terms_
+    std::vector<std::size_t> ends;  // per basis vector, relative to first
+    std::vector<double> weight;     // max_k |beta_kj|
+    std::size_t magnitude = 0;      // (d, max_k |c_kd|) terms [magnitude, magnitude_end)
+    std::size_t magnitude_end = 0;  // (the scale of the round-off)
   };
+  double bound(const Bound& b, const double* q) const;
   struct Group {
     bool acceleration = false;  // the members read a_abs (else u)
     std::vector<std::size_t> members;
@@ -53,6 +56,7 @@ class ProbeRecorder {
   std::vector<Term> terms_;
   std::vector<std::size_t> begin_;
   std::vector<double> length_;
+  std::vector<Term> bound_terms_;
   std::vector<Group> groups_;
 };
 
