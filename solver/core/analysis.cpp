@@ -175,7 +175,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   for (int e = 0; e < n_elements; ++e)
     res.element_outputs[e].resize(model.elements[e]->output_count());
 
-  NewmarkStepper stepper(model, {cfg.newton_tolerance, cfg.max_iterations});
+  NewmarkStepper stepper(model, {cfg.newton_tolerance, cfg.max_iterations, cfg.block_elimination});
 
   // Analysis interval H divides the record interval so that H <= the largest step.
   const bool adaptive = cfg.stepping == AnalysisConfig::Stepping::kAdaptive;

@@ -37,7 +37,7 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   }
   const int n_a = static_cast<int>(element_dofs_.size());
   const int n_s = static_cast<int>(linear_dofs_.size());
-  use_blocks_ = declared && n_a > 0 && n_s >= kMinLinearDofs;
+  use_blocks_ = settings.block_elimination && declared && n_a > 0 && n_s >= kMinLinearDofs;
   if (use_blocks_) {
     k_elements_.setZero(n, n);
     schur_.setZero(n_a, n_a);

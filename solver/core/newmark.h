@@ -15,6 +15,9 @@ struct NewtonSettings {
   // translation); never on a small correction alone.
   double tolerance = 1e-9;
   int max_iterations = 25;
+  // Eliminate the linear DOFs once per step size when it pays (see NewmarkStepper); false: always
+  // factor the whole matrix (a diagnostic: the results agree to round-off).
+  bool block_elimination = true;
 };
 
 struct StepOutcome {
@@ -71,6 +74,8 @@ class NewmarkStepper {
   double last_step() const { return h_; }
   // True when the Newton matrix is factored by LU (some element's tangent is non-symmetric).
   bool uses_lu() const { return use_lu_; }
+  // True when the Newton matrix is solved by eliminating the linear DOFs (see above).
+  bool uses_block_elimination() const { return use_blocks_; }
 
  private:
   // K_hat and, with the block elimination, its linear-block terms for step h.

@@ -119,6 +119,7 @@ void ProbeRecorder::record(const double* u, const double* a_abs, double t,
         (bx * bx + by * by) * kBoundInflation <= g.limit_resultant * g.limit_resultant)
       continue;
     g.limit_x = g.limit_y = g.limit_resultant = std::numeric_limits<double>::infinity();
+    evaluations_ += static_cast<long>(g.members.size());
     for (const std::size_t p : g.members) {
       const auto sum = [&](std::size_t begin, std::size_t end) {
         double x = 0.0;

@@ -29,6 +29,8 @@ class ProbeRecorder {
 
   // u: displacements, a_abs: absolute accelerations (per DOF); t: the time, s.
   void record(const double* u, const double* a_abs, double t, std::vector<ProbePeaks>& peaks);
+  // How many probe evaluations record() has made (the rest were skipped).
+  long evaluations() const { return evaluations_; }
 
  private:
   struct Term {
@@ -58,6 +60,7 @@ class ProbeRecorder {
   std::vector<double> length_;
   std::vector<Term> bound_terms_;
   std::vector<Group> groups_;
+  long evaluations_ = 0;
 };
 
 }  // namespace isopound
