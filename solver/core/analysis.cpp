@@ -192,6 +192,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   if (cfg.t_end > 0) total = std::min(total, cfg.t_end);
   const long intervals = static_cast<long>(std::ceil(total / H - 1e-9));
   const int max_level = cfg.max_halvings;
+  stepper.reserve_step_sizes(max_level + 1);
   const GroundSampler ground{motion, per_sample};
   const bool two_components = !motion.acceleration_y.empty();
   // Absolute acceleration = relative + rigid response to the ground: a + iota a_g.

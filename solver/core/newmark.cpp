@@ -114,15 +114,23 @@ void NewmarkStepper::fill_effective_linear(double h, EffectiveLinear& e) {
   e.k_hat += (4.0 / (h * h)) * model_.mass;
   e.blocks = false;
   if (!use_blocks_) return;
+  // Blocks gathered by plain loops (Eigen's indexed views copy a std::vector index: allocations).
+  const auto gather = [&](const std::vector<int>& rows, const std::vector<int>& cols,
+                          Eigen::MatrixXd& block) {
+    block.resize(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
+    for (std::size_t j = 0; j < cols.size(); ++j)
+      for (std::size_t i = 0; i < rows.size(); ++i) block(i, j) = e.k_hat(rows[i], cols[j]);
+  };
   // K_ss is K_hat's linear block: positive definite with M (4/h^2 M dominates).
-  e.k_ss_inv = e.k_hat(linear_dofs_, linear_dofs_);
+  gather(linear_dofs_, linear_dofs_, e.k_ss_inv);
   k_ss_llt_.compute(e.k_ss_inv);
   if (k_ss_llt_.info() != Eigen::Success) return;  // the full factorisation for this h
   e.k_ss_inv.setIdentity();
   k_ss_llt_.solveInPlace(e.k_ss_inv);
-  e.k_as = e.k_hat(element_dofs_, linear_dofs_);
-  e.k_ss_inv_sa.noalias() = e.k_ss_inv * e.k_hat(linear_dofs_, element_dofs_);
-  e.schur = e.k_hat(element_dofs_, element_dofs_);
+  gather(element_dofs_, linear_dofs_, e.k_as);
+  gather(linear_dofs_, element_dofs_, e.k_sa);
+  e.k_ss_inv_sa.noalias() = e.k_ss_inv * e.k_sa;
+  gather(element_dofs_, element_dofs_, e.schur);
   e.schur.noalias() -= e.k_as * e.k_ss_inv_sa;
   e.blocks = true;
 }
@@ -134,9 +142,34 @@ const NewmarkStepper::EffectiveLinear& NewmarkStepper::effective_linear(double h
     fill_effective_linear(h, k_hat_uncached_);
     return k_hat_uncached_;
   }
+  for (EffectiveLinear& e : k_hat_cache_)
+    if (e.h == 0.0) {  // a reserved entry
+      fill_effective_linear(h, e);
+      return e;
+    }
   k_hat_cache_.emplace_back();
   fill_effective_linear(h, k_hat_cache_.back());
   return k_hat_cache_.back();
+}
+
+void NewmarkStepper::reserve_step_sizes(int count) {
+  // Entries of h = 0 (never a step) with their matrices at full size: filling one later
+  // allocates nothing.
+  const Eigen::Index n = model_.size();
+  const auto n_a = static_cast<Eigen::Index>(element_dofs_.size());
+  const auto n_s = static_cast<Eigen::Index>(linear_dofs_.size());
+  k_hat_cache_.reserve(k_hat_cache_.size() + static_cast<std::size_t>(count));
+  for (EffectiveLinear* e = &k_hat_uncached_; count >= 0; --count) {
+    e->k_hat.resize(n, n);
+    if (use_blocks_) {
+      e->k_ss_inv.resize(n_s, n_s);
+      e->k_as.resize(n_a, n_s);
+      e->k_sa.resize(n_s, n_a);
+      e->k_ss_inv_sa.resize(n_s, n_a);
+      e->schur.resize(n_a, n_a);
+    }
+    if (count > 0) e = &k_hat_cache_.emplace_back();
+  }
 }
 
 void NewmarkStepper::solve_blocks(const EffectiveLinear& e) {
@@ -176,10 +209,10 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
   p_hat_.noalias() -= model_.damping * v0_;
   p_hat_ += m_iota_.col(0) * ag1.x;
   if (ag1.y != 0.0) p_hat_ += m_iota_.col(1) * ag1.y;
-  const double tol_r =
-      settings_.tolerance * force_ref_ +
-      64.0 * std::numeric_limits<double>::epsilon() *
-          (p_hat_.cwiseAbs().maxCoeff() + c2 * (model_.mass * v0_).cwiseAbs().maxCoeff());
+  du_.noalias() = model_.mass * v0_;  // into a member: a temporary would allocate every step
+  const double tol_r = settings_.tolerance * force_ref_ +
+                       64.0 * std::numeric_limits<double>::epsilon() *
+                           (p_hat_.cwiseAbs().maxCoeff() + c2 * du_.cwiseAbs().maxCoeff());
 
   delta_ = h * v0_ + (0.5 * h * h) * a0_;  // constant-acceleration predictor
   StepOutcome out;

@@ -51,6 +51,9 @@ class NewmarkStepper {
   void start(GroundAcceleration ag0);
   // Committed state (u0, v0); a0 from the equation of motion with ground acceleration ag0.
   void start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0, GroundAcceleration ag0);
+  // Makes room for `count` step sizes (and the one-off step), so that the first step of each
+  // allocates nothing: the analysis's regular steps are H / 2^k, k <= max_halvings.
+  void reserve_step_sizes(int count);
   // `cache`: keep K_hat for this h (the regular steps); false for one-off steps cut at an event.
   // `freeze`: elements keep their contact status through the trial (a step cut at an event).
   StepOutcome try_step(double h, GroundAcceleration ag1, bool cache = true, bool freeze = false);
@@ -85,6 +88,7 @@ class NewmarkStepper {
     Eigen::MatrixXd k_ss_inv;     // K_ss^-1 (linear DOFs)
     Eigen::MatrixXd k_ss_inv_sa;  // K_ss^-1 K_sa
     Eigen::MatrixXd k_as;         // K_as
+    Eigen::MatrixXd k_sa;         // K_sa
     Eigen::MatrixXd schur;        // S0 = K_aa - K_as K_ss^-1 K_sa
     bool blocks = false;          // the block terms are set (else: the full factorisation)
   };
