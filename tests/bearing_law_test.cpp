@@ -243,6 +243,35 @@ TEST(CoupledBoucWen, ConsistentTangentMatchesFiniteDifferences) {
   }
 }
 
+// The n = 2 closed form (one sub-increment, written without |dx|) is the general path's scheme:
+// z and dz/dx agree to round-off from states inside the disc, on its rim and beyond it, for
+// increments in every direction up to the size where the closed form hands over.
+TEST(CoupledBoucWen, ClosedFormStepMatchesTheGeneralPath) {
+  const BoucWenParameters p = thesis_bearing(2.0, 0.5, 0.5);
+  const CoupledBoucWenMaterial law(p);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int compared = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double angle_z = 2.0 * kPi * unit(rng), angle_dx = 2.0 * kPi * unit(rng);
+    const double radius = k % 3 == 0 ? 1.0 : k % 3 == 1 ? unit(rng) : 1.0 + 0.5 * unit(rng);
+    const Vector2d z0 = radius * Vector2d(std::cos(angle_z), std::sin(angle_z));
+    const double size = std::pow(10.0, -6.0 + 6.0 * unit(rng));  // 1e-6 .. 1 u_y
+    const Vector2d dx = size * Vector2d(std::cos(angle_dx), std::sin(angle_dx));
+    const CoupledBoucWenMaterial::ZUpdate fast = law.integrate(z0, dx);
+    const CoupledBoucWenMaterial::ZUpdate general = law.integrate(z0, dx, false);
+    // Round-off of two evaluation orders; dz/dx is O(1) (A = 1), but the general path's chain
+    // rule multiplies de/dx = (I - e e^T)/l by l/2: its rounding grows as eps/l.
+    EXPECT_LE((fast.z - general.z).cwiseAbs().maxCoeff(), 1e-13) << z0.transpose() << " / "
+                                                                  << dx.transpose();
+    EXPECT_LE((fast.dz_dx - general.dz_dx).cwiseAbs().maxCoeff(), 1e-12 + 1e-14 / size)
+        << z0.transpose() << " / " << dx.transpose();
+    compared += (fast.z - general.z).cwiseAbs().maxCoeff() > 0.0;
+  }
+  // The two paths did differ in rounding somewhere (so both were taken).
+  EXPECT_GT(compared, 100);
+}
+
 TEST(BilinearBiaxial, ConsistentTangentMatchesFiniteDifferences) {
   const BoucWenParameters p = thesis_bearing();
   BilinearBiaxialMaterial law(p.elastic_stiffness, p.alpha, p.yield_force);

@@ -26,6 +26,10 @@ CoupledBoucWenMaterial::CoupledBoucWenMaterial(const BoucWenParameters& p) : p_(
         "beta + gamma > 0 and 0 <= alpha < 1");
   z_saturation_ = std::pow(p.A / (p.beta + p.gamma), 1.0 / p.n);
   z_saturation_pow_n_ = p.A / (p.beta + p.gamma);
+  z_saturation_sq_ = z_saturation_ * z_saturation_;
+  const double z_bound = z_saturation_pow_n_ / z_saturation_;
+  z_bound_sq_ = z_bound * z_bound;
+  rim_sq_ = z_saturation_ * (1.0 + 1e-12) * z_saturation_ * (1.0 + 1e-12);
   dz_dx_ = p.A * Matrix2d::Identity();
   dz_dx_commit_ = dz_dx_;
 }
@@ -136,51 +140,55 @@ Vector2d CoupledBoucWenMaterial::trapezoid_step(const Vector2d& z, const Vector2
 // reduces to z1 = lambda b (trapezoid_step's closed form) and, because M(z) e = Phi(z) and
 // de/dx = (I - e e^T)/l, its chain rule S = (I - l/2 J1)^-1 [(Phi0 + Phi1)/2 e^T + l/2 (M0 + M1)
 // de/dx] collapses to S = (I - l/2 J1)^-1 (M0 + M1)/2, with J(z) = -(w.z) I - z w^T and
-// M(z) = A I - z (c o z)^T for n = 2. The same scheme; only the rounding differs. Returns false
-// (nothing written) when the general path is needed.
+// M(z) = A I - z (c o z)^T for n = 2. The same scheme; only the rounding differs.
+//
+// Written without l = |dx| (the step is latency-bound on its square roots and divisions):
+// with W = l w = c o dx, l Phi0 = A dx - z0 (W.z0), b = z0 + (l Phi0 + A dx)/2 and
+// q = sqrt(1 + 2 W.b), z1 = lambda b with lambda = 2/(1 + q); the matrix inverted,
+// m = I - l/2 J1 = a I + z1 W^T/2 with a = 1 + W.z1/2, has a = 1/lambda and
+// det m = a (2a - 1) = q (1 + q)/2 exactly, so lambda and 1/det share one division. The tests
+// l < h_sub (h |dPhi/dz| <= 1/4 with |dPhi/dz| <= 2 |w| z_b) and "no component reaches 0" are
+// taken on squares and products. Returns false (nothing written) when the general path is needed.
 bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const Vector2d& dx,
-                                                      double length, ZUpdate& out) const {
-  const double e0 = dx[0] / length, e1 = dx[1] / length;
-  const double z0x = z0[0], z0y = z0[1];
-  const bool unloading0 = z0x * e0 < 0.0, unloading1 = z0y * e1 < 0.0;
+                                                      ZUpdate& out) const {
+  const double z0x = z0[0], z0y = z0[1], dx0 = dx[0], dx1 = dx[1];
+  const bool unloading0 = z0x * dx0 < 0.0, unloading1 = z0y * dx1 < 0.0;
   const double c0 = p_.beta + (unloading0 ? -p_.gamma : p_.gamma);
   const double c1 = p_.beta + (unloading1 ? -p_.gamma : p_.gamma);
-  const double w0 = c0 * e0, w1 = c1 * e1;
-  const double w_norm = std::sqrt(w0 * w0 + w1 * w1);
-  const double z_norm = std::sqrt(z0x * z0x + z0y * z0y);
-  // Sub-increment bound as in integrate(): h |dPhi/dz| <= 1/4 with |dPhi/dz| <= 2 |w| z_b.
-  const bool beyond = z_norm > z_saturation_;
-  const double z_bound = beyond ? z_norm : z_saturation_;
-  const double bound_pow_n = beyond ? z_norm * z_norm : z_saturation_pow_n_;
-  const double max_slope = w_norm * 2.0 * bound_pow_n / z_bound;
-  const double h_bound = max_slope > 0 ? kMaxSubincrementStiffness / max_slope : 1e300;
-  const double h_sub = std::max(h_bound, length / kMaxSubincrements);
-  if (!(length < h_sub)) return false;  // full sub-increments: the general path
+  const double W0 = c0 * dx0, W1 = c1 * dx1;
+  const double z_sq = z0x * z0x + z0y * z0y;
+  // l < h_sub  <=>  l |w| 2 z_b < 1/4  <=>  4 |W|^2 z_b^2 < (1/4)^2 (z_b = |z0| beyond z_sat).
+  const double z_bound_sq = z_sq > z_saturation_sq_ ? z_sq : z_bound_sq_;
+  if (!(4.0 * (W0 * W0 + W1 * W1) * z_bound_sq <
+        kMaxSubincrementStiffness * kMaxSubincrementStiffness))
+    return false;  // full sub-increments: the general path
   const double A = p_.A;
-  // Phi0 = A e - z0 (w.z0).
-  const double s0 = w0 * z0x + w1 * z0y;
-  const double phi0x = A * e0 - z0x * s0, phi0y = A * e1 - z0y * s0;
-  // A component reaching 0 within the step: the general path splits there.
-  if (unloading0 && -2.0 * z0x / (phi0x + A * e0) < length) return false;
-  if (unloading1 && -2.0 * z0y / (phi0y + A * e1) < length) return false;
-  // Trapezoidal step (n = 2 closed form): z1 = 2 b / (1 + sqrt(1 + 2 l w.b)).
-  const double hh = 0.5 * length;
-  const double bx = z0x + hh * phi0x + hh * A * e0, by = z0y + hh * phi0y + hh * A * e1;
-  const double discriminant = 1.0 + 2.0 * length * (w0 * bx + w1 * by);
-  if (!(discriminant >= 0.0)) return false;
-  const double lambda = 2.0 / (1.0 + std::sqrt(discriminant));
+  // l Phi0 + A dx, and a component reaching 0 within the step (the general path splits there):
+  // h_i = -2 z0_i / (Phi0_i + A e_i) < l  <=>  -2 z0_i / D_i < 1,  D = l Phi0 + A dx.
+  const double s0 = W0 * z0x + W1 * z0y;
+  const double D0 = 2.0 * A * dx0 - z0x * s0, D1 = 2.0 * A * dx1 - z0y * s0;
+  const auto reaches_zero = [](double z, double D) {
+    const double num = -2.0 * z;
+    return D > 0.0 ? num < D : D < 0.0 ? num > D : num < 0.0;
+  };
+  if (unloading0 && reaches_zero(z0x, D0)) return false;
+  if (unloading1 && reaches_zero(z0y, D1)) return false;
+  const double bx = z0x + 0.5 * D0, by = z0y + 0.5 * D1;
+  const double discriminant = 1.0 + 2.0 * (W0 * bx + W1 * by);
+  if (!(discriminant > 0.0)) return false;
+  const double q = std::sqrt(discriminant);
+  const double inv = 1.0 / (q * (1.0 + q));
+  const double lambda = 2.0 * q * inv;  // 2 / (1 + q)
+  const double inv_det = 2.0 * inv;     // 1 / det m
   const double z1x = lambda * bx, z1y = lambda * by;
   // (M0 + M1)/2 with M(z) = A I - z (c o z)^T.
   const double r00 = A - 0.5 * (z0x * c0 * z0x + z1x * c0 * z1x);
   const double r01 = -0.5 * (z0x * c1 * z0y + z1x * c1 * z1y);
   const double r10 = -0.5 * (z0y * c0 * z0x + z1y * c0 * z1x);
   const double r11 = A - 0.5 * (z0y * c1 * z0y + z1y * c1 * z1y);
-  // I - l/2 J1 = (1 + l/2 w.z1) I + l/2 z1 w^T, inverted in closed form.
-  const double s1 = w0 * z1x + w1 * z1y;
-  const double a = 1.0 + hh * s1;
-  const double m00 = a + hh * z1x * w0, m01 = hh * z1x * w1;
-  const double m10 = hh * z1y * w0, m11 = a + hh * z1y * w1;
-  const double inv_det = 1.0 / (m00 * m11 - m01 * m10);
+  const double a = 1.0 + 0.5 * (W0 * z1x + W1 * z1y);
+  const double m00 = a + 0.5 * z1x * W0, m01 = 0.5 * z1x * W1;
+  const double m10 = 0.5 * z1y * W0, m11 = a + 0.5 * z1y * W1;
   Matrix2d S;
   S(0, 0) = (m11 * r00 - m01 * r10) * inv_det;
   S(0, 1) = (m11 * r01 - m01 * r11) * inv_det;
@@ -188,9 +196,10 @@ bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const 
   S(1, 1) = (m00 * r11 - m10 * r01) * inv_det;
   Vector2d z(z1x, z1y);
   // Back onto the rim when the trapezoidal map left the disc (as in integrate()).
-  if (p_.gamma >= 0.0 && z_norm <= z_saturation_ * (1.0 + 1e-12)) {
-    const double r1 = std::sqrt(z1x * z1x + z1y * z1y);
-    if (r1 > z_saturation_) {
+  if (p_.gamma >= 0.0 && z_sq <= rim_sq_) {
+    const double r1_sq = z1x * z1x + z1y * z1y;
+    if (r1_sq > z_saturation_sq_) {
+      const double r1 = std::sqrt(r1_sq);
       const double scale = z_saturation_ / r1;
       const Vector2d n = z / r1;
       S = scale * (Matrix2d::Identity() - n * n.transpose()) * S;
@@ -211,21 +220,23 @@ bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const 
 //       else step h_sub (k < full) or rem (k = full)
 //   every step: S <- (I - h/2 J1)^-1 [(I + h/2 J0) S + (Phi0 + Phi1)/2 dh/dx + h/2 (M0 + M1) de/dx]
 CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d& z0,
-                                                                  const Vector2d& dx) const {
-  const double length = std::sqrt(dx.squaredNorm());
-  if (length == 0.0) {
+                                                                  const Vector2d& dx,
+                                                                  bool closed_form_n2) const {
+  const double length_sq = dx.squaredNorm();
+  if (length_sq == 0.0) {
     // No increment: the elastic-side (unloading) slope, as the uniaxial law.
     return {z0, phi_matrix(z0, Vector2d::Constant(p_.beta - p_.gamma))};
   }
-  if (!std::isfinite(length)) {
+  if (!std::isfinite(length_sq)) {
     // A diverging Newton iterate: report NaN (the stepper then cuts the step), never loop.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return {Vector2d::Constant(nan), Matrix2d::Constant(nan)};
   }
-  if (p_.n == 2.0) {
+  if (p_.n == 2.0 && closed_form_n2) {
     ZUpdate fast;
-    if (integrate_single_step_n2(z0, dx, length, fast)) return fast;
+    if (integrate_single_step_n2(z0, dx, fast)) return fast;
   }
+  const double length = std::sqrt(length_sq);
   const Matrix2d I = Matrix2d::Identity();
   const Vector2d e = dx / length;
   const Matrix2d de_dx = (I - e * e.transpose()) / length;

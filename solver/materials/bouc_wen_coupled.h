@@ -47,7 +47,9 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
     Eigen::Vector2d z;
     Eigen::Matrix2d dz_dx;
   };
-  ZUpdate integrate(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx) const;
+  // closed_form_n2 = false: never the n = 2 closed form (tests compare the two paths).
+  ZUpdate integrate(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx,
+                    bool closed_form_n2 = true) const;
 
  private:
   // Phi(z) = M(z) e, M = A I - g(z) (c o z)^T; its Jacobian dPhi/dz.
@@ -65,11 +67,14 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   double pow_n_minus_2(double r) const;  // r^(n-2) for r > 0
   // integrate() for n = 2 when the increment is one remainder sub-increment on one branch (the
   // common case); false when the general path is needed.
-  bool integrate_single_step_n2(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx, double length,
+  bool integrate_single_step_n2(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx,
                                 ZUpdate& out) const;
 
   BoucWenParameters p_;
   double z_saturation_, z_saturation_pow_n_;
+  // For the n = 2 closed form, which tests squares: z_sat^2, (z_sat^n / z_sat)^2 (the path's
+  // |z| bound below saturation) and (z_sat (1 + 1e-12))^2 (on the rim).
+  double z_saturation_sq_, z_bound_sq_, rim_sq_;
   Eigen::Vector2d d_ = Eigen::Vector2d::Zero(), z_ = Eigen::Vector2d::Zero();
   Eigen::Matrix2d dz_dx_;
   Eigen::Vector2d d_commit_ = Eigen::Vector2d::Zero(), z_commit_ = Eigen::Vector2d::Zero();
