@@ -286,15 +286,36 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
     // its local error (~1e-6 on a circular orbit): such a step is scaled back onto the rim.
     // A uniaxial step never leaves it (its map is monotone), so this keeps the reduction exact.
     const bool keep_in_disc = p_.gamma >= 0.0 && z_norm <= z_saturation_ * (1.0 + 1e-12);
+    const bool n2 = p_.n == 2.0;
     const auto advance = [&](double h, const RowVector2d& dh_dx) {
-      const Vector2d z1 = h > 0.0 ? trapezoid_step(z, phi0, h, e, c) : z;
-      Matrix2d M1, J1;
-      const double r1 = phi_parts(z1, c, w, M1, J1);
-      Vector2d phi1 = M1 * e;
       const double hh = h > 0.0 ? 0.5 * h : 0.0;
+      Vector2d z1;
+      Matrix2d M1, J1, m_inverse;
+      double r1;
+      // n = 2: z1 = lambda b in closed form and, as in integrate_single_step_n2, det(I - h/2 J1)
+      // = q (1 + q)/2: one square root and one division; else the general sub-increment.
+      const Vector2d b = z + hh * (phi0 + p_.A * e);
+      const double discriminant = n2 && h > 0.0 ? 1.0 + 2.0 * h * w.dot(b) : 0.0;
+      if (discriminant > 0.0) {
+        const double q = std::sqrt(discriminant);
+        const double inv = 1.0 / (q * (1.0 + q));
+        z1 = (2.0 * q * inv) * b;
+        const double s1 = w.dot(z1);
+        M1 = p_.A * I - z1 * c.cwiseProduct(z1).transpose();
+        J1 = -s1 * I - z1 * w.transpose();
+        const Matrix2d m = I - hh * J1;
+        m_inverse << m(1, 1), -m(0, 1), -m(1, 0), m(0, 0);
+        m_inverse *= 2.0 * inv;
+        r1 = keep_in_disc && z1.squaredNorm() > z_saturation_sq_ ? z1.norm() : 0.0;
+      } else {
+        z1 = h > 0.0 ? trapezoid_step(z, phi0, h, e, c) : z;
+        r1 = phi_parts(z1, c, w, M1, J1);
+        m_inverse = (I - hh * J1).inverse();
+      }
+      Vector2d phi1 = M1 * e;
       Matrix2d rhs = 0.5 * (phi0 + phi1) * dh_dx + hh * (M0 + M1) * de_dx;
       if (!s_is_zero) rhs += (I + hh * J0) * S;
-      S = (I - hh * J1).inverse() * rhs;
+      S = m_inverse * rhs;
       s_is_zero = false;
       z = z1;
       if (keep_in_disc && r1 > z_saturation_) {
