@@ -22,15 +22,15 @@ std::vector<int> dofs_of(const Terms& terms) {
   return dofs;
 }
 
-// Bounds are inflated by this factor, and get this share of the terms' magnitudes added: a
-// probe's sum and the bound round differently (a drift cancels two large displacements), and a
-// skipped group must never hide a raise.
+// Bounds are inflated by this factor, and get this share of the terms' magnitudes (sum_d |c_d|
+// times the largest |q|) added: a probe's sum and the bound round differently (a drift cancels two
+// large displacements), and a skipped group must never hide a raise.
 constexpr double kBoundInflation = 1.0 + 1e-9;
 constexpr double kRoundOffSlack = 1e-12;
 
 }  // namespace
 
-double ProbeRecorder::bound(const Bound& b, const double* q) const {
+double ProbeRecorder::bound(const Bound& b, const double* q, double q_max) const {
   double sum = 0.0;
   std::size_t k = b.first;
   for (std::size_t j = 0; j < b.ends.size(); ++j) {
@@ -39,10 +39,7 @@ double ProbeRecorder::bound(const Bound& b, const double* q) const {
       w_q += bound_terms_[k].coefficient * q[bound_terms_[k].dof];
     sum += b.weight[j] * std::abs(w_q);
   }
-  double scale = 0.0;
-  for (k = b.magnitude; k < b.magnitude_end; ++k)
-    scale += bound_terms_[k].coefficient * std::abs(q[bound_terms_[k].dof]);
-  return sum * kBoundInflation + kRoundOffSlack * scale;
+  return sum * kBoundInflation + kRoundOffSlack * b.magnitude * q_max;
 }
 
 ProbeRecorder::ProbeRecorder(const std::vector<PlanProbe>& probes) {
@@ -53,6 +50,14 @@ ProbeRecorder::ProbeRecorder(const std::vector<PlanProbe>& probes) {
       begin_.push_back(terms_.size());
     }
     length_.push_back(probe.length);
+    std::vector<int>& read =
+        probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration ? dofs_a_ : dofs_u_;
+    for (const auto* terms : {&probe.x_terms, &probe.y_terms})
+      for (const auto& term : *terms) read.push_back(term.first);
+  }
+  for (std::vector<int>* read : {&dofs_u_, &dofs_a_}) {
+    std::sort(read->begin(), read->end());
+    read->erase(std::unique(read->begin(), read->end()), read->end());
   }
   // Group by quantity and DOFs, in order of first appearance.
   std::map<std::tuple<bool, std::vector<int>, std::vector<int>>, std::size_t> group_of;
@@ -80,10 +85,7 @@ ProbeRecorder::ProbeRecorder(const std::vector<PlanProbe>& probes) {
       for (const auto& [d, c] : y ? probes[members[k]].y_terms : probes[members[k]].x_terms)
         C(std::lower_bound(dofs.begin(), dofs.end(), d) - dofs.begin(), k) += c;
     Bound bound;
-    bound.magnitude = bound_terms_.size();
-    for (Eigen::Index i = 0; i < n_dofs; ++i)
-      bound_terms_.push_back({dofs[i], C.row(i).cwiseAbs().maxCoeff()});
-    bound.magnitude_end = bound_terms_.size();
+    for (Eigen::Index i = 0; i < n_dofs; ++i) bound.magnitude += C.row(i).cwiseAbs().maxCoeff();
     bound.first = bound_terms_.size();
     if (n_dofs == 0) return bound;
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(C);
@@ -111,9 +113,16 @@ ProbeRecorder::ProbeRecorder(const std::vector<PlanProbe>& probes) {
 
 void ProbeRecorder::record(const double* u, const double* a_abs, double t,
                            std::vector<ProbePeaks>& peaks) {
+  const auto largest = [](const std::vector<int>& dofs, const double* q) {
+    double m = 0.0;
+    for (const int d : dofs) m = std::max(m, std::abs(q[d]));
+    return m;
+  };
+  const double u_max = largest(dofs_u_, u), a_max = largest(dofs_a_, a_abs);
   for (Group& g : groups_) {
     const double* q = g.acceleration ? a_abs : u;
-    const double bx = bound(g.x, q), by = bound(g.y, q);
+    const double q_max = g.acceleration ? a_max : u_max;
+    const double bx = bound(g.x, q, q_max), by = bound(g.y, q, q_max);
     // NaN bounds fail every test and fall through to the members (which record the NaN).
     if (bx <= g.limit_x && by <= g.limit_y &&
         (bx * bx + by * by) * kBoundInflation <= g.limit_resultant * g.limit_resultant)

@@ -43,10 +43,10 @@ class ProbeRecorder {
     std::size_t first = 0;          // in bound_terms_
     std::vector<std::size_t> ends;  // per basis vector, relative to first
     std::vector<double> weight;     // max_k |beta_kj|
-    std::size_t magnitude = 0;      // (d, max_k |c_kd|) terms [magnitude, magnitude_end)
-    std::size_t magnitude_end = 0;  // (the scale of the round-off)
+    double magnitude = 0.0;         // sum_d max_k |c_kd|: times max_d |q_d|, the round-off's scale
   };
-  double bound(const Bound& b, const double* q) const;
+  // q_max = max_d |q_d| over the quantity's DOFs.
+  double bound(const Bound& b, const double* q, double q_max) const;
   struct Group {
     bool acceleration = false;  // the members read a_abs (else u)
     std::vector<std::size_t> members;
@@ -59,6 +59,7 @@ class ProbeRecorder {
   std::vector<std::size_t> begin_;
   std::vector<double> length_;
   std::vector<Term> bound_terms_;
+  std::vector<int> dofs_u_, dofs_a_;  // the DOFs the displacement / acceleration probes read
   std::vector<Group> groups_;
   long evaluations_ = 0;
 };
