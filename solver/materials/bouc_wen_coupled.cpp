@@ -27,6 +27,7 @@ CoupledBoucWenMaterial::CoupledBoucWenMaterial(const BoucWenParameters& p) : p_(
   z_saturation_ = std::pow(p.A / (p.beta + p.gamma), 1.0 / p.n);
   z_saturation_pow_n_ = p.A / (p.beta + p.gamma);
   z_saturation_sq_ = z_saturation_ * z_saturation_;
+  inverse_yield_displacement_ = 1.0 / p.yield_displacement;
   const double z_bound = z_saturation_pow_n_ / z_saturation_;
   z_bound_sq_ = z_bound * z_bound;
   rim_sq_ = z_saturation_ * (1.0 + 1e-12) * z_saturation_ * (1.0 + 1e-12);
@@ -56,7 +57,8 @@ double CoupledBoucWenMaterial::stored_energy() const {
 
 void CoupledBoucWenMaterial::set_trial(const Vector2d& d, const Vector2d&) {
   d_ = d;
-  const Vector2d dx = (d - d_commit_) / p_.yield_displacement;
+  // A product, not a quotient: the division's latency sat on every step's critical path.
+  const Vector2d dx = (d - d_commit_) * inverse_yield_displacement_;
   const ZUpdate update = integrate(z_commit_, dx);
   z_ = update.z;
   dz_dx_ = update.dz_dx;

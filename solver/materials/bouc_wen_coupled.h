@@ -75,6 +75,7 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   // For the n = 2 closed form, which tests squares: z_sat^2, (z_sat^n / z_sat)^2 (the path's
   // |z| bound below saturation) and (z_sat (1 + 1e-12))^2 (on the rim).
   double z_saturation_sq_, z_bound_sq_, rim_sq_;
+  double inverse_yield_displacement_;
   Eigen::Vector2d d_ = Eigen::Vector2d::Zero(), z_ = Eigen::Vector2d::Zero();
   Eigen::Matrix2d dz_dx_;
   Eigen::Vector2d d_commit_ = Eigen::Vector2d::Zero(), z_commit_ = Eigen::Vector2d::Zero();
