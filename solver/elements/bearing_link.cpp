@@ -40,8 +40,12 @@ Eigen::Vector2d BearingLink::deformation_of(const Eigen::VectorXd& u) const {
 }
 
 void BearingLink::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
-  const Eigen::Vector2d d = deformation_of(u), rate = deformation_of(v);
-  with_law([&](auto& law) { law.set_trial(d, rate); });
+  const Eigen::Vector2d d = deformation_of(u);
+  // The coupled Bouc-Wen law is rate independent: no rate to compute.
+  if (coupled_)
+    coupled_->set_trial(d, Eigen::Vector2d::Zero());
+  else
+    law_->set_trial(d, deformation_of(v));
 }
 
 double BearingLink::stored_energy() const {
