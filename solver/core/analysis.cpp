@@ -337,10 +337,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     p_in_prev = p_in;
     p_visc_prev = p_visc;
     p_elem_prev = p_elem;
-    work.noalias() = model.mass * v;
-    const double kinetic = 0.5 * v.dot(work);
-    work.noalias() = model.stiffness * u;
-    const double strain = 0.5 * u.dot(work);
+    const double kinetic = 0.5 * v.dot(stepper.m_v());
+    const double strain = 0.5 * u.dot(stepper.k_u());
     EnergyBalance& en = res.energy;
     en.input = e_in;
     en.kinetic = kinetic;

@@ -16,7 +16,7 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
     : model_(model), settings_(settings), llt_(model.size()), ldlt_(model.size()) {
   const int n = model.size();
   for (Eigen::VectorXd* x :
-       {&u0_, &v0_, &a0_, &u1_, &v1_, &a1_, &p_hat_, &r_, &du_, &work_, &delta_})
+       {&u0_, &v0_, &a0_, &k_u0_, &m_v0_, &u1_, &v1_, &a1_, &p_hat_, &r_, &du_, &work_, &delta_})
     x->setZero(n);
   m_iota_ = model.ground_load_matrix();
   force_ref_ = m_iota_.col(0).cwiseAbs().maxCoeff() * kGravity;
@@ -81,6 +81,7 @@ void NewmarkStepper::start(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0,
                            GroundAcceleration ag0) {
   u0_ = u0;
   v0_ = v0;
+  committed_products();
   restart(ag0);
 }
 
@@ -204,15 +205,14 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
   //   R(du) = K_hat du + r0 + f_nl(u0 + du, v1),
   //   r0 = K u0 - M (4/h v0 + a0) - C v0 + M iota ag1.
   work_ = c2 * v0_ + a0_;
-  p_hat_.noalias() = model_.stiffness * u0_;
+  p_hat_ = k_u0_;
   p_hat_.noalias() -= model_.mass * work_;
   p_hat_.noalias() -= model_.damping * v0_;
   p_hat_ += m_iota_.col(0) * ag1.x;
   if (ag1.y != 0.0) p_hat_ += m_iota_.col(1) * ag1.y;
-  du_.noalias() = model_.mass * v0_;  // into a member: a temporary would allocate every step
   const double tol_r = settings_.tolerance * force_ref_ +
                        64.0 * std::numeric_limits<double>::epsilon() *
-                           (p_hat_.cwiseAbs().maxCoeff() + c2 * du_.cwiseAbs().maxCoeff());
+                           (p_hat_.cwiseAbs().maxCoeff() + c2 * m_v0_.cwiseAbs().maxCoeff());
 
   delta_ = h * v0_ + (0.5 * h * h) * a0_;  // constant-acceleration predictor
   StepOutcome out;
@@ -268,6 +268,12 @@ void NewmarkStepper::accept() {
   u0_ = u1_;
   v0_ = v1_;
   a0_ = a1_;
+  committed_products();
+}
+
+void NewmarkStepper::committed_products() {
+  k_u0_.noalias() = model_.stiffness * u0_;
+  m_v0_.noalias() = model_.mass * v0_;
 }
 
 void NewmarkStepper::reject() {

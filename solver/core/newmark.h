@@ -70,6 +70,9 @@ class NewmarkStepper {
   const Eigen::VectorXd& u() const { return u0_; }
   const Eigen::VectorXd& v() const { return v0_; }
   const Eigen::VectorXd& a() const { return a0_; }
+  // K u and M v at the committed state (each step needs them: the next step's load, energies).
+  const Eigen::VectorXd& k_u() const { return k_u0_; }
+  const Eigen::VectorXd& m_v() const { return m_v0_; }
   const Eigen::VectorXd& trial_u() const { return u1_; }
   const Eigen::VectorXd& trial_v() const { return v1_; }
   const Eigen::VectorXd& trial_a() const { return a1_; }
@@ -101,6 +104,8 @@ class NewmarkStepper {
   NewtonSettings settings_;
   double force_ref_;
   Eigen::VectorXd u0_, v0_, a0_, u1_, v1_, a1_;
+  Eigen::VectorXd k_u0_, m_v0_;  // K u0 and M v0
+  void committed_products();
   Eigen::VectorXd p_hat_, r_, du_, work_;
   Eigen::MatrixXd m_iota_;           // M iota, n x 2
   Eigen::VectorXd residual_weight_;  // 1 / Dof::length
