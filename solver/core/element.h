@@ -23,6 +23,10 @@ class Element {
   // false (the default): it may touch any DOF. The stepper eliminates the DOFs no element
   // touches once per step size (newmark.h).
   virtual bool add_dofs(std::vector<int>& /*dofs*/) const { return false; }
+  // y += (df/du) x with the stiffness tangent (velocity factor 0) at the trial state, without
+  // assembling it, when has_stiffness_product(); the stepper's error estimate uses it.
+  virtual bool has_stiffness_product() const { return false; }
+  virtual void add_stiffness_product(const Eigen::VectorXd& /*x*/, Eigen::VectorXd& /*y*/) const {}
   // False if add_tangent() may add a non-symmetric matrix (coupled bearings, friction): the
   // stepper then factors with LU instead of a symmetric factorisation.
   virtual bool symmetric_tangent() const { return true; }

@@ -123,6 +123,7 @@ class NewmarkStepper {
   // Block elimination (see above): element DOFs a and linear DOFs s, in index order.
   static constexpr int kMinLinearDofs = 8;
   bool use_blocks_ = false;
+  bool stiffness_products_ = false;  // error_norm from Element::add_stiffness_product
   std::vector<int> element_dofs_, linear_dofs_;
   Eigen::MatrixXd k_elements_;  // the elements' tangent (nonzero only on a x a)
   Eigen::MatrixXd schur_;       // S0 + E

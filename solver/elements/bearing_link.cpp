@@ -60,11 +60,21 @@ void BearingLink::revert() {
   with_law([](auto& law) { law.revert(); });
 }
 
-void BearingLink::add_force(Eigen::VectorXd& f) const {
-  const Eigen::Vector2d F = with_law([](const auto& law) { return law.force(); });
+void BearingLink::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  // T^T k T x: the bearing's deformation for x, through its tangent, back onto the DOFs.
+  const Eigen::Vector2d F =
+      with_law([](const auto& law) { return law.tangent(); }) * deformation_of(x);
+  scatter(F, y);
+}
+
+void BearingLink::scatter(const Eigen::Vector2d& F, Eigen::VectorXd& f) const {
   if (dofs_.ux >= 0) f[dofs_.ux] += F[0];
   if (dofs_.uy >= 0) f[dofs_.uy] += F[1];
   if (dofs_.theta >= 0) f[dofs_.theta] += p_OB_.x() * F[1] - p_OB_.y() * F[0];
+}
+
+void BearingLink::add_force(Eigen::VectorXd& f) const {
+  scatter(with_law([](const auto& law) { return law.force(); }), f);
 }
 
 void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {

@@ -33,6 +33,8 @@ class BearingLink final : public Element {
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
+  bool has_stiffness_product() const override { return true; }
+  void add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const override;
   bool add_dofs(std::vector<int>& dofs) const override {
     for (const int d : {dofs_.ux, dofs_.uy, dofs_.theta})
       if (d >= 0) dofs.push_back(d);
@@ -60,6 +62,8 @@ class BearingLink final : public Element {
  private:
   // f(law) with the law's concrete type when it is the coupled Bouc-Wen (a final class, so its
   // calls are direct and inline: the bearing is called ~200 times a step), else virtually.
+  // f += T^T F over the DOFs present.
+  void scatter(const Eigen::Vector2d& F, Eigen::VectorXd& f) const;
   template <class F>
   decltype(auto) with_law(F&& f) const {
     return coupled_ ? f(*coupled_) : f(*law_);
