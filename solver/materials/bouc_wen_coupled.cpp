@@ -59,6 +59,9 @@ void CoupledBoucWenMaterial::set_trial(const Vector2d& d, const Vector2d&) {
   d_ = d;
   // A product, not a quotient: the division's latency sat on every step's critical path.
   const Vector2d dx = (d - d_commit_) * inverse_yield_displacement_;
+  // The common case straight into the trial state (as integrate() would take it).
+  if (p_.n == 2.0 && dx.squaredNorm() > 0.0 && integrate_single_step_n2(z_commit_, dx, z_, dz_dx_))
+    return;
   const ZUpdate update = integrate(z_commit_, dx);
   z_ = update.z;
   dz_dx_ = update.dz_dx;
@@ -152,7 +155,7 @@ Vector2d CoupledBoucWenMaterial::trapezoid_step(const Vector2d& z, const Vector2
 // l < h_sub (h |dPhi/dz| <= 1/4 with |dPhi/dz| <= 2 |w| z_b) and "no component reaches 0" are
 // taken on squares and products. Returns false (nothing written) when the general path is needed.
 bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const Vector2d& dx,
-                                                      ZUpdate& out) const {
+                                                      Vector2d& z_out, Matrix2d& dz_dx_out) const {
   const double z0x = z0[0], z0y = z0[1], dx0 = dx[0], dx1 = dx[1];
   const bool unloading0 = z0x * dx0 < 0.0, unloading1 = z0y * dx1 < 0.0;
   const double c0 = p_.beta + (unloading0 ? -p_.gamma : p_.gamma);
@@ -208,8 +211,8 @@ bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const 
       z *= scale;
     }
   }
-  out.z = z;
-  out.dz_dx = S;
+  z_out = z;
+  dz_dx_out = S;
   return true;
 }
 
@@ -236,7 +239,7 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
   }
   if (p_.n == 2.0 && closed_form_n2) {
     ZUpdate fast;
-    if (integrate_single_step_n2(z0, dx, fast)) return fast;
+    if (integrate_single_step_n2(z0, dx, fast.z, fast.dz_dx)) return fast;
   }
   const double length = std::sqrt(length_sq);
   const Matrix2d I = Matrix2d::Identity();

@@ -68,7 +68,7 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   // integrate() for n = 2 when the increment is one remainder sub-increment on one branch (the
   // common case); false when the general path is needed.
   bool integrate_single_step_n2(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx,
-                                ZUpdate& out) const;
+                                Eigen::Vector2d& z_out, Eigen::Matrix2d& dz_dx_out) const;
 
   BoucWenParameters p_;
   double z_saturation_, z_saturation_pow_n_;
