@@ -28,6 +28,7 @@ CoupledBoucWenMaterial::CoupledBoucWenMaterial(const BoucWenParameters& p) : p_(
   z_saturation_pow_n_ = p.A / (p.beta + p.gamma);
   z_saturation_sq_ = z_saturation_ * z_saturation_;
   inverse_yield_displacement_ = 1.0 / p.yield_displacement;
+  hysteretic_stiffness_ = (1.0 - p.alpha) * p.yield_force / p.yield_displacement;
   const double z_bound = z_saturation_pow_n_ / z_saturation_;
   z_bound_sq_ = z_bound * z_bound;
   rim_sq_ = z_saturation_ * (1.0 + 1e-12) * z_saturation_ * (1.0 + 1e-12);
@@ -44,8 +45,7 @@ Vector2d CoupledBoucWenMaterial::force() const {
 }
 
 Matrix2d CoupledBoucWenMaterial::tangent() const {
-  return p_.alpha * p_.elastic_stiffness * Matrix2d::Identity() +
-         ((1.0 - p_.alpha) * p_.yield_force / p_.yield_displacement) * dz_dx_;
+  return p_.alpha * p_.elastic_stiffness * Matrix2d::Identity() + hysteretic_stiffness_ * dz_dx_;
 }
 
 double CoupledBoucWenMaterial::stored_energy() const {
