@@ -29,6 +29,7 @@ CoupledBoucWenMaterial::CoupledBoucWenMaterial(const BoucWenParameters& p) : p_(
   z_saturation_sq_ = z_saturation_ * z_saturation_;
   inverse_yield_displacement_ = 1.0 / p.yield_displacement;
   hysteretic_stiffness_ = (1.0 - p.alpha) * p.yield_force / p.yield_displacement;
+  hysteretic_energy_ = (1.0 - p.alpha) * p.yield_force * p.yield_displacement / (2.0 * p.A);
   const double z_bound = z_saturation_pow_n_ / z_saturation_;
   z_bound_sq_ = z_bound * z_bound;
   rim_sq_ = z_saturation_ * (1.0 + 1e-12) * z_saturation_ * (1.0 + 1e-12);
@@ -51,8 +52,7 @@ Matrix2d CoupledBoucWenMaterial::tangent() const {
 double CoupledBoucWenMaterial::stored_energy() const {
   // As the uniaxial law: elastic spring plus the recoverable part of the hysteretic spring.
   return 0.5 * p_.alpha * p_.elastic_stiffness * d_.squaredNorm() +
-         (1.0 - p_.alpha) * p_.yield_force * p_.yield_displacement * z_.squaredNorm() /
-             (2.0 * p_.A);
+         hysteretic_energy_ * z_.squaredNorm();
 }
 
 void CoupledBoucWenMaterial::set_trial(const Vector2d& d, const Vector2d&) {

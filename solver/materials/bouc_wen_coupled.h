@@ -77,6 +77,7 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   double z_saturation_sq_, z_bound_sq_, rim_sq_;
   double inverse_yield_displacement_;
   double hysteretic_stiffness_;  // (1 - alpha) F_y / u_y, the factor of dz/dx in the tangent
+  double hysteretic_energy_;     // (1 - alpha) F_y u_y / (2 A), the factor of |z|^2 in the energy
   Eigen::Vector2d d_ = Eigen::Vector2d::Zero(), z_ = Eigen::Vector2d::Zero();
   Eigen::Matrix2d dz_dx_;
   Eigen::Vector2d d_commit_ = Eigen::Vector2d::Zero(), z_commit_ = Eigen::Vector2d::Zero();
