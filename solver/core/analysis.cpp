@@ -170,7 +170,6 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   }
   Eigen::VectorXd inertia(n);         // M a_abs
   Eigen::VectorXd isolator_force(n);  // the isolator elements' internal forces
-  Eigen::VectorXd damping_force(n);   // C v
   std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size());
   for (int e = 0; e < n_elements; ++e)
     res.element_outputs[e].resize(model.elements[e]->output_count());
@@ -298,7 +297,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
     // Base shear: the force of the isolation layer, isolator + isolation damping. The
     // superstructure's damping is internal to the levels and cancels in the sum.
-    damping_force.noalias() = model.damping * v;
+    const Eigen::VectorXd& damping_force = stepper.c_v();  // C v
     for (std::size_t s = 0; s < above_base.size(); ++s) {
       if (above_base[s].empty()) continue;
       isolator_force.setZero();

@@ -15,8 +15,8 @@ namespace isopound {
 NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
     : model_(model), settings_(settings), llt_(model.size()), ldlt_(model.size()) {
   const int n = model.size();
-  for (Eigen::VectorXd* x :
-       {&u0_, &v0_, &a0_, &k_u0_, &m_v0_, &u1_, &v1_, &a1_, &p_hat_, &r_, &du_, &work_, &delta_})
+  for (Eigen::VectorXd* x : {&u0_, &v0_, &a0_, &k_u0_, &m_v0_, &c_v0_, &u1_, &v1_, &a1_, &p_hat_,
+                             &r_, &du_, &work_, &delta_})
     x->setZero(n);
   m_iota_ = model.ground_load_matrix();
   force_ref_ = m_iota_.col(0).cwiseAbs().maxCoeff() * kGravity;
@@ -212,7 +212,12 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
   work_ = c2 * v0_ + a0_;
   p_hat_ = k_u0_;
   p_hat_.noalias() -= model_.mass * work_;
-  p_hat_.noalias() -= model_.damping * v0_;
+  // Subtracting C v0 as one product or accumulating it differ in rounding: small models keep
+  // their arithmetic (results unchanged since issue 8); the block-eliminated ones reuse C v0.
+  if (use_blocks_)
+    p_hat_ -= c_v0_;
+  else
+    p_hat_.noalias() -= model_.damping * v0_;
   p_hat_ += m_iota_.col(0) * ag1.x;
   if (ag1.y != 0.0) p_hat_ += m_iota_.col(1) * ag1.y;
   const double tol_r = settings_.tolerance * force_ref_ +
@@ -285,6 +290,7 @@ void NewmarkStepper::accept() {
 void NewmarkStepper::committed_products() {
   k_u0_.noalias() = model_.stiffness * u0_;
   m_v0_.noalias() = model_.mass * v0_;
+  c_v0_.noalias() = model_.damping * v0_;
 }
 
 void NewmarkStepper::reject() {

@@ -70,9 +70,10 @@ class NewmarkStepper {
   const Eigen::VectorXd& u() const { return u0_; }
   const Eigen::VectorXd& v() const { return v0_; }
   const Eigen::VectorXd& a() const { return a0_; }
-  // K u and M v at the committed state (each step needs them: the next step's load, energies).
+  // K u, M v and C v at the committed state (each step needs them: the next load, energies).
   const Eigen::VectorXd& k_u() const { return k_u0_; }
   const Eigen::VectorXd& m_v() const { return m_v0_; }
+  const Eigen::VectorXd& c_v() const { return c_v0_; }
   const Eigen::VectorXd& trial_u() const { return u1_; }
   const Eigen::VectorXd& trial_v() const { return v1_; }
   const Eigen::VectorXd& trial_a() const { return a1_; }
@@ -104,7 +105,7 @@ class NewmarkStepper {
   NewtonSettings settings_;
   double force_ref_;
   Eigen::VectorXd u0_, v0_, a0_, u1_, v1_, a1_;
-  Eigen::VectorXd k_u0_, m_v0_;  // K u0 and M v0
+  Eigen::VectorXd k_u0_, m_v0_, c_v0_;  // K u0, M v0 and C v0
   void committed_products();
   Eigen::VectorXd p_hat_, r_, du_, work_;
   Eigen::MatrixXd m_iota_;           // M iota, n x 2
