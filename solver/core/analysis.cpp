@@ -398,15 +398,19 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   int settles_here = 0;
   const double min_fraction = std::ldexp(1.0, -max_level);
   const auto level_step = [&](int l) { return H * std::ldexp(1.0, -l); };
+  // The elements with events or step limits (Element::has_events); the others are never asked.
+  std::vector<int> eventful;
+  for (int k = 0; k < n_elements; ++k)
+    if (model.elements[k]->has_events()) eventful.push_back(k);
   // Raises the level until the step respects every element's limit (in fixed stepping too);
   // returns the limit.
   const auto refine_to_limit = [&]() {
     double limit = 1e300;
-    for (const auto& e : model.elements) limit = std::min(limit, e->step_limit());
+    for (const int k : eventful) limit = std::min(limit, model.elements[k]->step_limit());
     while (level < max_level && level_step(level) > limit) ++level;
     return limit;
   };
-  std::vector<double> event_theta(model.elements.size(), 1.0);
+  std::vector<double> event_theta(model.elements.size(), 1.0);  // 1 for the eventless
   std::vector<char> settling(model.elements.size(), 0);
   // The settling elements switch status at the committed state; if a force jumped, the stepper
   // restarts from equilibrium (ground acceleration ag) and so does the power integrand.
@@ -471,7 +475,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         //   inside: redo the step cut to end there (status frozen), then switch;
         //   at the end (theta ~ 1): redo the same step with the status frozen, then switch.
         double theta = 1.0;
-        for (std::size_t k = 0; k < model.elements.size(); ++k) {
+        for (const int k : eventful) {
           event_theta[k] = model.elements[k]->event_fraction();
           theta = std::min(theta, event_theta[k]);
         }

@@ -37,6 +37,9 @@ class Element {
   virtual void commit() = 0;
   virtual void revert() = 0;
 
+  // False when begin_step, event_fraction, settle_event and step_limit keep their defaults
+  // below (no events, no step limit, e.g. a bearing): the analysis then skips those calls.
+  virtual bool has_events() const { return true; }
   // Event handling (contacts). begin_step() tells the size of the step about to be tried;
   // with freeze_status the element keeps its committed status (open/closed) through the trial:
   // the step is one cut to end at an event, which settle_event() then applies.

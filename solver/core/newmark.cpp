@@ -23,6 +23,8 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   residual_weight_.resize(n);
   for (int i = 0; i < n; ++i) residual_weight_[i] = 1.0 / model.dofs[i].length;
   for (const auto& e : model.elements) use_lu_ = use_lu_ || !e->symmetric_tangent();
+  for (const auto& e : model.elements)
+    if (e->has_events()) eventful_.push_back(e.get());
   k_tangent_.setZero(n, n);
   // Block elimination when every element declares its DOFs and enough DOFs stay linear.
   bool declared = true;
@@ -95,7 +97,7 @@ void NewmarkStepper::restart(GroundAcceleration ag0) {
   v1_ = v0_;
   delta_.setZero();
   for (auto& e : model_.elements) {
-    e->begin_step(0.0, true);  // zero length: no work, status kept
+    if (e->has_events()) e->begin_step(0.0, true);  // zero length: no work, status kept
     e->set_trial(u0_, v0_);
   }
   // M a0 = -M iota ag0 - C v0 - K u0 - f_nl(u0, v0)
@@ -203,7 +205,7 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
   h_ = h;
   const EffectiveLinear& linear = effective_linear(h, cache);
   const Eigen::MatrixXd& k_hat = linear.k_hat;
-  for (auto& e : model_.elements) e->begin_step(h, freeze);
+  for (Element* e : eventful_) e->begin_step(h, freeze);
   const double c1 = 4.0 / (h * h), c2 = 4.0 / h;
   // Incremental form: the unknown is du = u1 - u0, so that a1 = 4/h^2 du - 4/h v0 - a0 carries
   // round-off relative to du, not to u0 (which would swamp the accelerations of short steps).

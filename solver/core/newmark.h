@@ -123,6 +123,7 @@ class NewmarkStepper {
   EffectiveLinear k_hat_uncached_;
   // Block elimination (see above): element DOFs a and linear DOFs s, in index order.
   static constexpr int kMinLinearDofs = 8;
+  std::vector<Element*> eventful_;  // Element::has_events(): they get begin_step
   bool use_blocks_ = false;
   bool stiffness_products_ = false;  // error_norm from Element::add_stiffness_product
   std::vector<int> element_dofs_, linear_dofs_;

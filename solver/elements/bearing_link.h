@@ -34,6 +34,7 @@ class BearingLink final : public Element {
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
   bool has_stiffness_product() const override { return true; }
+  bool has_events() const override { return false; }
   void add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const override;
   bool add_dofs(std::vector<int>& dofs) const override {
     for (const int d : {dofs_.ux, dofs_.uy, dofs_.theta})

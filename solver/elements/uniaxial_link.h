@@ -17,6 +17,7 @@ class UniaxialLink final : public Element {
   // dof_i may be kGround. The link owns its material.
   UniaxialLink(std::string label, int dof_i, int dof_j, std::unique_ptr<UniaxialMaterial> law);
 
+  bool has_events() const override { return false; }
   bool add_dofs(std::vector<int>& dofs) const override {
     dofs.push_back(j_);
     if (i_ != kGround) dofs.push_back(i_);
