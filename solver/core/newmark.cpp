@@ -48,12 +48,14 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   if (use_blocks_) {
     k_elements_.setZero(n, n);
     schur_.setZero(n_a, n_a);
-    schur_lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n_a);
+    // Sized by a first in-place factorisation (never by assigning a sized but unfactorised
+    // object: Eigen leaves its status uninitialised, and copying it is undefined behaviour).
+    schur_lu_.compute(Eigen::MatrixXd::Identity(n_a, n_a));
     r_s_.setZero(n_s);
     y_s_.setZero(n_s);
     r_a_.setZero(n_a);
     x_a_.setZero(n_a);
-    k_ss_llt_ = Eigen::LLT<Eigen::MatrixXd>(n_s);
+    k_ss_llt_.compute(Eigen::MatrixXd::Identity(n_s, n_s));
   }
   // The accelerations come from M^-1: a mass matrix that is not symmetric positive definite
   // (a DOF without mass, a negative or NaN mass) is an input error, not a numerical accident.
@@ -76,7 +78,7 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   const Eigen::VectorXd pivots = Eigen::MatrixXd(mass_llt_.matrixL()).diagonal();
   if (pivots.minCoeff() <= 1e-7 * pivots.maxCoeff())
     throw std::invalid_argument("mass matrix is singular to working precision");
-  if (use_lu_) lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  if (use_lu_) lu_.compute(Eigen::MatrixXd::Identity(n, n));
 }
 
 void NewmarkStepper::start(GroundAcceleration ag0) {
