@@ -15,6 +15,7 @@
 #include "solver/materials/impact_law.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/pounding2d.h"
+#include "test_elements.h"
 
 namespace isopound {
 namespace {
@@ -210,24 +211,17 @@ TEST(FixedStepping, HonoursTheContactStepLimit) {
 
 // A linear spring that reports a wildly wrong tangent: Newton's corrections are then tiny
 // while the residual stays large. Such a step must not count as converged.
-class WrongTangentSpring final : public Element {
+class WrongTangentSpring final : public test::QuietElement {
  public:
+  WrongTangentSpring() : QuietElement("spring") {}
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd&) override { u_ = u[0]; }
   void add_force(Eigen::VectorXd& f) const override { f[0] += 1e6 * u_; }
   void add_tangent(Eigen::MatrixXd& K, double) const override { K(0, 0) += 1e30; }
   double power(const Eigen::VectorXd& v) const override { return 1e6 * u_ * v[0]; }
   double stored_energy() const override { return 0.5e6 * u_ * u_; }
-  void commit() override {}
-  void revert() override {}
-  int output_count() const override { return 0; }
-  std::string output_name(int) const override { return ""; }
-  std::string output_unit(int) const override { return ""; }
-  double output(int) const override { return 0.0; }
-  const std::string& label() const override { return label_; }
 
  private:
   double u_ = 0.0;
-  std::string label_ = "spring";
 };
 
 Model one_dof(double mass) {

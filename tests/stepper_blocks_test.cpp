@@ -8,40 +8,11 @@
 #include "solver/core/newmark.h"
 #include "solver/io/model_input.h"
 #include "solver/structures/job.h"
+#include "test_elements.h"
 #include "test_support.h"
 
 namespace isopound {
 namespace {
-
-// f = A u on DOFs 0 and 1 (non-symmetric, as a coupled bearing's tangent); `declares` says
-// whether it tells the stepper its DOFs.
-class LinearPair final : public Element {
- public:
-  LinearPair(Eigen::Matrix2d A, bool declares) : A_(A), declares_(declares) {}
-  void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd&) override { u_ = u.head<2>(); }
-  void add_force(Eigen::VectorXd& f) const override { f.head<2>() += A_ * u_; }
-  void add_tangent(Eigen::MatrixXd& K, double) const override { K.topLeftCorner<2, 2>() += A_; }
-  bool add_dofs(std::vector<int>& dofs) const override {
-    dofs.insert(dofs.end(), {0, 1});
-    return declares_;
-  }
-  bool symmetric_tangent() const override { return false; }
-  double power(const Eigen::VectorXd& v) const override { return v.head<2>().dot(A_ * u_); }
-  double stored_energy() const override { return 0.0; }
-  void commit() override {}
-  void revert() override {}
-  int output_count() const override { return 0; }
-  std::string output_name(int) const override { return ""; }
-  std::string output_unit(int) const override { return ""; }
-  double output(int) const override { return 0.0; }
-  const std::string& label() const override { return label_; }
-
- private:
-  Eigen::Matrix2d A_;
-  bool declares_;
-  Eigen::Vector2d u_ = Eigen::Vector2d::Zero();
-  std::string label_ = "pair";
-};
 
 // A shear chain of n DOFs (DOF 0 on the ground), Rayleigh damping, the pair on DOFs 0 and 1.
 Model chain(int n, bool declares) {
@@ -64,7 +35,7 @@ Model chain(int n, bool declares) {
   model.influence = Eigen::VectorXd::Ones(n);
   model.influence_y = Eigen::VectorXd::Zero(n);
   model.elements.push_back(
-      std::make_unique<LinearPair>(Eigen::Matrix2d{{1e7, 3e8}, {-2e8, 2e7}}, declares));
+      std::make_unique<test::LinearPair>(Eigen::Matrix2d{{1e7, 3e8}, {-2e8, 2e7}}, declares));
   return model;
 }
 

@@ -4,34 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "solver/core/newmark.h"
+#include "test_elements.h"
 
 namespace isopound {
 namespace {
-
-// f = A u on DOFs 0 and 1 (a circulatory, non-symmetric coupling, e.g. a coupled bearing's
-// tangent), declared non-symmetric.
-class NonSymmetricLinear final : public Element {
- public:
-  explicit NonSymmetricLinear(Eigen::Matrix2d A) : A_(A) {}
-  void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd&) override { u_ = u.head<2>(); }
-  void add_force(Eigen::VectorXd& f) const override { f.head<2>() += A_ * u_; }
-  void add_tangent(Eigen::MatrixXd& K, double) const override { K.topLeftCorner<2, 2>() += A_; }
-  bool symmetric_tangent() const override { return false; }
-  double power(const Eigen::VectorXd& v) const override { return v.head<2>().dot(A_ * u_); }
-  double stored_energy() const override { return 0.0; }
-  void commit() override {}
-  void revert() override {}
-  int output_count() const override { return 0; }
-  std::string output_name(int) const override { return ""; }
-  std::string output_unit(int) const override { return ""; }
-  double output(int) const override { return 0.0; }
-  const std::string& label() const override { return label_; }
-
- private:
-  Eigen::Matrix2d A_;
-  Eigen::Vector2d u_ = Eigen::Vector2d::Zero();
-  std::string label_ = "nonsymmetric";
-};
 
 TEST(StepperGeneral, NonSymmetricTangentUsesLUAndMatchesDirectNewmark) {
   Model model;
@@ -42,7 +18,7 @@ TEST(StepperGeneral, NonSymmetricTangentUsesLUAndMatchesDirectNewmark) {
   model.influence = Eigen::Vector2d(1.0, 0.0);
   model.influence_y = Eigen::Vector2d(0.0, 1.0);
   Eigen::Matrix2d A{{1e6, 3e7}, {-2e7, 2e6}};  // strongly non-symmetric
-  model.elements.push_back(std::make_unique<NonSymmetricLinear>(A));
+  model.elements.push_back(std::make_unique<test::LinearPair>(A, false));
   NewmarkStepper stepper(model, {1e-12, 25});
   ASSERT_TRUE(stepper.uses_lu());
   stepper.start(GroundAcceleration(0.0, 0.0));
