@@ -17,6 +17,26 @@ class Element {
   virtual void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) = 0;
   // f += this element's restoring force on the DOFs (same sign as a spring: f = k u).
   virtual void add_force(Eigen::VectorXd& f) const = 0;
+  // Batches. The stepper hands a run of consecutive elements with the same non-null
+  // batch_key() to the first one's *_batch() methods, which must give the same results as the
+  // single calls on each element in turn (bit for bit): a batch lets independent law
+  // evaluations overlap in the processor and sums stay in registers.
+  virtual const void* batch_key() const { return nullptr; }
+  virtual void set_trial_batch(Element* const* elements, int count, const Eigen::VectorXd& u,
+                               const Eigen::VectorXd& v) {
+    for (int i = 0; i < count; ++i) elements[i]->set_trial(u, v);
+  }
+  virtual void add_force_batch(Element* const* elements, int count, Eigen::VectorXd& f) const {
+    for (int i = 0; i < count; ++i) elements[i]->add_force(f);
+  }
+  virtual void add_tangent_batch(Element* const* elements, int count, Eigen::MatrixXd& K,
+                                 double velocity_factor) const {
+    for (int i = 0; i < count; ++i) elements[i]->add_tangent(K, velocity_factor);
+  }
+  virtual void add_stiffness_product_batch(Element* const* elements, int count,
+                                           const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+    for (int i = 0; i < count; ++i) elements[i]->add_stiffness_product(x, y);
+  }
   // K += df/du + velocity_factor df/dv (Newmark passes velocity_factor = dv/du = 2/h).
   virtual void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const = 0;
   // Appends the DOFs whose force and tangent this element may ever touch and returns true;

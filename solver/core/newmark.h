@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <utility>
 #include <vector>
 
 #include "solver/core/model.h"
@@ -124,6 +125,14 @@ class NewmarkStepper {
   // Block elimination (see above): element DOFs a and linear DOFs s, in index order.
   static constexpr int kMinLinearDofs = 8;
   std::vector<Element*> eventful_;  // Element::has_events(): they get begin_step
+  // The elements in order and their runs of one Element::batch_key() (begin, count): the hot
+  // calls below go to a run's first element at once.
+  std::vector<Element*> element_list_;
+  std::vector<std::pair<int, int>> batch_runs_;
+  void set_trials(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
+  void add_forces(Eigen::VectorXd& f) const;
+  void add_tangents(Eigen::MatrixXd& K, double velocity_factor) const;
+  void add_stiffness_products(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   bool use_blocks_ = false;
   bool stiffness_products_ = false;  // error_norm from Element::add_stiffness_product
   std::vector<int> element_dofs_, linear_dofs_;

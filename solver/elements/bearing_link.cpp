@@ -2,6 +2,7 @@
 // f = T^T F and tangent T^T (K + c K_v) T scattered to the DOFs present (-1: absent, zero motion).
 #include "solver/elements/bearing_link.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace isopound {
@@ -48,6 +49,108 @@ void BearingLink::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) 
     law_->set_trial(d, deformation_of(v));
 }
 
+const void* BearingLink::batch_key() const {
+  static const char coupled_bearings = 0;
+  return coupled_ ? &coupled_bearings : nullptr;
+}
+
+// Every element of a batch has this key: a BearingLink with the coupled law (rate independent).
+void BearingLink::set_trial_batch(Element* const* elements, int count, const Eigen::VectorXd& u,
+                                  const Eigen::VectorXd&) {
+  constexpr int kChunk = 16;
+  CoupledBoucWenMaterial* laws[kChunk];
+  Eigen::Vector2d d[kChunk];
+  for (int begin = 0; begin < count; begin += kChunk) {
+    const int n = std::min(kChunk, count - begin);
+    for (int i = 0; i < n; ++i) {
+      const auto& link = static_cast<const BearingLink&>(*elements[begin + i]);
+      laws[i] = link.coupled_;
+      d[i] = link.deformation_of(u);
+    }
+    CoupledBoucWenMaterial::set_trials(laws, d, n);
+  }
+}
+
+template <class Single, class Block>
+void BearingLink::for_each_diaphragm_run(Element* const* elements, int count, Single&& single,
+                                         Block&& block) {
+  for (int i = 0; i < count;) {
+    const auto& first = static_cast<const BearingLink&>(*elements[i]);
+    if (!first.consecutive_) {
+      single(first);
+      ++i;
+      continue;
+    }
+    int j = i + 1;
+    while (j < count) {
+      const auto& next = static_cast<const BearingLink&>(*elements[j]);
+      if (!next.consecutive_ || next.dofs_.ux != first.dofs_.ux) break;
+      ++j;
+    }
+    block(first.dofs_.ux, elements + i, j - i);
+    i = j;
+  }
+}
+
+void BearingLink::add_force_batch(Element* const* elements, int count, Eigen::VectorXd& f) const {
+  for_each_diaphragm_run(
+      elements, count, [&](const BearingLink& link) { link.add_force(f); },
+      [&](int ux, Element* const* run, int n) {
+        double f0 = f[ux], f1 = f[ux + 1], f2 = f[ux + 2];
+        for (int i = 0; i < n; ++i) {
+          const auto& link = static_cast<const BearingLink&>(*run[i]);
+          const Eigen::Vector2d F = link.coupled_->force();
+          f0 += F[0];
+          f1 += F[1];
+          f2 += link.p_OB_.x() * F[1] - link.p_OB_.y() * F[0];
+        }
+        f[ux] = f0;
+        f[ux + 1] = f1;
+        f[ux + 2] = f2;
+      });
+}
+
+void BearingLink::add_tangent_batch(Element* const* elements, int count, Eigen::MatrixXd& K,
+                                    double velocity_factor) const {
+  for_each_diaphragm_run(
+      elements, count, [&](const BearingLink& link) { link.add_tangent(K, velocity_factor); },
+      [&](int ux, Element* const* run, int n) {
+        double* column[3] = {&K(ux, ux), &K(ux, ux + 1), &K(ux, ux + 2)};
+        double sum[9];
+        for (int c = 0; c < 3; ++c)
+          for (int r = 0; r < 3; ++r) sum[3 * c + r] = column[c][r];
+        for (int i = 0; i < n; ++i) {
+          const auto& link = static_cast<const BearingLink&>(*run[i]);
+          // The coupled law is rate independent: no rate tangent to add (adding its zeros
+          // changes no bit, as the tangent has no -0 entries).
+          double kt[9];
+          link.diaphragm_tangent(link.coupled_->tangent(), kt);
+          for (int e = 0; e < 9; ++e) sum[e] += kt[e];
+        }
+        for (int c = 0; c < 3; ++c)
+          for (int r = 0; r < 3; ++r) column[c][r] = sum[3 * c + r];
+      });
+}
+
+void BearingLink::add_stiffness_product_batch(Element* const* elements, int count,
+                                              const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  for_each_diaphragm_run(
+      elements, count, [&](const BearingLink& link) { link.add_stiffness_product(x, y); },
+      [&](int ux, Element* const* run, int n) {
+        double y0 = y[ux], y1 = y[ux + 1], y2 = y[ux + 2];
+        for (int i = 0; i < n; ++i) {
+          const auto& link = static_cast<const BearingLink&>(*run[i]);
+          const Eigen::Vector2d F = link.coupled_->tangent() * link.deformation_of(x);
+          y0 += F[0];
+          y1 += F[1];
+          y2 += link.p_OB_.x() * F[1] - link.p_OB_.y() * F[0];
+        }
+        y[ux] = y0;
+        y[ux + 1] = y1;
+        y[ux + 2] = y2;
+      });
+}
+
 double BearingLink::stored_energy() const {
   return with_law([](const auto& law) { return law.stored_energy(); });
 }
@@ -77,31 +180,41 @@ void BearingLink::add_force(Eigen::VectorXd& f) const {
   scatter(with_law([](const auto& law) { return law.force(); }), f);
 }
 
-void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
-  const Eigen::Matrix2d k = with_law([&](const auto& law) {
+Eigen::Matrix2d BearingLink::law_tangent(double velocity_factor) const {
+  return with_law([&](const auto& law) {
     Eigen::Matrix2d tangent = law.tangent();
     if (velocity_factor != 0.0) tangent += velocity_factor * law.rate_tangent();
     return tangent;
   });
+}
+
+void BearingLink::diaphragm_tangent(const Eigen::Matrix2d& k, double kt[9]) const {
+  // T^T k T written out (T = [[1, 0, -y], [0, 1, x]]), column by column.
+  const double x = p_OB_.x(), y = p_OB_.y();
+  const double k02 = x * k(0, 1) - y * k(0, 0), k12 = x * k(1, 1) - y * k(1, 0);
+  const double k20 = x * k(1, 0) - y * k(0, 0), k21 = x * k(1, 1) - y * k(0, 1);
+  const double k22 = x * k21 - y * k20;  // (T^T k) T, as Eigen associates it
+  kt[0] = k(0, 0);
+  kt[1] = k(1, 0);
+  kt[2] = k20;
+  kt[3] = k(0, 1);
+  kt[4] = k(1, 1);
+  kt[5] = k21;
+  kt[6] = k02;
+  kt[7] = k12;
+  kt[8] = k22;
+}
+
+void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
+  const Eigen::Matrix2d k = law_tangent(velocity_factor);
   if (consecutive_) {
-    // (ux, uy, theta) = (i, i + 1, i + 2): T^T k T written out (T = [[1, 0, -y], [0, 1, x]]),
-    // added column by column to the contiguous 3x3 block.
-    const double x = p_OB_.x(), y = p_OB_.y();
-    const double k02 = x * k(0, 1) - y * k(0, 0), k12 = x * k(1, 1) - y * k(1, 0);
-    const double k20 = x * k(1, 0) - y * k(0, 0), k21 = x * k(1, 1) - y * k(0, 1);
-    const double k22 = x * k21 - y * k20;  // (T^T k) T, as Eigen associates it
-    double* c0 = &K(dofs_.ux, dofs_.ux);
-    double* c1 = &K(dofs_.ux, dofs_.ux + 1);
-    double* c2 = &K(dofs_.ux, dofs_.ux + 2);
-    c0[0] += k(0, 0);
-    c0[1] += k(1, 0);
-    c0[2] += k20;
-    c1[0] += k(0, 1);
-    c1[1] += k(1, 1);
-    c1[2] += k21;
-    c2[0] += k02;
-    c2[1] += k12;
-    c2[2] += k22;
+    // (ux, uy, theta) = (i, i + 1, i + 2): added column by column to the contiguous 3x3 block.
+    double kt[9];
+    diaphragm_tangent(k, kt);
+    for (int c = 0; c < 3; ++c) {
+      double* column = &K(dofs_.ux, dofs_.ux + c);
+      for (int r = 0; r < 3; ++r) column[r] += kt[3 * c + r];
+    }
     return;
   }
   // Columns of T for (ux, uy, theta).

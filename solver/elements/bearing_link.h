@@ -31,6 +31,17 @@ class BearingLink final : public Element {
               std::unique_ptr<BiaxialMaterial> law);
 
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
+  // Bearings with the coupled Bouc-Wen law form batches (Element::batch_key): their n = 2
+  // closed forms overlap (CoupledBoucWenMaterial::set_trials), and the forces and tangents of
+  // the bearings under one 3D diaphragm are summed in registers, in the same order.
+  const void* batch_key() const override;
+  void set_trial_batch(Element* const* elements, int count, const Eigen::VectorXd& u,
+                       const Eigen::VectorXd& v) override;
+  void add_force_batch(Element* const* elements, int count, Eigen::VectorXd& f) const override;
+  void add_tangent_batch(Element* const* elements, int count, Eigen::MatrixXd& K,
+                         double velocity_factor) const override;
+  void add_stiffness_product_batch(Element* const* elements, int count, const Eigen::VectorXd& x,
+                                   Eigen::VectorXd& y) const override;
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
   bool has_stiffness_product() const override { return true; }
@@ -69,6 +80,15 @@ class BearingLink final : public Element {
   decltype(auto) with_law(F&& f) const {
     return coupled_ ? f(*coupled_) : f(*law_);
   }
+
+  // The batch's bearings on one 3D diaphragm at a time: block(ux, run, n) for each run of
+  // consecutive such bearings sharing (ux, ux + 1, ux + 2), single(link) for any other bearing.
+  template <class Single, class Block>
+  static void for_each_diaphragm_run(Element* const* elements, int count, Single&& single,
+                                     Block&& block);
+  // T^T k T's entries for this bearing's k, column by column (see add_tangent).
+  void diaphragm_tangent(const Eigen::Matrix2d& k, double kt[9]) const;
+  Eigen::Matrix2d law_tangent(double velocity_factor) const;
 
   std::string label_;
   DiaphragmDofs dofs_;

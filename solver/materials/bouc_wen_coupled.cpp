@@ -41,14 +41,6 @@ double CoupledBoucWenMaterial::pow_n_minus_2(double r) const {
   return p_.n == 2.0 ? 1.0 : std::pow(r, p_.n - 2.0);
 }
 
-Vector2d CoupledBoucWenMaterial::force() const {
-  return p_.alpha * p_.elastic_stiffness * d_ + (1.0 - p_.alpha) * p_.yield_force * z_;
-}
-
-Matrix2d CoupledBoucWenMaterial::tangent() const {
-  return p_.alpha * p_.elastic_stiffness * Matrix2d::Identity() + hysteretic_stiffness_ * dz_dx_;
-}
-
 double CoupledBoucWenMaterial::stored_energy() const {
   // As the uniaxial law: elastic spring plus the recoverable part of the hysteretic spring.
   return 0.5 * p_.alpha * p_.elastic_stiffness * d_.squaredNorm() +
@@ -154,8 +146,7 @@ Vector2d CoupledBoucWenMaterial::trapezoid_step(const Vector2d& z, const Vector2
 // det m = a (2a - 1) = q (1 + q)/2 exactly, so lambda and 1/det share one division. The tests
 // l < h_sub (h |dPhi/dz| <= 1/4 with |dPhi/dz| <= 2 |w| z_b) and "no component reaches 0" are
 // taken on squares and products. Returns false (nothing written) when the general path is needed.
-bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const Vector2d& dx,
-                                                      Vector2d& z_out, Matrix2d& dz_dx_out) const {
+bool CoupledBoucWenMaterial::n2_prepare(const Vector2d& z0, const Vector2d& dx, N2Step& s) const {
   const double z0x = z0[0], z0y = z0[1], dx0 = dx[0], dx1 = dx[1];
   const bool unloading0 = z0x * dx0 < 0.0, unloading1 = z0y * dx1 < 0.0;
   const double c0 = p_.beta + (unloading0 ? -p_.gamma : p_.gamma);
@@ -181,11 +172,17 @@ bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const 
   const double bx = z0x + 0.5 * D0, by = z0y + 0.5 * D1;
   const double discriminant = 1.0 + 2.0 * (W0 * bx + W1 * by);
   if (!(discriminant > 0.0)) return false;
-  const double q = std::sqrt(discriminant);
-  const double inv = 1.0 / (q * (1.0 + q));
+  s = {z0x, z0y, c0, c1, W0, W1, bx, by, z_sq, discriminant};
+  return true;
+}
+
+void CoupledBoucWenMaterial::n2_finish(const N2Step& s, double q, double inv, Vector2d& z_out,
+                                       Matrix2d& dz_dx_out) const {
+  const double A = p_.A;
+  const double z0x = s.z0x, z0y = s.z0y, c0 = s.c0, c1 = s.c1, W0 = s.W0, W1 = s.W1;
   const double lambda = 2.0 * q * inv;  // 2 / (1 + q)
   const double inv_det = 2.0 * inv;     // 1 / det m
-  const double z1x = lambda * bx, z1y = lambda * by;
+  const double z1x = lambda * s.bx, z1y = lambda * s.by;
   // (M0 + M1)/2 with M(z) = A I - z (c o z)^T.
   const double r00 = A - 0.5 * (z0x * c0 * z0x + z1x * c0 * z1x);
   const double r01 = -0.5 * (z0x * c1 * z0y + z1x * c1 * z1y);
@@ -201,7 +198,7 @@ bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const 
   S(1, 1) = (m00 * r11 - m10 * r01) * inv_det;
   Vector2d z(z1x, z1y);
   // Back onto the rim when the trapezoidal map left the disc (as in integrate()).
-  if (p_.gamma >= 0.0 && z_sq <= rim_sq_) {
+  if (p_.gamma >= 0.0 && s.z_sq <= rim_sq_) {
     const double r1_sq = z1x * z1x + z1y * z1y;
     if (r1_sq > z_saturation_sq_) {
       const double r1 = std::sqrt(r1_sq);
@@ -213,7 +210,44 @@ bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const 
   }
   z_out = z;
   dz_dx_out = S;
+}
+
+bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const Vector2d& dx,
+                                                      Vector2d& z_out, Matrix2d& dz_dx_out) const {
+  N2Step s;
+  if (!n2_prepare(z0, dx, s)) return false;
+  const double q = std::sqrt(s.discriminant);
+  n2_finish(s, q, 1.0 / (q * (1.0 + q)), z_out, dz_dx_out);
   return true;
+}
+
+void CoupledBoucWenMaterial::set_trials(CoupledBoucWenMaterial* const* laws, const Vector2d* d,
+                                        int count) {
+  // Three passes: the closed forms' set-ups, then every square root and division (independent,
+  // so they overlap instead of each waiting on the one before), then the rest.
+  N2Step steps[kTrialBatch];
+  double q[kTrialBatch], inv[kTrialBatch];
+  bool fast[kTrialBatch];
+  for (int begin = 0; begin < count; begin += kTrialBatch) {
+    const int n = std::min(kTrialBatch, count - begin);
+    CoupledBoucWenMaterial* const* law = laws + begin;
+    for (int i = 0; i < n; ++i) {
+      CoupledBoucWenMaterial& m = *law[i];
+      m.d_ = d[begin + i];
+      const Vector2d dx = (m.d_ - m.d_commit_) * m.inverse_yield_displacement_;
+      fast[i] = m.p_.n == 2.0 && dx.squaredNorm() > 0.0 && m.n2_prepare(m.z_commit_, dx, steps[i]);
+      if (!fast[i]) {
+        const ZUpdate update = m.integrate(m.z_commit_, dx);
+        m.z_ = update.z;
+        m.dz_dx_ = update.dz_dx;
+        steps[i].discriminant = 1.0;  // a harmless operand for the next pass
+      }
+    }
+    for (int i = 0; i < n; ++i) q[i] = std::sqrt(steps[i].discriminant);
+    for (int i = 0; i < n; ++i) inv[i] = 1.0 / (q[i] * (1.0 + q[i]));
+    for (int i = 0; i < n; ++i)
+      if (fast[i]) law[i]->n2_finish(steps[i], q[i], inv[i], law[i]->z_, law[i]->dz_dx_);
+  }
 }
 
 // Pseudocode of integrate(z0, dx), l = |dx|, e = dx/l, S = dz/dx carried along:

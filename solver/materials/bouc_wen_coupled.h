@@ -29,8 +29,14 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   explicit CoupledBoucWenMaterial(const BoucWenParameters& p);
 
   void set_trial(const Eigen::Vector2d& d, const Eigen::Vector2d& rate) override;
-  Eigen::Vector2d force() const override;
-  Eigen::Matrix2d tangent() const override;
+  // Inline: the bearings' batches sum them in registers (BearingLink::add_force_batch).
+  Eigen::Vector2d force() const override {
+    return p_.alpha * p_.elastic_stiffness * d_ + (1.0 - p_.alpha) * p_.yield_force * z_;
+  }
+  Eigen::Matrix2d tangent() const override {
+    return p_.alpha * p_.elastic_stiffness * Eigen::Matrix2d::Identity() +
+           hysteretic_stiffness_ * dz_dx_;
+  }
   bool symmetric_tangent() const override { return false; }
   Eigen::Vector2d internal() const override { return z_; }
   double stored_energy() const override;
@@ -51,6 +57,10 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   ZUpdate integrate(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx,
                     bool closed_form_n2 = true) const;
 
+  // set_trial(d[i], 0) of laws[i], i < count, all at once: the same results, with the n = 2
+  // closed forms' square roots and divisions taken together (independent, so they overlap).
+  static void set_trials(CoupledBoucWenMaterial* const* laws, const Eigen::Vector2d* d, int count);
+
  private:
   // Phi(z) = M(z) e, M = A I - g(z) (c o z)^T; its Jacobian dPhi/dz.
   Eigen::Matrix2d phi_matrix(const Eigen::Vector2d& z, const Eigen::Vector2d& c) const;
@@ -69,6 +79,15 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   // common case); false when the general path is needed.
   bool integrate_single_step_n2(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx,
                                 Eigen::Vector2d& z_out, Eigen::Matrix2d& dz_dx_out) const;
+  // The closed form in two parts around q = sqrt(discriminant) and inv = 1 / (q (1 + q)):
+  // n2_prepare() is false when the general path is needed (nothing written).
+  struct N2Step {
+    double z0x, z0y, c0, c1, W0, W1, bx, by, z_sq, discriminant;
+  };
+  bool n2_prepare(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx, N2Step& s) const;
+  void n2_finish(const N2Step& s, double q, double inv, Eigen::Vector2d& z_out,
+                 Eigen::Matrix2d& dz_dx_out) const;
+  static constexpr int kTrialBatch = 16;
 
   BoucWenParameters p_;
   double z_saturation_, z_saturation_pow_n_;
