@@ -240,14 +240,9 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   const double grid_tolerance = 1e-6 * H;
   long progress_tick = 0;
 
-  // Element outputs of the current step, element e at output_offset[e].
-  std::vector<int> output_offset(n_elements), output_count(n_elements);
+  // Element outputs of the current step, one element after the other.
   int outputs_total = 0;
-  for (int e = 0; e < n_elements; ++e) {
-    output_offset[e] = outputs_total;
-    output_count[e] = model.elements[e]->output_count();
-    outputs_total += output_count[e];
-  }
+  for (const auto& e : model.elements) outputs_total += e->output_count();
   std::vector<double> output_scratch(outputs_total);
   const auto bands_of = [](std::vector<Peak>& peaks) {
     std::vector<Peak*> pointers;
@@ -317,8 +312,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
     // work holds the absolute accelerations until the energy terms below.
     probe_recorder.record(u.data(), work.data(), t, res.probes);
-    for (int e = 0; e < n_elements; ++e)
-      model.elements[e]->outputs(output_scratch.data() + output_offset[e]);
+    stepper.batches().outputs(output_scratch.data());
     output_peaks.record(output_scratch.data(), t);
 
     // Energy.
@@ -326,10 +320,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     if (ag.y != 0.0) p_in -= v.dot(m_iota.col(1)) * ag.y;
     const double p_visc = v.dot(damping_force);  // C v, computed for the base shear
     double p_elem = 0.0, stored = 0.0;
-    for (const auto& el : model.elements) {
-      p_elem += el->power(v);
-      stored += el->stored_energy();
-    }
+    stepper.batches().add_energy(v, p_elem, stored);
     e_in += 0.5 * h * (p_in_prev + p_in);
     e_visc += 0.5 * h * (p_visc_prev + p_visc);
     w_elem += 0.5 * h * (p_elem_prev + p_elem);

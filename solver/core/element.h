@@ -17,9 +17,9 @@ class Element {
   virtual void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) = 0;
   // f += this element's restoring force on the DOFs (same sign as a spring: f = k u).
   virtual void add_force(Eigen::VectorXd& f) const = 0;
-  // Batches. The stepper hands a run of consecutive elements with the same non-null
-  // batch_key() to the first one's *_batch() methods, which must give the same results as the
-  // single calls on each element in turn (bit for bit): a batch lets independent law
+  // Batches (element_batches.h). The stepper hands a run of consecutive elements with the same
+  // non-null batch_key() to the first one's *_batch() methods, which must give the same results as
+  // the single calls on each element in turn (bit for bit): a batch lets independent law
   // evaluations overlap in the processor and sums stay in registers.
   virtual const void* batch_key() const { return nullptr; }
   virtual void set_trial_batch(Element* const* elements, int count, const Eigen::VectorXd& u,
@@ -36,6 +36,21 @@ class Element {
   virtual void add_stiffness_product_batch(Element* const* elements, int count,
                                            const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
     for (int i = 0; i < count; ++i) elements[i]->add_stiffness_product(x, y);
+  }
+  // outputs() of each, one after the other from out (output_count() values each).
+  virtual void outputs_batch(Element* const* elements, int count, double* out) const {
+    for (int i = 0; i < count; ++i) {
+      elements[i]->outputs(out);
+      out += elements[i]->output_count();
+    }
+  }
+  // power += each power(v), stored += each stored_energy(), in order.
+  virtual void add_energy_batch(Element* const* elements, int count, const Eigen::VectorXd& v,
+                                double& power, double& stored) const {
+    for (int i = 0; i < count; ++i) {
+      power += elements[i]->power(v);
+      stored += elements[i]->stored_energy();
+    }
   }
   // K += df/du + velocity_factor df/dv (Newmark passes velocity_factor = dv/du = 2/h).
   virtual void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const = 0;

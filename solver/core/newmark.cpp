@@ -13,7 +13,11 @@
 namespace isopound {
 
 NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
-    : model_(model), settings_(settings), llt_(model.size()), ldlt_(model.size()) {
+    : model_(model),
+      settings_(settings),
+      llt_(model.size()),
+      ldlt_(model.size()),
+      batches_(model.elements) {
   const int n = model.size();
   for (Eigen::VectorXd* x : {&u0_, &v0_, &a0_, &k_u0_, &m_v0_, &c_v0_, &u1_, &v1_, &a1_, &p_hat_,
                              &r_, &du_, &work_, &delta_})
@@ -25,15 +29,6 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   for (const auto& e : model.elements) use_lu_ = use_lu_ || !e->symmetric_tangent();
   for (const auto& e : model.elements)
     if (e->has_events()) eventful_.push_back(e.get());
-  for (const auto& e : model.elements) {
-    const void* key = e->batch_key();
-    const int i = static_cast<int>(element_list_.size());
-    if (key && i > 0 && element_list_.back()->batch_key() == key)
-      ++batch_runs_.back().second;
-    else
-      batch_runs_.emplace_back(i, 1);
-    element_list_.push_back(e.get());
-  }
   k_tangent_.setZero(n, n);
   // Block elimination when every element declares its DOFs and enough DOFs stay linear.
   bool declared = true;
@@ -197,7 +192,7 @@ void NewmarkStepper::solve_blocks(const EffectiveLinear& e) {
   const int n_s = static_cast<int>(linear_dofs_.size());
   for (const int i : element_dofs_)
     for (const int j : element_dofs_) k_elements_(i, j) = 0.0;
-  add_tangents(k_elements_, 2.0 / h_);
+  batches_.add_tangents(k_elements_, 2.0 / h_);
   for (int j = 0; j < n_a; ++j)
     for (int i = 0; i < n_a; ++i)
       schur_(i, j) = e.schur(i, j) + k_elements_(element_dofs_[i], element_dofs_[j]);
@@ -242,10 +237,10 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
   for (int it = 0; it <= settings_.max_iterations; ++it) {
     u1_ = u0_ + delta_;
     v1_ = (2.0 / h) * delta_ - v0_;
-    set_trials(u1_, v1_);
+    batches_.set_trials(u1_, v1_);
     r_.noalias() = k_hat * delta_;
     r_ += p_hat_;
-    add_forces(r_);
+    batches_.add_forces(r_);
     const double r_norm = r_.cwiseAbs().cwiseProduct(residual_weight_).maxCoeff();
     if (!std::isfinite(r_norm)) break;
     out.iterations = it;
@@ -261,7 +256,7 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
       continue;
     }
     k_tangent_ = k_hat;
-    add_tangents(k_tangent_, 2.0 / h);
+    batches_.add_tangents(k_tangent_, 2.0 / h);
     if (use_lu_) {
       lu_.compute(k_tangent_);
       du_ = lu_.solve(r_);
@@ -277,57 +272,17 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
   return out;
 }
 
-void NewmarkStepper::set_trials(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
-  for (const auto& [begin, count] : batch_runs_) {
-    Element* const* run = &element_list_[static_cast<std::size_t>(begin)];
-    if (count == 1)
-      run[0]->set_trial(u, v);
-    else
-      run[0]->set_trial_batch(run, count, u, v);
-  }
-}
-
-void NewmarkStepper::add_forces(Eigen::VectorXd& f) const {
-  for (const auto& [begin, count] : batch_runs_) {
-    Element* const* run = &element_list_[static_cast<std::size_t>(begin)];
-    if (count == 1)
-      run[0]->add_force(f);
-    else
-      run[0]->add_force_batch(run, count, f);
-  }
-}
-
-void NewmarkStepper::add_tangents(Eigen::MatrixXd& K, double velocity_factor) const {
-  for (const auto& [begin, count] : batch_runs_) {
-    Element* const* run = &element_list_[static_cast<std::size_t>(begin)];
-    if (count == 1)
-      run[0]->add_tangent(K, velocity_factor);
-    else
-      run[0]->add_tangent_batch(run, count, K, velocity_factor);
-  }
-}
-
-void NewmarkStepper::add_stiffness_products(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
-  for (const auto& [begin, count] : batch_runs_) {
-    Element* const* run = &element_list_[static_cast<std::size_t>(begin)];
-    if (count == 1)
-      run[0]->add_stiffness_product(x, y);
-    else
-      run[0]->add_stiffness_product_batch(run, count, x, y);
-  }
-}
-
 double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
   // e = h^2/12 (a1 - a0); force error K_s e with K_s = K + element stiffness tangents.
   work_ = (h_ * h_ / 12.0) * (a1_ - a0_);
   if (stiffness_products_) {
     // The elements' products, not their assembled tangents (the same to round-off).
     du_.noalias() = model_.stiffness * work_;
-    add_stiffness_products(work_, du_);
+    batches_.add_stiffness_products(work_, du_);
     return du_.cwiseAbs().cwiseQuotient(force_scale).maxCoeff();
   }
   k_tangent_ = model_.stiffness;
-  add_tangents(k_tangent_, 0.0);
+  batches_.add_tangents(k_tangent_, 0.0);
   du_.noalias() = k_tangent_ * work_;
   return du_.cwiseAbs().cwiseQuotient(force_scale).maxCoeff();
 }

@@ -3,9 +3,9 @@
 #pragma once
 
 #include <Eigen/Dense>
-#include <utility>
 #include <vector>
 
+#include "solver/core/element_batches.h"
 #include "solver/core/model.h"
 
 namespace isopound {
@@ -75,6 +75,8 @@ class NewmarkStepper {
   const Eigen::VectorXd& k_u() const { return k_u0_; }
   const Eigen::VectorXd& m_v() const { return m_v0_; }
   const Eigen::VectorXd& c_v() const { return c_v0_; }
+  // The model's elements by batches (the analysis records their outputs and energy through it).
+  const ElementBatches& batches() const { return batches_; }
   const Eigen::VectorXd& trial_u() const { return u1_; }
   const Eigen::VectorXd& trial_v() const { return v1_; }
   const Eigen::VectorXd& trial_a() const { return a1_; }
@@ -125,14 +127,7 @@ class NewmarkStepper {
   // Block elimination (see above): element DOFs a and linear DOFs s, in index order.
   static constexpr int kMinLinearDofs = 8;
   std::vector<Element*> eventful_;  // Element::has_events(): they get begin_step
-  // The elements in order and their runs of one Element::batch_key() (begin, count): the hot
-  // calls below go to a run's first element at once.
-  std::vector<Element*> element_list_;
-  std::vector<std::pair<int, int>> batch_runs_;
-  void set_trials(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
-  void add_forces(Eigen::VectorXd& f) const;
-  void add_tangents(Eigen::MatrixXd& K, double velocity_factor) const;
-  void add_stiffness_products(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  ElementBatches batches_;          // the hot element calls, by runs of one batch key
   bool use_blocks_ = false;
   bool stiffness_products_ = false;  // error_norm from Element::add_stiffness_product
   std::vector<int> element_dofs_, linear_dofs_;

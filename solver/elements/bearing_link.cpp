@@ -248,6 +248,11 @@ void BearingLink::outputs(double* out) const {
     d = law.deformation();
     z = law.internal();
   });
+  write_outputs(F, d, z, out);
+}
+
+void BearingLink::write_outputs(const Eigen::Vector2d& F, const Eigen::Vector2d& d,
+                                const Eigen::Vector2d& z, double* out) const {
   if (planar_) {
     out[0] = F[0];
     out[1] = d[0];
@@ -263,6 +268,24 @@ void BearingLink::outputs(double* out) const {
   out[6] = d[1];
   out[7] = z[0];
   out[8] = z[1];
+}
+
+void BearingLink::outputs_batch(Element* const* elements, int count, double* out) const {
+  for (int i = 0; i < count; ++i) {
+    const auto& link = static_cast<const BearingLink&>(*elements[i]);
+    const CoupledBoucWenMaterial& law = *link.coupled_;
+    link.write_outputs(law.force(), law.deformation(), law.internal(), out);
+    out += link.output_count();
+  }
+}
+
+void BearingLink::add_energy_batch(Element* const* elements, int count, const Eigen::VectorXd& v,
+                                   double& power, double& stored) const {
+  for (int i = 0; i < count; ++i) {
+    const auto& link = static_cast<const BearingLink&>(*elements[i]);
+    power += link.coupled_->force().dot(link.deformation_of(v));
+    stored += link.coupled_->stored_energy();
+  }
 }
 
 double BearingLink::output(int i) const {

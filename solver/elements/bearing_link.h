@@ -42,6 +42,9 @@ class BearingLink final : public Element {
                          double velocity_factor) const override;
   void add_stiffness_product_batch(Element* const* elements, int count, const Eigen::VectorXd& x,
                                    Eigen::VectorXd& y) const override;
+  void outputs_batch(Element* const* elements, int count, double* out) const override;
+  void add_energy_batch(Element* const* elements, int count, const Eigen::VectorXd& v,
+                        double& power, double& stored) const override;
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
   bool has_stiffness_product() const override { return true; }
@@ -89,6 +92,9 @@ class BearingLink final : public Element {
   // T^T k T's entries for this bearing's k, column by column (see add_tangent).
   void diaphragm_tangent(const Eigen::Matrix2d& k, double kt[9]) const;
   Eigen::Matrix2d law_tangent(double velocity_factor) const;
+  // outputs() from the law's force, deformation and hysteretic variables.
+  void write_outputs(const Eigen::Vector2d& F, const Eigen::Vector2d& d, const Eigen::Vector2d& z,
+                     double* out) const;
 
   std::string label_;
   DiaphragmDofs dofs_;

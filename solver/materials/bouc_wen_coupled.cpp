@@ -41,11 +41,6 @@ double CoupledBoucWenMaterial::pow_n_minus_2(double r) const {
   return p_.n == 2.0 ? 1.0 : std::pow(r, p_.n - 2.0);
 }
 
-double CoupledBoucWenMaterial::stored_energy() const {
-  // As the uniaxial law: elastic spring plus the recoverable part of the hysteretic spring.
-  return 0.5 * p_.alpha * p_.elastic_stiffness * d_.squaredNorm() +
-         hysteretic_energy_ * z_.squaredNorm();
-}
 
 void CoupledBoucWenMaterial::set_trial(const Vector2d& d, const Vector2d&) {
   d_ = d;
@@ -237,7 +232,8 @@ void CoupledBoucWenMaterial::set_trials(CoupledBoucWenMaterial* const* laws, con
       const Vector2d dx = (m.d_ - m.d_commit_) * m.inverse_yield_displacement_;
       fast[i] = m.p_.n == 2.0 && dx.squaredNorm() > 0.0 && m.n2_prepare(m.z_commit_, dx, steps[i]);
       if (!fast[i]) {
-        const ZUpdate update = m.integrate(m.z_commit_, dx);
+        // n2_prepare() said no already: integrate() need not try the closed form again.
+        const ZUpdate update = m.integrate(m.z_commit_, dx, false);
         m.z_ = update.z;
         m.dz_dx_ = update.dz_dx;
         steps[i].discriminant = 1.0;  // a harmless operand for the next pass
@@ -287,12 +283,11 @@ CoupledBoucWenMaterial::ZUpdate CoupledBoucWenMaterial::integrate(const Vector2d
   RowVector2d dL_dx = e.transpose();
 
   for (int branch = 0; branch < 3; ++branch) {
-    Vector2d c;
-    bool unloading[2];
-    for (int i = 0; i < 2; ++i) {
-      unloading[i] = z[i] * e[i] < 0.0;
-      c[i] = p_.beta + (unloading[i] ? -p_.gamma : p_.gamma);
-    }
+    const bool unloading[2] = {z[0] * e[0] < 0.0, z[1] * e[1] < 0.0};
+    // c from two scalars, not written entry by entry: a packet load of two fresh 8-byte stores
+    // stalls (no store forwarding), and it sat on this path's critical chain.
+    const Vector2d c(p_.beta + (unloading[0] ? -p_.gamma : p_.gamma),
+                     p_.beta + (unloading[1] ? -p_.gamma : p_.gamma));
     const Vector2d w = c.cwiseProduct(e);
     const double w_norm = w.norm();
 

@@ -39,7 +39,11 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   }
   bool symmetric_tangent() const override { return false; }
   Eigen::Vector2d internal() const override { return z_; }
-  double stored_energy() const override;
+  // As the uniaxial law: elastic spring plus the recoverable part of the hysteretic spring.
+  double stored_energy() const override {
+    return 0.5 * p_.alpha * p_.elastic_stiffness * d_.squaredNorm() +
+           hysteretic_energy_ * z_.squaredNorm();
+  }
   Eigen::Vector2d deformation() const override { return d_; }
   void commit() override;
   void revert() override;
