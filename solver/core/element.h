@@ -17,10 +17,20 @@ class Element {
   virtual void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) = 0;
   // f += this element's restoring force on the DOFs (same sign as a spring: f = k u).
   virtual void add_force(Eigen::VectorXd& f) const = 0;
-  // Batches (element_batches.h). The stepper hands a run of consecutive elements with the same
-  // non-null batch_key() to the first one's *_batch() methods, which must give the same results as
-  // the single calls on each element in turn (bit for bit): a batch lets independent law
-  // evaluations overlap in the processor and sums stay in registers.
+  // K += df/du + velocity_factor df/dv (Newmark passes velocity_factor = dv/du = 2/h).
+  virtual void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const = 0;
+  // Appends the DOFs whose force and tangent this element may ever touch and returns true;
+  // false (the default): it may touch any DOF. The stepper eliminates the DOFs no element
+  // touches once per step size (newmark.h).
+  virtual bool add_dofs(std::vector<int>& /*dofs*/) const { return false; }
+  // y += (df/du) x with the stiffness tangent (velocity factor 0) at the trial state, without
+  // assembling it, when has_stiffness_product(); the stepper's error estimate uses it.
+  virtual bool has_stiffness_product() const { return false; }
+  virtual void add_stiffness_product(const Eigen::VectorXd& /*x*/, Eigen::VectorXd& /*y*/) const {}
+  // Batches (element_batches.h): a run of consecutive elements with the same non-null
+  // batch_key() goes to the first one's *_batch() methods, which must give the same results as
+  // the single calls on each element in turn, bit for bit (the stepper and the record use them;
+  // a batch lets independent law evaluations overlap in the processor and sums stay in registers).
   virtual const void* batch_key() const { return nullptr; }
   virtual void set_trial_batch(Element* const* elements, int count, const Eigen::VectorXd& u,
                                const Eigen::VectorXd& v) {
@@ -52,16 +62,6 @@ class Element {
       stored += elements[i]->stored_energy();
     }
   }
-  // K += df/du + velocity_factor df/dv (Newmark passes velocity_factor = dv/du = 2/h).
-  virtual void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const = 0;
-  // Appends the DOFs whose force and tangent this element may ever touch and returns true;
-  // false (the default): it may touch any DOF. The stepper eliminates the DOFs no element
-  // touches once per step size (newmark.h).
-  virtual bool add_dofs(std::vector<int>& /*dofs*/) const { return false; }
-  // y += (df/du) x with the stiffness tangent (velocity factor 0) at the trial state, without
-  // assembling it, when has_stiffness_product(); the stepper's error estimate uses it.
-  virtual bool has_stiffness_product() const { return false; }
-  virtual void add_stiffness_product(const Eigen::VectorXd& /*x*/, Eigen::VectorXd& /*y*/) const {}
   // False if add_tangent() may add a non-symmetric matrix (coupled bearings, friction): the
   // stepper then factors with LU instead of a symmetric factorisation.
   virtual bool symmetric_tangent() const { return true; }
