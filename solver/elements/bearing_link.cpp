@@ -92,21 +92,27 @@ void BearingLink::for_each_diaphragm_run(Element* const* elements, int count, Si
   }
 }
 
+template <class ForceOf>
+void BearingLink::scatter_run(Element* const* run, int n, int ux, Eigen::VectorXd& f,
+                              ForceOf&& force_of) {
+  double f0 = f[ux], f1 = f[ux + 1], f2 = f[ux + 2];
+  for (int i = 0; i < n; ++i) {
+    const auto& link = static_cast<const BearingLink&>(*run[i]);
+    const Eigen::Vector2d F = force_of(link);
+    f0 += F[0];
+    f1 += F[1];
+    f2 += link.p_OB_.x() * F[1] - link.p_OB_.y() * F[0];
+  }
+  f[ux] = f0;
+  f[ux + 1] = f1;
+  f[ux + 2] = f2;
+}
+
 void BearingLink::add_force_batch(Element* const* elements, int count, Eigen::VectorXd& f) const {
   for_each_diaphragm_run(
       elements, count, [&](const BearingLink& link) { link.add_force(f); },
       [&](int ux, Element* const* run, int n) {
-        double f0 = f[ux], f1 = f[ux + 1], f2 = f[ux + 2];
-        for (int i = 0; i < n; ++i) {
-          const auto& link = static_cast<const BearingLink&>(*run[i]);
-          const Eigen::Vector2d F = link.coupled_->force();
-          f0 += F[0];
-          f1 += F[1];
-          f2 += link.p_OB_.x() * F[1] - link.p_OB_.y() * F[0];
-        }
-        f[ux] = f0;
-        f[ux + 1] = f1;
-        f[ux + 2] = f2;
+        scatter_run(run, n, ux, f, [](const BearingLink& link) { return link.coupled_->force(); });
       });
 }
 
@@ -137,17 +143,9 @@ void BearingLink::add_stiffness_product_batch(Element* const* elements, int coun
   for_each_diaphragm_run(
       elements, count, [&](const BearingLink& link) { link.add_stiffness_product(x, y); },
       [&](int ux, Element* const* run, int n) {
-        double y0 = y[ux], y1 = y[ux + 1], y2 = y[ux + 2];
-        for (int i = 0; i < n; ++i) {
-          const auto& link = static_cast<const BearingLink&>(*run[i]);
-          const Eigen::Vector2d F = link.coupled_->tangent() * link.deformation_of(x);
-          y0 += F[0];
-          y1 += F[1];
-          y2 += link.p_OB_.x() * F[1] - link.p_OB_.y() * F[0];
-        }
-        y[ux] = y0;
-        y[ux + 1] = y1;
-        y[ux + 2] = y2;
+        scatter_run(run, n, ux, y, [&](const BearingLink& link) -> Eigen::Vector2d {
+          return link.coupled_->tangent() * link.deformation_of(x);
+        });
       });
 }
 

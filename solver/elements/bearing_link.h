@@ -89,6 +89,11 @@ class BearingLink final : public Element {
   template <class Single, class Block>
   static void for_each_diaphragm_run(Element* const* elements, int count, Single&& single,
                                      Block&& block);
+  // f(ux .. ux + 2) += T^T force_of(link) over a run's bearings on one diaphragm, summed in
+  // registers in run order (the sums scatter() makes bearing by bearing).
+  template <class ForceOf>
+  static void scatter_run(Element* const* run, int n, int ux, Eigen::VectorXd& f,
+                          ForceOf&& force_of);
   // T^T k T's entries for this bearing's k, column by column (see add_tangent).
   void diaphragm_tangent(const Eigen::Matrix2d& k, double kt[9]) const;
   Eigen::Matrix2d law_tangent(double velocity_factor) const;
