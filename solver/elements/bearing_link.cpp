@@ -57,7 +57,7 @@ const void* BearingLink::batch_key() const {
 // Every element of a batch has this key: a BearingLink with the coupled law (rate independent).
 void BearingLink::set_trial_batch(Element* const* elements, int count, const Eigen::VectorXd& u,
                                   const Eigen::VectorXd&) {
-  constexpr int kChunk = 16;
+  constexpr int kChunk = CoupledBoucWenMaterial::kTrialBatch;
   CoupledBoucWenMaterial* laws[kChunk];
   Eigen::Vector2d d[kChunk];
   for (int begin = 0; begin < count; begin += kChunk) {

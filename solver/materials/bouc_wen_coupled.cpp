@@ -41,17 +41,9 @@ double CoupledBoucWenMaterial::pow_n_minus_2(double r) const {
   return p_.n == 2.0 ? 1.0 : std::pow(r, p_.n - 2.0);
 }
 
-
 void CoupledBoucWenMaterial::set_trial(const Vector2d& d, const Vector2d&) {
-  d_ = d;
-  // A product, not a quotient: the division's latency sat on every step's critical path.
-  const Vector2d dx = (d - d_commit_) * inverse_yield_displacement_;
-  // The common case straight into the trial state (as integrate() would take it).
-  if (p_.n == 2.0 && dx.squaredNorm() > 0.0 && integrate_single_step_n2(z_commit_, dx, z_, dz_dx_))
-    return;
-  const ZUpdate update = integrate(z_commit_, dx);
-  z_ = update.z;
-  dz_dx_ = update.dz_dx;
+  CoupledBoucWenMaterial* self = this;
+  set_trials(&self, &d, 1);
 }
 
 void CoupledBoucWenMaterial::commit() {
@@ -216,34 +208,31 @@ bool CoupledBoucWenMaterial::integrate_single_step_n2(const Vector2d& z0, const 
   return true;
 }
 
-void CoupledBoucWenMaterial::set_trials(CoupledBoucWenMaterial* const* laws, const Vector2d* d,
-                                        int count) {
+void CoupledBoucWenMaterial::set_trials(CoupledBoucWenMaterial* const* law, const Vector2d* d,
+                                        int n) {
   // Three passes: the closed forms' set-ups, then every square root and division (independent,
   // so they overlap instead of each waiting on the one before), then the rest.
   N2Step steps[kTrialBatch];
   double q[kTrialBatch], inv[kTrialBatch];
   bool fast[kTrialBatch];
-  for (int begin = 0; begin < count; begin += kTrialBatch) {
-    const int n = std::min(kTrialBatch, count - begin);
-    CoupledBoucWenMaterial* const* law = laws + begin;
-    for (int i = 0; i < n; ++i) {
-      CoupledBoucWenMaterial& m = *law[i];
-      m.d_ = d[begin + i];
-      const Vector2d dx = (m.d_ - m.d_commit_) * m.inverse_yield_displacement_;
-      fast[i] = m.p_.n == 2.0 && dx.squaredNorm() > 0.0 && m.n2_prepare(m.z_commit_, dx, steps[i]);
-      if (!fast[i]) {
-        // n2_prepare() said no already: integrate() need not try the closed form again.
-        const ZUpdate update = m.integrate(m.z_commit_, dx, false);
-        m.z_ = update.z;
-        m.dz_dx_ = update.dz_dx;
-        steps[i].discriminant = 1.0;  // a harmless operand for the next pass
-      }
+  for (int i = 0; i < n; ++i) {
+    CoupledBoucWenMaterial& m = *law[i];
+    m.d_ = d[i];
+    // A product, not a quotient: the division's latency sat on every step's critical path.
+    const Vector2d dx = (m.d_ - m.d_commit_) * m.inverse_yield_displacement_;
+    // The common case (as integrate() would take it), else integrate() without retrying it.
+    fast[i] = m.p_.n == 2.0 && dx.squaredNorm() > 0.0 && m.n2_prepare(m.z_commit_, dx, steps[i]);
+    if (!fast[i]) {
+      const ZUpdate update = m.integrate(m.z_commit_, dx, false);
+      m.z_ = update.z;
+      m.dz_dx_ = update.dz_dx;
+      steps[i].discriminant = 1.0;  // a harmless operand for the next pass
     }
-    for (int i = 0; i < n; ++i) q[i] = std::sqrt(steps[i].discriminant);
-    for (int i = 0; i < n; ++i) inv[i] = 1.0 / (q[i] * (1.0 + q[i]));
-    for (int i = 0; i < n; ++i)
-      if (fast[i]) law[i]->n2_finish(steps[i], q[i], inv[i], law[i]->z_, law[i]->dz_dx_);
   }
+  for (int i = 0; i < n; ++i) q[i] = std::sqrt(steps[i].discriminant);
+  for (int i = 0; i < n; ++i) inv[i] = 1.0 / (q[i] * (1.0 + q[i]));
+  for (int i = 0; i < n; ++i)
+    if (fast[i]) law[i]->n2_finish(steps[i], q[i], inv[i], law[i]->z_, law[i]->dz_dx_);
 }
 
 // Pseudocode of integrate(z0, dx), l = |dx|, e = dx/l, S = dz/dx carried along:

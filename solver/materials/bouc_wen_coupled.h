@@ -61,9 +61,11 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   ZUpdate integrate(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx,
                     bool closed_form_n2 = true) const;
 
-  // set_trial(d[i], 0) of laws[i], i < count, all at once: the same results, with the n = 2
-  // closed forms' square roots and divisions taken together (independent, so they overlap).
-  static void set_trials(CoupledBoucWenMaterial* const* laws, const Eigen::Vector2d* d, int count);
+  // set_trial(d[i], 0) of law[i], i < n <= kTrialBatch, all at once (set_trial() is the case
+  // n = 1): the n = 2 closed forms' square roots and divisions are taken together (independent,
+  // so they overlap).
+  static constexpr int kTrialBatch = 16;
+  static void set_trials(CoupledBoucWenMaterial* const* law, const Eigen::Vector2d* d, int n);
 
  private:
   // Phi(z) = M(z) e, M = A I - g(z) (c o z)^T; its Jacobian dPhi/dz.
@@ -91,7 +93,6 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   bool n2_prepare(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx, N2Step& s) const;
   void n2_finish(const N2Step& s, double q, double inv, Eigen::Vector2d& z_out,
                  Eigen::Matrix2d& dz_dx_out) const;
-  static constexpr int kTrialBatch = 16;
 
   BoucWenParameters p_;
   double z_saturation_, z_saturation_pow_n_;
