@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "solver/core/compressed_rows.h"
 #include "solver/core/constants.h"
 #include "solver/core/modes.h"
 #include "solver/core/newmark.h"
@@ -168,6 +169,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
                                info.level_dofs.end());
     if (info.has_base) above_base[s] = info.level_dofs;
   }
+  CompressedRows mass_rows;  // M, for M a_abs
+  mass_rows.assign(model.mass);
   Eigen::VectorXd inertia(n);         // M a_abs
   Eigen::VectorXd isolator_force(n);  // the isolator elements' internal forces
   std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size());
@@ -283,7 +286,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       update_peak(res.drift[s], drift, t);
       update_peak(res.drift_ratio[s], drift / st.height, t);
     }
-    inertia.noalias() = model.mass * work;
+    mass_rows.multiply(work, inertia);
     for (std::size_t s = 0; s < above_story.size(); ++s) {
       double shear = 0.0;
       for (const int d : above_story[s]) shear -= inertia[d];

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "solver/core/constants.h"
+#include "solver/core/small_lu.h"
 
 namespace isopound {
 
@@ -30,6 +31,10 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   for (const auto& e : model.elements)
     if (e->has_events()) eventful_.push_back(e.get());
   k_tangent_.setZero(n, n);
+  pivots_.resize(static_cast<std::size_t>(n));
+  mass_rows_.assign(model.mass);
+  stiffness_rows_.assign(model.stiffness);
+  damping_rows_.assign(model.damping);
   // Block elimination when every element declares its DOFs and enough DOFs stay linear.
   bool declared = true;
   for (const auto& e : model.elements) declared = e->add_dofs(element_dofs_) && declared;
@@ -126,6 +131,7 @@ void NewmarkStepper::fill_effective_linear(double h, EffectiveLinear& e) {
   e.k_hat = model_.stiffness;
   e.k_hat += (2.0 / h) * model_.damping;
   e.k_hat += (4.0 / (h * h)) * model_.mass;
+  e.k_hat_rows.assign(e.k_hat);
   e.blocks = false;
   if (!use_blocks_) return;
   // Blocks gathered by plain loops (Eigen's indexed views copy a std::vector index: allocations).
@@ -146,6 +152,9 @@ void NewmarkStepper::fill_effective_linear(double h, EffectiveLinear& e) {
   e.k_ss_inv_sa.noalias() = e.k_ss_inv * e.k_sa;
   gather(element_dofs_, element_dofs_, e.schur);
   e.schur.noalias() -= e.k_as * e.k_ss_inv_sa;
+  e.k_ss_inv_rows.assign(e.k_ss_inv);
+  e.k_as_rows.assign(e.k_as);
+  e.k_ss_inv_sa_rows.assign(e.k_ss_inv_sa);
   e.blocks = true;
 }
 
@@ -175,7 +184,11 @@ void NewmarkStepper::reserve_step_sizes(int count) {
   k_hat_cache_.reserve(k_hat_cache_.size() + static_cast<std::size_t>(count));
   for (EffectiveLinear* e = &k_hat_uncached_; count >= 0; --count) {
     e->k_hat.resize(n, n);
+    e->k_hat_rows.reserve(n, n);
     if (use_blocks_) {
+      e->k_ss_inv_rows.reserve(n_s, n_s);
+      e->k_as_rows.reserve(n_a, n_s);
+      e->k_ss_inv_sa_rows.reserve(n_s, n_a);
       e->k_ss_inv.resize(n_s, n_s);
       e->k_as.resize(n_a, n_s);
       e->k_sa.resize(n_s, n_a);
@@ -198,11 +211,17 @@ void NewmarkStepper::solve_blocks(const EffectiveLinear& e) {
       schur_(i, j) = e.schur(i, j) + k_elements_(element_dofs_[i], element_dofs_[j]);
   for (int i = 0; i < n_s; ++i) r_s_[i] = r_[linear_dofs_[i]];
   for (int i = 0; i < n_a; ++i) r_a_[i] = r_[element_dofs_[i]];
-  y_s_.noalias() = e.k_ss_inv * r_s_;  // K_ss^-1 r_s
-  r_a_.noalias() -= e.k_as * y_s_;
-  schur_lu_.compute(schur_);
-  x_a_ = schur_lu_.solve(r_a_);
-  y_s_.noalias() -= e.k_ss_inv_sa * x_a_;
+  e.k_ss_inv_rows.multiply(r_s_, y_s_);  // K_ss^-1 r_s
+  e.k_as_rows.subtract_product(y_s_, r_a_);
+  if (n_a <= SmallLu::kMaxSize) {
+    SmallLu::factor(schur_, pivots_.data());  // schur_ is rebuilt every iteration
+    x_a_ = r_a_;
+    SmallLu::solve(schur_, pivots_.data(), x_a_);
+  } else {
+    schur_lu_.compute(schur_);
+    x_a_ = schur_lu_.solve(r_a_);
+  }
+  e.k_ss_inv_sa_rows.subtract_product(x_a_, y_s_);
   for (int i = 0; i < n_a; ++i) du_[element_dofs_[i]] = x_a_[i];
   for (int i = 0; i < n_s; ++i) du_[linear_dofs_[i]] = y_s_[i];
 }
@@ -219,13 +238,13 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
   //   r0 = K u0 - M (4/h v0 + a0) - C v0 + M iota ag1.
   work_ = c2 * v0_ + a0_;
   p_hat_ = k_u0_;
-  p_hat_.noalias() -= model_.mass * work_;
+  mass_rows_.subtract_product(work_, p_hat_);
   // Subtracting C v0 as one product or accumulating it differ in rounding: small models keep
   // their arithmetic (results unchanged since issue 8); the block-eliminated ones reuse C v0.
   if (use_blocks_)
     p_hat_ -= c_v0_;
   else
-    p_hat_.noalias() -= model_.damping * v0_;
+    damping_rows_.subtract_product(v0_, p_hat_);
   p_hat_ += m_iota_.col(0) * ag1.x;
   if (ag1.y != 0.0) p_hat_ += m_iota_.col(1) * ag1.y;
   const double tol_r = settings_.tolerance * force_ref_ +
@@ -238,7 +257,7 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
     u1_ = u0_ + delta_;
     v1_ = (2.0 / h) * delta_ - v0_;
     batches_.set_trials(u1_, v1_);
-    r_.noalias() = k_hat * delta_;
+    linear.k_hat_rows.multiply(delta_, r_);
     r_ += p_hat_;
     batches_.add_forces(r_);
     const double r_norm = r_.cwiseAbs().cwiseProduct(residual_weight_).maxCoeff();
@@ -257,7 +276,11 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
     }
     k_tangent_ = k_hat;
     batches_.add_tangents(k_tangent_, 2.0 / h);
-    if (use_lu_) {
+    if (use_lu_ && k_tangent_.rows() <= SmallLu::kMaxSize) {
+      SmallLu::factor(k_tangent_, pivots_.data());  // k_tangent_ is rebuilt every iteration
+      du_ = r_;
+      SmallLu::solve(k_tangent_, pivots_.data(), du_);
+    } else if (use_lu_) {
       lu_.compute(k_tangent_);
       du_ = lu_.solve(r_);
     } else if (llt_.compute(k_tangent_); llt_.info() == Eigen::Success) {
@@ -277,7 +300,7 @@ double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
   work_ = (h_ * h_ / 12.0) * (a1_ - a0_);
   if (stiffness_products_) {
     // The elements' products, not their assembled tangents (the same to round-off).
-    du_.noalias() = model_.stiffness * work_;
+    stiffness_rows_.multiply(work_, du_);
     batches_.add_stiffness_products(work_, du_);
     return du_.cwiseAbs().cwiseQuotient(force_scale).maxCoeff();
   }
@@ -296,9 +319,9 @@ void NewmarkStepper::accept() {
 }
 
 void NewmarkStepper::committed_products() {
-  k_u0_.noalias() = model_.stiffness * u0_;
-  m_v0_.noalias() = model_.mass * v0_;
-  c_v0_.noalias() = model_.damping * v0_;
+  stiffness_rows_.multiply(u0_, k_u0_);
+  mass_rows_.multiply(v0_, m_v0_);
+  damping_rows_.multiply(v0_, c_v0_);
 }
 
 void NewmarkStepper::reject() {

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "solver/core/compressed_rows.h"
 #include "solver/core/element_batches.h"
 #include "solver/core/model.h"
 
@@ -31,7 +32,8 @@ struct StepOutcome {
 //   M a1 + C v1 + K u1 + f_nl(u1, v1) = -M iota ag1   (iota: n x 2, ag1 = (a_x, a_y)).
 // Solved for du = u1 - u0 with K_hat = K + (2/h) C + (4/h^2) M + df_nl/du + (2/h) df_nl/dv,
 // factored by Cholesky (LDL^T fallback), or by LU when an element's tangent may be
-// non-symmetric (Element::symmetric_tangent()).
+// non-symmetric (Element::symmetric_tangent()): SmallLu up to 16 unknowns, Eigen's beyond.
+// The linear matrices multiply through CompressedRows (their zeros left out).
 // Nothing is allocated per step once each distinct h has been seen (K_hat is cached per h).
 //
 // Block elimination. When the elements declare their DOFs (Element::add_dofs) and leave at least
@@ -97,7 +99,9 @@ class NewmarkStepper {
     Eigen::MatrixXd k_as;         // K_as
     Eigen::MatrixXd k_sa;         // K_sa
     Eigen::MatrixXd schur;        // S0 = K_aa - K_as K_ss^-1 K_sa
-    bool blocks = false;          // the block terms are set (else: the full factorisation)
+    // The matrices the iterations multiply by (the same products, without the zeros).
+    CompressedRows k_hat_rows, k_ss_inv_rows, k_as_rows, k_ss_inv_sa_rows;
+    bool blocks = false;  // the block terms are set (else: the full factorisation)
   };
   const EffectiveLinear& effective_linear(double h, bool cache);
   void fill_effective_linear(double h, EffectiveLinear& e);
@@ -111,7 +115,9 @@ class NewmarkStepper {
   Eigen::VectorXd k_u0_, m_v0_, c_v0_;  // K u0, M v0 and C v0
   void committed_products();
   Eigen::VectorXd p_hat_, r_, du_, work_;
-  Eigen::MatrixXd m_iota_;           // M iota, n x 2
+  Eigen::MatrixXd m_iota_;  // M iota, n x 2
+  // M, K and C for their products.
+  CompressedRows mass_rows_, stiffness_rows_, damping_rows_;
   Eigen::VectorXd residual_weight_;  // 1 / Dof::length
   bool use_lu_ = false;
   Eigen::VectorXd delta_;  // u1 - u0 of the trial
@@ -120,7 +126,7 @@ class NewmarkStepper {
   // factorisation holds uninitialised state).
   Eigen::LLT<Eigen::MatrixXd> llt_;
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // beyond SmallLu::kMaxSize
   Eigen::LLT<Eigen::MatrixXd> mass_llt_;
   std::vector<EffectiveLinear> k_hat_cache_;
   EffectiveLinear k_hat_uncached_;
@@ -131,9 +137,11 @@ class NewmarkStepper {
   bool use_blocks_ = false;
   bool stiffness_products_ = false;  // error_norm from Element::add_stiffness_product
   std::vector<int> element_dofs_, linear_dofs_;
-  Eigen::MatrixXd k_elements_;  // the elements' tangent (nonzero only on a x a)
-  Eigen::MatrixXd schur_;       // S0 + E
-  Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;
+  Eigen::MatrixXd k_elements_;                     // the elements' tangent (nonzero only on a x a)
+  Eigen::MatrixXd schur_;                          // S0 + E
+  Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;  // beyond SmallLu::kMaxSize
+  // SmallLu's row swaps (of the full matrix or of the Schur complement).
+  std::vector<int> pivots_;
   Eigen::VectorXd r_s_, r_a_, y_s_, x_a_;
   Eigen::LLT<Eigen::MatrixXd> k_ss_llt_;
   double h_ = 0.0;
