@@ -93,6 +93,35 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   bool n2_prepare(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx, N2Step& s) const;
   void n2_finish(const N2Step& s, double q, double inv, Eigen::Vector2d& z_out,
                  Eigen::Matrix2d& dz_dx_out) const;
+  // n2_finish()'s last part: z (and S = dz/dx) back onto the rim when the map left the disc.
+  void n2_rim(const N2Step& s, Eigen::Vector2d& z, Eigen::Matrix2d& S) const;
+#if defined(__GNUC__) && !defined(__clang__) && defined(__SSE2__)
+#define ISOPOUND_PAIRED_N2 1
+  // n2_prepare() and n2_finish() of two laws at once, in two lanes (bit for bit the same).
+  static void n2_prepare_two(const CoupledBoucWenMaterial& a, const CoupledBoucWenMaterial& b,
+                             const Eigen::Vector2d& dx_a, const Eigen::Vector2d& dx_b, N2Step& s_a,
+                             N2Step& s_b, bool& fast_a, bool& fast_b);
+  static void n2_finish_two(CoupledBoucWenMaterial& a, CoupledBoucWenMaterial& b, const N2Step& s_a,
+                            const N2Step& s_b, double q_a, double q_b, double inv_a, double inv_b);
+#endif
+
+  // integrate()'s general path as a resumable state: path_start(), then path_step() until it
+  // returns true; z and S (= dz/dx) are then the result.
+  struct Path {
+    Eigen::Vector2d e, z, c, w, phi0;
+    Eigen::Matrix2d de_dx, S, M0, J0;
+    Eigen::RowVector2d dL_dx, dh_sub_dx, dx_dx;
+    double L, h_sub, remainder, x;  // x: distance in full sub-increments on this branch
+    long full, k;
+    int branch;
+    bool unloading[2], keep_in_disc, s_is_zero;
+  };
+  void path_start(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx, double length_sq,
+                  Path& p) const;
+  void branch_start(Path& p) const;
+  // One sub-increment (to a component's zero, a full one or the remainder); true when done.
+  bool path_step(Path& p) const;
+  void advance(Path& p, double h, const Eigen::RowVector2d& dh_dx) const;
 
   BoucWenParameters p_;
   double z_saturation_, z_saturation_pow_n_;
