@@ -27,6 +27,11 @@ std::vector<int> dofs_of(const Terms& terms) {
 // large displacements), and a skipped group must never hide a raise.
 constexpr double kBoundInflation = 1.0 + 1e-9;
 constexpr double kRoundOffSlack = 1e-12;
+// x^2 + y^2 <= this share of R^2 proves sqrt(x^2 + y^2) <= R whatever the rounding of the
+// squares, their sum and R^2 (each within 1.2e-16 relative); R^2 is capped at kLargest, so that
+// an overflowing x^2 + y^2 (inf) never passes.
+constexpr double kResultantMargin = 1.0 - 1e-14;
+constexpr double kLargest = std::numeric_limits<double>::max();
 
 }  // namespace
 
@@ -127,8 +132,12 @@ void ProbeRecorder::record(const double* u, const double* a_abs, double t,
     if (bx <= g.limit_x && by <= g.limit_y &&
         (bx * bx + by * by) * kBoundInflation <= g.limit_resultant * g.limit_resultant)
       continue;
-    g.limit_x = g.limit_y = g.limit_resultant = std::numeric_limits<double>::infinity();
+    // Member by member: only one outside its own band (x, y, or x^2 + y^2 beyond the resultant's
+    // peak squared, with a margin that covers the rounding of the squares) can raise a peak, and
+    // only then are its resultant (a square root) and peaks updated. The group's limits change
+    // only when a peak did.
     evaluations_ += static_cast<long>(g.members.size());
+    bool raised = false;
     for (const std::size_t p : g.members) {
       const auto sum = [&](std::size_t begin, std::size_t end) {
         double x = 0.0;
@@ -138,11 +147,23 @@ void ProbeRecorder::record(const double* u, const double* a_abs, double t,
       const double x = sum(begin_[2 * p], begin_[2 * p + 1]);
       const double y = sum(begin_[2 * p + 1], begin_[2 * p + 2]);
       ProbePeaks& pk = peaks[p];
+      const double r_sq = x * x + y * y;
+      const double peak_r = pk.resultant.value;
+      // A NaN fails every test and goes on (update_peak ignores it).
+      if (x <= pk.x.positive && x >= pk.x.negative && y <= pk.y.positive && y >= pk.y.negative &&
+          r_sq <= std::min(peak_r * peak_r, kLargest) * kResultantMargin)
+        continue;
+      raised = true;
       update_peak(pk.x, x, t);
       update_peak(pk.y, y, t);
-      const double r = std::sqrt(x * x + y * y);
+      const double r = std::sqrt(r_sq);
       update_peak(pk.resultant, r, t);
       if (length_[p] > 0) update_peak(pk.ratio, r / length_[p], t);
+    }
+    if (!raised) continue;
+    g.limit_x = g.limit_y = g.limit_resultant = std::numeric_limits<double>::infinity();
+    for (const std::size_t p : g.members) {
+      const ProbePeaks& pk = peaks[p];
       g.limit_x = std::min({g.limit_x, pk.x.positive, -pk.x.negative});
       g.limit_y = std::min({g.limit_y, pk.y.positive, -pk.y.negative});
       g.limit_resultant = std::min(g.limit_resultant, pk.resultant.value);

@@ -22,14 +22,16 @@ struct ProbePeaks {
 // storey: drift - y dtheta) with a basis w_j taken from the members, c_k = sum_j beta_kj w_j, so
 //   |x_k| <= sum_j max_k |beta_kj| |w_j . q|.
 // A group whose bounds (inflated well beyond round-off) cannot raise any member's peak is skipped
-// whole: after the strong motion almost no probe is evaluated.
+// whole: after the strong motion almost no probe is evaluated. In a group that is not, a member
+// inside its own bands (x, y, and x^2 + y^2 against its resultant's peak squared) is left there,
+// without its square root.
 class ProbeRecorder {
  public:
   explicit ProbeRecorder(const std::vector<PlanProbe>& probes);
 
   // u: displacements, a_abs: absolute accelerations (per DOF); t: the time, s.
   void record(const double* u, const double* a_abs, double t, std::vector<ProbePeaks>& peaks);
-  // How many probe evaluations record() has made (the rest were skipped).
+  // How many probe evaluations record() has made (the rest were skipped with their group).
   long evaluations() const { return evaluations_; }
 
  private:
