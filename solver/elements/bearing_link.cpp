@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "solver/core/packed_math.h"
+
 namespace isopound {
 
 namespace {
@@ -269,11 +271,42 @@ void BearingLink::write_outputs(const Eigen::Vector2d& F, const Eigen::Vector2d&
 }
 
 void BearingLink::outputs_batch(Element* const* elements, int count, double* out) const {
-  for (int i = 0; i < count; ++i) {
-    const auto& link = static_cast<const BearingLink&>(*elements[i]);
-    const CoupledBoucWenMaterial& law = *link.coupled_;
-    link.write_outputs(law.force(), law.deformation(), law.internal(), out);
-    out += link.output_count();
+  // write_outputs() of each, with the resultants' square roots of up to kChunk bearings in
+  // plan taken together (planar bearings have none).
+  constexpr int kChunk = 16;
+  double resultant[3 * kChunk];
+  for (int begin = 0; begin < count; begin += kChunk) {
+    const int n = std::min(kChunk, count - begin);
+    double* const chunk_out = out;
+    int r = 0;
+    for (int i = 0; i < n; ++i) {
+      const auto& link = static_cast<const BearingLink&>(*elements[begin + i]);
+      const CoupledBoucWenMaterial& law = *link.coupled_;
+      const Eigen::Vector2d F = law.force(), d = law.deformation(), z = law.internal();
+      if (link.planar_) {
+        link.write_outputs(F, d, z, out);
+      } else {
+        resultant[r++] = F.squaredNorm();
+        resultant[r++] = d.squaredNorm();
+        resultant[r++] = z.squaredNorm();
+        out[3] = F[0];
+        out[4] = F[1];
+        out[5] = d[0];
+        out[6] = d[1];
+        out[7] = z[0];
+        out[8] = z[1];
+      }
+      out += link.output_count();
+    }
+    sqrt_each(resultant, resultant, r);
+    double* o = chunk_out;
+    r = 0;
+    for (int i = 0; i < n; ++i) {
+      const auto& link = static_cast<const BearingLink&>(*elements[begin + i]);
+      if (!link.planar_)
+        for (int k = 0; k < 3; ++k) o[k] = resultant[r++];
+      o += link.output_count();
+    }
   }
 }
 

@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "solver/core/packed_math.h"
+
 namespace isopound {
 
 namespace {
@@ -357,8 +359,9 @@ void CoupledBoucWenMaterial::set_trials(CoupledBoucWenMaterial* const* law, cons
     active = still;
   }
   double q[kTrialBatch], inv[kTrialBatch];
-  for (k = 0; k < n_closed; ++k) q[k] = std::sqrt(steps[closed[k]].discriminant);
-  for (k = 0; k < n_closed; ++k) inv[k] = 1.0 / (q[k] * (1.0 + q[k]));
+  for (k = 0; k < n_closed; ++k) q[k] = steps[closed[k]].discriminant;
+  sqrt_each(q, q, n_closed);
+  inverse_q_one_plus_q(q, inv, n_closed);
   k = 0;
 #if defined(ISOPOUND_PAIRED_N2)
   for (; k + 2 <= n_closed; k += 2) {
