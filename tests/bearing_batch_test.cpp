@@ -107,6 +107,19 @@ TEST(BearingBatch, BatchesGiveTheSingleCallsBitForBit) {
           0)
           << "bearing " << i << ", step " << step;
     }
+    // The batch's outputs (the resultants' square roots taken together), one after the other.
+    std::vector<double> outputs_single, outputs_batch;
+    for (auto& link : single) {
+      double a[9];
+      link->outputs(a);
+      outputs_single.insert(outputs_single.end(), a, a + link->output_count());
+    }
+    outputs_batch.resize(outputs_single.size());
+    run[0]->outputs_batch(run.data(), count, outputs_batch.data());
+    ASSERT_EQ(std::memcmp(outputs_single.data(), outputs_batch.data(),
+                          sizeof(double) * outputs_single.size()),
+              0)
+        << "outputs_batch, step " << step;
     for (auto& link : single) link->commit();
     for (auto& link : batched) link->commit();
     u += du;
