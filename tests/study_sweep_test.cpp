@@ -196,6 +196,33 @@ TEST(StudySweep, KilledStudyResumesWithoutRecomputingFinishedRuns) {
   fs::remove_all(dir);  // kept when an assertion failed above
 }
 
+// A user watching a study start (a read-only query while the sweep creates its database) must not
+// fail it: the sweep waits for the reader's lock. Before the fix about half of such starts failed
+// with "database is locked"; 20 starts, each watched from the first instant, would all pass by
+// chance with probability ~1e-6.
+TEST(StudySweep, AReaderWatchingTheStartDoesNotFailIt) {
+  const fs::path dir = test::study_scratch("watched");
+  const fs::path study = dir / "study.yaml";
+  test::write_file(study, "name: watched\nmodel: " + test::thesis_model() + R"(
+set:
+  ground_motion.pulse: {amplitude: 0.8 m/s, period: 2 s, duration: 2 s, dt: 0.01 s}
+  building.isolator: {model: bilinear, Tb: 2 s, QW: 5 %, uy: 1 cm}
+axes:
+  - {path: building.isolator.Tb, values: [2 s, 2.5 s]}
+outputs: [base.displacement]
+)");
+  for (int start = 0; start < 20; ++start) {
+    const fs::path db = dir / ("watched" + std::to_string(start) + ".db");
+    const pid_t pid = spawn_isopound({"sweep", study.string(), "-j", "1", "--db", db.string()});
+    ASSERT_GT(pid, 0);
+    int status = 0;
+    while (waitpid(pid, &status, WNOHANG) != pid) query_int(db, "SELECT COUNT(*) FROM runs");
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "start " << start;
+    EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM runs WHERE status = 'done'"), 2);
+  }
+  fs::remove_all(dir);  // kept when an assertion failed above
+}
+
 TEST(StudySweep, RunsWithIdenticalModelsAreComputedOnce) {
   const fs::path dir = test::study_scratch("shared");
   test::write_file(dir / "study.yaml", "model: " + test::thesis_model() + R"(

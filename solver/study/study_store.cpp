@@ -179,7 +179,9 @@ StudyStore StudyStore::create(const std::string& path, const StoreLayout& layout
         path + ": cannot create the database: " + (raw ? sqlite3_errmsg(raw) : "out of memory"));
   StudyStore store(std::move(db), path);
   store.layout_ = layout;
-  store.execute("PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL; PRAGMA busy_timeout=10000;");
+  // The busy timeout first: a reader that opens the new file (a user watching the study start)
+  // holds a lock for a moment, and switching to WAL without waiting failed the sweep.
+  store.execute("PRAGMA busy_timeout=10000; PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;");
   std::string runs = "CREATE TABLE runs(case_id INTEGER PRIMARY KEY";
   for (const std::string& a : layout.axes) runs += ", " + quoted(a);
   runs +=
