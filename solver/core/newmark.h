@@ -33,7 +33,8 @@ struct StepOutcome {
 // Solved for du = u1 - u0 with K_hat = K + (2/h) C + (4/h^2) M + df_nl/du + (2/h) df_nl/dv,
 // factored by Cholesky (LDL^T fallback), or by LU when an element's tangent may be
 // non-symmetric (Element::symmetric_tangent()): SmallLu up to 16 unknowns, Eigen's beyond.
-// The linear matrices multiply through CompressedRows (their zeros left out).
+// The linear matrices multiply through CompressedRows (their zeros left out); M, C and K are
+// read once, at construction.
 // Nothing is allocated per step once each distinct h has been seen (K_hat is cached per h).
 //
 // Block elimination. When the elements declare their DOFs (Element::add_dofs) and leave at least

@@ -263,9 +263,9 @@ void CoupledBoucWenMaterial::n2_finish_two(CoupledBoucWenMaterial& a, CoupledBou
   const Lanes r01 = -0.5 * (z0x * c1 * z0y + z1x * c1 * z1y);
   const Lanes r10 = -0.5 * (z0y * c0 * z0x + z1y * c0 * z1x);
   const Lanes r11 = A - 0.5 * (z0y * c1 * z0y + z1y * c1 * z1y);
-  const Lanes a_ = 1.0 + 0.5 * (W0 * z1x + W1 * z1y);
-  const Lanes m00 = a_ + 0.5 * z1x * W0, m01 = 0.5 * z1x * W1;
-  const Lanes m10 = 0.5 * z1y * W0, m11 = a_ + 0.5 * z1y * W1;
+  const Lanes m_diagonal = 1.0 + 0.5 * (W0 * z1x + W1 * z1y);  // n2_finish()'s a
+  const Lanes m00 = m_diagonal + 0.5 * z1x * W0, m01 = 0.5 * z1x * W1;
+  const Lanes m10 = 0.5 * z1y * W0, m11 = m_diagonal + 0.5 * z1y * W1;
   const Lanes S00 = (m11 * r00 - m01 * r10) * inv_det;
   const Lanes S01 = (m11 * r01 - m01 * r11) * inv_det;
   const Lanes S10 = (m00 * r10 - m10 * r00) * inv_det;
