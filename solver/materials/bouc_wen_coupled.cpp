@@ -18,6 +18,22 @@ constexpr int kMaxNewton = 50;
 using Eigen::Matrix2d;
 using Eigen::RowVector2d;
 using Eigen::Vector2d;
+
+// A closed-form test's masks combined, for one law (bool) or two lanes (integer masks).
+inline bool both(bool a, bool b) {
+  return a && b;
+}
+inline bool and_not(bool a, bool b) {
+  return a && !b;
+}
+template <class Mask>
+Mask both(Mask a, Mask b) {
+  return a & b;
+}
+template <class Mask>
+Mask and_not(Mask a, Mask b) {
+  return a & ~b;
+}
 }  // namespace
 
 CoupledBoucWenMaterial::CoupledBoucWenMaterial(const BoucWenParameters& p) : p_(p) {
@@ -135,58 +151,70 @@ Vector2d CoupledBoucWenMaterial::trapezoid_step(const Vector2d& z, const Vector2
 // det m = a (2a - 1) = q (1 + q)/2 exactly, so lambda and 1/det share one division. The tests
 // l < h_sub (h |dPhi/dz| <= 1/4 with |dPhi/dz| <= 2 |w| z_b) and "no component reaches 0" are
 // taken on squares and products. Returns false (nothing written) when the general path is needed.
-bool CoupledBoucWenMaterial::n2_prepare(const Vector2d& z0, const Vector2d& dx, N2Step& s) const {
-  const double z0x = z0[0], z0y = z0[1], dx0 = dx[0], dx1 = dx[1];
-  const bool unloading0 = z0x * dx0 < 0.0, unloading1 = z0y * dx1 < 0.0;
-  const double c0 = p_.beta + (unloading0 ? -p_.gamma : p_.gamma);
-  const double c1 = p_.beta + (unloading1 ? -p_.gamma : p_.gamma);
-  const double W0 = c0 * dx0, W1 = c1 * dx1;
-  const double z_sq = z0x * z0x + z0y * z0y;
-  // l < h_sub  <=>  l |w| 2 z_b < 1/4  <=>  4 |W|^2 z_b^2 < (1/4)^2 (z_b = |z0| beyond z_sat).
-  const double z_bound_sq = z_sq > z_saturation_sq_ ? z_sq : z_bound_sq_;
-  if (!(4.0 * (W0 * W0 + W1 * W1) * z_bound_sq <
-        kMaxSubincrementStiffness * kMaxSubincrementStiffness))
-    return false;  // full sub-increments: the general path
-  const double A = p_.A;
+template <class T>
+decltype(T() < T()) CoupledBoucWenMaterial::n2_setup(const N2Parameters<T>& p, T z0x, T z0y, T dx0,
+                                                     T dx1, N2Terms<T>& s) {
+  const T zero = T();
+  const auto unloading0 = z0x * dx0 < zero, unloading1 = z0y * dx1 < zero;
+  const T c0 = p.beta + (unloading0 ? -p.gamma : p.gamma);
+  const T c1 = p.beta + (unloading1 ? -p.gamma : p.gamma);
+  const T W0 = c0 * dx0, W1 = c1 * dx1;
+  const T z_sq = z0x * z0x + z0y * z0y;
+  // l < h_sub  <=>  l |w| 2 z_b < 1/4  <=>  4 |W|^2 z_b^2 < (1/4)^2 (z_b = |z0| beyond z_sat);
+  // else full sub-increments: the general path.
+  const T z_bound_sq = z_sq > p.z_saturation_sq ? z_sq : p.z_bound_sq;
+  auto fast = 4.0 * (W0 * W0 + W1 * W1) * z_bound_sq <
+              zero + kMaxSubincrementStiffness * kMaxSubincrementStiffness;
+  const T A = p.A;
   // l Phi0 + A dx, and a component reaching 0 within the step (the general path splits there):
   // h_i = -2 z0_i / (Phi0_i + A e_i) < l  <=>  -2 z0_i / D_i < 1,  D = l Phi0 + A dx.
-  const double s0 = W0 * z0x + W1 * z0y;
-  const double D0 = 2.0 * A * dx0 - z0x * s0, D1 = 2.0 * A * dx1 - z0y * s0;
-  const auto reaches_zero = [](double z, double D) {
-    const double num = -2.0 * z;
-    return D > 0.0 ? num < D : D < 0.0 ? num > D : num < 0.0;
+  const T s0 = W0 * z0x + W1 * z0y;
+  const T D0 = 2.0 * A * dx0 - z0x * s0, D1 = 2.0 * A * dx1 - z0y * s0;
+  const auto reaches_zero = [&](const T& z, const T& D) {
+    const T num = -2.0 * z;
+    return D > zero ? num < D : (D < zero ? num > D : num < zero);
   };
-  if (unloading0 && reaches_zero(z0x, D0)) return false;
-  if (unloading1 && reaches_zero(z0y, D1)) return false;
-  const double bx = z0x + 0.5 * D0, by = z0y + 0.5 * D1;
-  const double discriminant = 1.0 + 2.0 * (W0 * bx + W1 * by);
-  if (!(discriminant > 0.0)) return false;
+  fast = and_not(fast, both(unloading0, reaches_zero(z0x, D0)));
+  fast = and_not(fast, both(unloading1, reaches_zero(z0y, D1)));
+  const T bx = z0x + 0.5 * D0, by = z0y + 0.5 * D1;
+  const T discriminant = 1.0 + 2.0 * (W0 * bx + W1 * by);
+  fast = both(fast, discriminant > zero);
   s = {z0x, z0y, c0, c1, W0, W1, bx, by, z_sq, discriminant};
-  return true;
+  return fast;
+}
+
+template <class T>
+void CoupledBoucWenMaterial::n2_map(const T& A, const N2Terms<T>& s, const T& q, const T& inv,
+                                    T& z1x, T& z1y, T S[4]) {
+  const T z0x = s.z0x, z0y = s.z0y, c0 = s.c0, c1 = s.c1, W0 = s.W0, W1 = s.W1;
+  const T lambda = 2.0 * q * inv;  // 2 / (1 + q)
+  const T inv_det = 2.0 * inv;     // 1 / det m
+  z1x = lambda * s.bx;
+  z1y = lambda * s.by;
+  // (M0 + M1)/2 with M(z) = A I - z (c o z)^T.
+  const T r00 = A - 0.5 * (z0x * c0 * z0x + z1x * c0 * z1x);
+  const T r01 = -0.5 * (z0x * c1 * z0y + z1x * c1 * z1y);
+  const T r10 = -0.5 * (z0y * c0 * z0x + z1y * c0 * z1x);
+  const T r11 = A - 0.5 * (z0y * c1 * z0y + z1y * c1 * z1y);
+  const T a = 1.0 + 0.5 * (W0 * z1x + W1 * z1y);
+  const T m00 = a + 0.5 * z1x * W0, m01 = 0.5 * z1x * W1;
+  const T m10 = 0.5 * z1y * W0, m11 = a + 0.5 * z1y * W1;
+  S[0] = (m11 * r00 - m01 * r10) * inv_det;
+  S[1] = (m11 * r01 - m01 * r11) * inv_det;
+  S[2] = (m00 * r10 - m10 * r00) * inv_det;
+  S[3] = (m00 * r11 - m10 * r01) * inv_det;
+}
+
+bool CoupledBoucWenMaterial::n2_prepare(const Vector2d& z0, const Vector2d& dx, N2Step& s) const {
+  return n2_setup<double>(n2_parameters(), z0[0], z0[1], dx[0], dx[1], s);
 }
 
 void CoupledBoucWenMaterial::n2_finish(const N2Step& s, double q, double inv, Vector2d& z_out,
                                        Matrix2d& dz_dx_out) const {
-  const double A = p_.A;
-  const double z0x = s.z0x, z0y = s.z0y, c0 = s.c0, c1 = s.c1, W0 = s.W0, W1 = s.W1;
-  const double lambda = 2.0 * q * inv;  // 2 / (1 + q)
-  const double inv_det = 2.0 * inv;     // 1 / det m
-  const double z1x = lambda * s.bx, z1y = lambda * s.by;
-  // (M0 + M1)/2 with M(z) = A I - z (c o z)^T.
-  const double r00 = A - 0.5 * (z0x * c0 * z0x + z1x * c0 * z1x);
-  const double r01 = -0.5 * (z0x * c1 * z0y + z1x * c1 * z1y);
-  const double r10 = -0.5 * (z0y * c0 * z0x + z1y * c0 * z1x);
-  const double r11 = A - 0.5 * (z0y * c1 * z0y + z1y * c1 * z1y);
-  const double a = 1.0 + 0.5 * (W0 * z1x + W1 * z1y);
-  const double m00 = a + 0.5 * z1x * W0, m01 = 0.5 * z1x * W1;
-  const double m10 = 0.5 * z1y * W0, m11 = a + 0.5 * z1y * W1;
-  Matrix2d S;
-  S(0, 0) = (m11 * r00 - m01 * r10) * inv_det;
-  S(0, 1) = (m11 * r01 - m01 * r11) * inv_det;
-  S(1, 0) = (m00 * r10 - m10 * r00) * inv_det;
-  S(1, 1) = (m00 * r11 - m10 * r01) * inv_det;
+  double z1x, z1y, S[4];
+  n2_map<double>(p_.A, s, q, inv, z1x, z1y, S);
   z_out = Vector2d(z1x, z1y);
-  dz_dx_out = S;
+  dz_dx_out << S[0], S[1], S[2], S[3];
   n2_rim(s, z_out, dz_dx_out);
 }
 
@@ -210,70 +238,46 @@ namespace {
 typedef double Lanes __attribute__((vector_size(16)));
 }  // namespace
 
-// n2_prepare() of laws a and b at once, lane by lane the same operations; both steps are written.
+// n2_prepare() of laws a and b at once (both steps are written).
 void CoupledBoucWenMaterial::n2_prepare_two(const CoupledBoucWenMaterial& a,
                                             const CoupledBoucWenMaterial& b, const Vector2d& dx_a,
                                             const Vector2d& dx_b, N2Step& s_a, N2Step& s_b,
                                             bool& fast_a, bool& fast_b) {
-  const Lanes zero = {0.0, 0.0};
-  const Lanes z0x = {a.z_commit_[0], b.z_commit_[0]}, z0y = {a.z_commit_[1], b.z_commit_[1]};
-  const Lanes dx0 = {dx_a[0], dx_b[0]}, dx1 = {dx_a[1], dx_b[1]};
-  const Lanes beta = {a.p_.beta, b.p_.beta}, gamma = {a.p_.gamma, b.p_.gamma};
-  const Lanes A = {a.p_.A, b.p_.A};
-  const auto unloading0 = z0x * dx0 < zero, unloading1 = z0y * dx1 < zero;
-  const Lanes c0 = beta + (unloading0 ? -gamma : gamma);
-  const Lanes c1 = beta + (unloading1 ? -gamma : gamma);
-  const Lanes W0 = c0 * dx0, W1 = c1 * dx1;
-  const Lanes z_sq = z0x * z0x + z0y * z0y;
-  const Lanes z_saturation_sq = {a.z_saturation_sq_, b.z_saturation_sq_};
-  const Lanes z_bound_sq_below = {a.z_bound_sq_, b.z_bound_sq_};
-  const Lanes z_bound_sq = z_sq > z_saturation_sq ? z_sq : z_bound_sq_below;
-  const Lanes limit = zero + kMaxSubincrementStiffness * kMaxSubincrementStiffness;
-  auto fast = 4.0 * (W0 * W0 + W1 * W1) * z_bound_sq < limit;
-  const Lanes s0 = W0 * z0x + W1 * z0y;
-  const Lanes D0 = 2.0 * A * dx0 - z0x * s0, D1 = 2.0 * A * dx1 - z0y * s0;
-  const auto reaches_zero = [&](const Lanes& z, const Lanes& D) {
-    const Lanes num = -2.0 * z;
-    return D > zero ? num < D : (D < zero ? num > D : num < zero);
-  };
-  fast &= ~(unloading0 & reaches_zero(z0x, D0));
-  fast &= ~(unloading1 & reaches_zero(z0y, D1));
-  const Lanes bx = z0x + 0.5 * D0, by = z0y + 0.5 * D1;
-  const Lanes discriminant = 1.0 + 2.0 * (W0 * bx + W1 * by);
-  fast &= discriminant > zero;
+  const N2Parameters<double> p_a = a.n2_parameters(), p_b = b.n2_parameters();
+  const N2Parameters<Lanes> p = {{p_a.beta, p_b.beta},
+                                 {p_a.gamma, p_b.gamma},
+                                 {p_a.A, p_b.A},
+                                 {p_a.z_saturation_sq, p_b.z_saturation_sq},
+                                 {p_a.z_bound_sq, p_b.z_bound_sq}};
+  N2Terms<Lanes> s;
+  const auto fast = n2_setup<Lanes>(p, Lanes{a.z_commit_[0], b.z_commit_[0]},
+                                    Lanes{a.z_commit_[1], b.z_commit_[1]}, Lanes{dx_a[0], dx_b[0]},
+                                    Lanes{dx_a[1], dx_b[1]}, s);
   fast_a = fast[0] != 0;
   fast_b = fast[1] != 0;
-  s_a = {z0x[0], z0y[0], c0[0], c1[0], W0[0], W1[0], bx[0], by[0], z_sq[0], discriminant[0]};
-  s_b = {z0x[1], z0y[1], c0[1], c1[1], W0[1], W1[1], bx[1], by[1], z_sq[1], discriminant[1]};
+  const auto lane = [&](int k) {
+    return N2Step{s.z0x[k], s.z0y[k], s.c0[k], s.c1[k],   s.W0[k],
+                  s.W1[k],  s.bx[k],  s.by[k], s.z_sq[k], s.discriminant[k]};
+  };
+  s_a = lane(0);
+  s_b = lane(1);
 }
 
-// n2_finish() of laws a and b at once, lane by lane the same operations.
+// n2_finish() of laws a and b at once.
 void CoupledBoucWenMaterial::n2_finish_two(CoupledBoucWenMaterial& a, CoupledBoucWenMaterial& b,
                                            const N2Step& s_a, const N2Step& s_b, double q_a,
                                            double q_b, double inv_a, double inv_b) {
-  const Lanes A = {a.p_.A, b.p_.A};
-  const Lanes z0x = {s_a.z0x, s_b.z0x}, z0y = {s_a.z0y, s_b.z0y};
-  const Lanes c0 = {s_a.c0, s_b.c0}, c1 = {s_a.c1, s_b.c1};
-  const Lanes W0 = {s_a.W0, s_b.W0}, W1 = {s_a.W1, s_b.W1};
-  const Lanes q = {q_a, q_b}, inv = {inv_a, inv_b};
-  const Lanes lambda = 2.0 * q * inv;
-  const Lanes inv_det = 2.0 * inv;
-  const Lanes z1x = lambda * Lanes{s_a.bx, s_b.bx}, z1y = lambda * Lanes{s_a.by, s_b.by};
-  const Lanes r00 = A - 0.5 * (z0x * c0 * z0x + z1x * c0 * z1x);
-  const Lanes r01 = -0.5 * (z0x * c1 * z0y + z1x * c1 * z1y);
-  const Lanes r10 = -0.5 * (z0y * c0 * z0x + z1y * c0 * z1x);
-  const Lanes r11 = A - 0.5 * (z0y * c1 * z0y + z1y * c1 * z1y);
-  const Lanes m_diagonal = 1.0 + 0.5 * (W0 * z1x + W1 * z1y);  // n2_finish()'s a
-  const Lanes m00 = m_diagonal + 0.5 * z1x * W0, m01 = 0.5 * z1x * W1;
-  const Lanes m10 = 0.5 * z1y * W0, m11 = m_diagonal + 0.5 * z1y * W1;
-  const Lanes S00 = (m11 * r00 - m01 * r10) * inv_det;
-  const Lanes S01 = (m11 * r01 - m01 * r11) * inv_det;
-  const Lanes S10 = (m00 * r10 - m10 * r00) * inv_det;
-  const Lanes S11 = (m00 * r11 - m10 * r01) * inv_det;
+  const N2Terms<Lanes> s = {{s_a.z0x, s_b.z0x},   {s_a.z0y, s_b.z0y},
+                            {s_a.c0, s_b.c0},     {s_a.c1, s_b.c1},
+                            {s_a.W0, s_b.W0},     {s_a.W1, s_b.W1},
+                            {s_a.bx, s_b.bx},     {s_a.by, s_b.by},
+                            {s_a.z_sq, s_b.z_sq}, {s_a.discriminant, s_b.discriminant}};
+  Lanes z1x, z1y, S[4];
+  n2_map<Lanes>(Lanes{a.p_.A, b.p_.A}, s, Lanes{q_a, q_b}, Lanes{inv_a, inv_b}, z1x, z1y, S);
   a.z_ = Vector2d(z1x[0], z1y[0]);
   b.z_ = Vector2d(z1x[1], z1y[1]);
-  a.dz_dx_ << S00[0], S01[0], S10[0], S11[0];
-  b.dz_dx_ << S00[1], S01[1], S10[1], S11[1];
+  a.dz_dx_ << S[0][0], S[1][0], S[2][0], S[3][0];
+  b.dz_dx_ << S[0][1], S[1][1], S[2][1], S[3][1];
   a.n2_rim(s_a, a.z_, a.dz_dx_);
   b.n2_rim(s_b, b.z_, b.dz_dx_);
 }

@@ -86,10 +86,30 @@ class CoupledBoucWenMaterial final : public BiaxialMaterial {
   bool integrate_single_step_n2(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx,
                                 Eigen::Vector2d& z_out, Eigen::Matrix2d& dz_dx_out) const;
   // The closed form in two parts around q = sqrt(discriminant) and inv = 1 / (q (1 + q)):
-  // n2_prepare() is false when the general path is needed (nothing written).
-  struct N2Step {
-    double z0x, z0y, c0, c1, W0, W1, bx, by, z_sq, discriminant;
+  // n2_prepare() is false when the general path is needed (s is then meaningless).
+  // Their arithmetic is written once, on numbers T: double for one law, or (n2_prepare_two,
+  // n2_finish_two) two lanes of doubles for two laws, lane by lane the same operations.
+  template <class T>
+  struct N2Terms {
+    T z0x, z0y, c0, c1, W0, W1, bx, by, z_sq, discriminant;
   };
+  using N2Step = N2Terms<double>;
+  template <class T>
+  struct N2Parameters {
+    T beta, gamma, A, z_saturation_sq, z_bound_sq;
+  };
+  N2Parameters<double> n2_parameters() const {
+    return {p_.beta, p_.gamma, p_.A, z_saturation_sq_, z_bound_sq_};
+  }
+  // s from z0 and the increment dx (x = d/u_y); whether the closed form applies (T's comparison:
+  // a bool or a lane mask). s is written either way.
+  template <class T>
+  static decltype(T() < T()) n2_setup(const N2Parameters<T>& p, T z0x, T z0y, T dx0, T dx1,
+                                      N2Terms<T>& s);
+  // z1 and S = dz/dx (S(0, 0), S(0, 1), S(1, 0), S(1, 1)) from s, before any rim projection.
+  template <class T>
+  static void n2_map(const T& A, const N2Terms<T>& s, const T& q, const T& inv, T& z1x, T& z1y,
+                     T S[4]);
   bool n2_prepare(const Eigen::Vector2d& z0, const Eigen::Vector2d& dx, N2Step& s) const;
   void n2_finish(const N2Step& s, double q, double inv, Eigen::Vector2d& z_out,
                  Eigen::Matrix2d& dz_dx_out) const;
