@@ -213,17 +213,22 @@ void NewmarkStepper::solve_blocks(const EffectiveLinear& e) {
   for (int i = 0; i < n_a; ++i) r_a_[i] = r_[element_dofs_[i]];
   e.k_ss_inv_rows.multiply(r_s_, y_s_);  // K_ss^-1 r_s
   e.k_as_rows.subtract_product(y_s_, r_a_);
-  if (n_a <= SmallLu::kMaxSize) {
-    SmallLu::factor(schur_, pivots_.data());  // schur_ is rebuilt every iteration
-    x_a_ = r_a_;
-    SmallLu::solve(schur_, pivots_.data(), x_a_);
-  } else {
-    schur_lu_.compute(schur_);
-    x_a_ = schur_lu_.solve(r_a_);
-  }
+  solve_lu(schur_, schur_lu_, r_a_, x_a_);
   e.k_ss_inv_sa_rows.subtract_product(x_a_, y_s_);
   for (int i = 0; i < n_a; ++i) du_[element_dofs_[i]] = x_a_[i];
   for (int i = 0; i < n_s; ++i) du_[linear_dofs_[i]] = y_s_[i];
+}
+
+void NewmarkStepper::solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::MatrixXd>& eigen_lu,
+                              const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  if (a.rows() > SmallLu::kMaxSize) {
+    eigen_lu.compute(a);
+    x = eigen_lu.solve(b);
+    return;
+  }
+  SmallLu::factor(a, pivots_.data());
+  x = b;
+  SmallLu::solve(a, pivots_.data(), x);
 }
 
 StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cache, bool freeze) {
@@ -276,13 +281,8 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
     }
     k_tangent_ = k_hat;
     batches_.add_tangents(k_tangent_, 2.0 / h);
-    if (use_lu_ && k_tangent_.rows() <= SmallLu::kMaxSize) {
-      SmallLu::factor(k_tangent_, pivots_.data());  // k_tangent_ is rebuilt every iteration
-      du_ = r_;
-      SmallLu::solve(k_tangent_, pivots_.data(), du_);
-    } else if (use_lu_) {
-      lu_.compute(k_tangent_);
-      du_ = lu_.solve(r_);
+    if (use_lu_) {
+      solve_lu(k_tangent_, lu_, r_, du_);
     } else if (llt_.compute(k_tangent_); llt_.info() == Eigen::Success) {
       du_ = llt_.solve(r_);
     } else {

@@ -108,6 +108,10 @@ class NewmarkStepper {
   void fill_effective_linear(double h, EffectiveLinear& e);
   // du_ = (K_hat + element tangent)^-1 r_ by block elimination (the tangent in k_elements_).
   void solve_blocks(const EffectiveLinear& e);
+  // x = a^-1 b by LU with partial pivoting: SmallLu up to its size (a is overwritten by the
+  // factors; the callers rebuild it every iteration), eigen_lu beyond.
+  void solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::MatrixXd>& eigen_lu,
+                const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
   Model& model_;
   NewtonSettings settings_;

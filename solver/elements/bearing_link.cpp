@@ -253,15 +253,21 @@ void BearingLink::outputs(double* out) const {
 
 void BearingLink::write_outputs(const Eigen::Vector2d& F, const Eigen::Vector2d& d,
                                 const Eigen::Vector2d& z, double* out) const {
+  write_outputs_squared(F, d, z, out);
+  if (!planar_) sqrt_each(out, out, 3);
+}
+
+void BearingLink::write_outputs_squared(const Eigen::Vector2d& F, const Eigen::Vector2d& d,
+                                        const Eigen::Vector2d& z, double* out) const {
   if (planar_) {
     out[0] = F[0];
     out[1] = d[0];
     out[2] = z[0];
     return;
   }
-  out[0] = F.norm();
-  out[1] = d.norm();
-  out[2] = z.norm();
+  out[0] = F.squaredNorm();
+  out[1] = d.squaredNorm();
+  out[2] = z.squaredNorm();
   out[3] = F[0];
   out[4] = F[1];
   out[5] = d[0];
@@ -282,20 +288,9 @@ void BearingLink::outputs_batch(Element* const* elements, int count, double* out
     for (int i = 0; i < n; ++i) {
       const auto& link = static_cast<const BearingLink&>(*elements[begin + i]);
       const CoupledBoucWenMaterial& law = *link.coupled_;
-      const Eigen::Vector2d F = law.force(), d = law.deformation(), z = law.internal();
-      if (link.planar_) {
-        link.write_outputs(F, d, z, out);
-      } else {
-        resultant[r++] = F.squaredNorm();
-        resultant[r++] = d.squaredNorm();
-        resultant[r++] = z.squaredNorm();
-        out[3] = F[0];
-        out[4] = F[1];
-        out[5] = d[0];
-        out[6] = d[1];
-        out[7] = z[0];
-        out[8] = z[1];
-      }
+      link.write_outputs_squared(law.force(), law.deformation(), law.internal(), out);
+      if (!link.planar_)
+        for (int k = 0; k < 3; ++k) resultant[r++] = out[k];
       out += link.output_count();
     }
     sqrt_each(resultant, resultant, r);

@@ -100,6 +100,9 @@ class BearingLink final : public Element {
   // outputs() from the law's force, deformation and hysteretic variables.
   void write_outputs(const Eigen::Vector2d& F, const Eigen::Vector2d& d, const Eigen::Vector2d& z,
                      double* out) const;
+  // The same with the resultants squared (|F|^2, |d|^2, |z|^2): the caller takes their roots.
+  void write_outputs_squared(const Eigen::Vector2d& F, const Eigen::Vector2d& d,
+                             const Eigen::Vector2d& z, double* out) const;
 
   std::string label_;
   DiaphragmDofs dofs_;
