@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <thread>
 
 #include "geometry/overlap.h"
@@ -265,7 +266,10 @@ int main(int argc, char** argv) {
       return kOk;
     }
   } catch (const InputError& e) {
-    std::cerr << "isopound: error: " << e.what() << '\n';
+    // One line per error (the site checks report all of theirs at once: InputErrors).
+    std::istringstream lines(e.what());
+    for (std::string line; std::getline(lines, line);)
+      std::cerr << "isopound: error: " << line << '\n';
     return kBadInput;
   } catch (const RecordError& e) {
     // Name what pointed at the file: the model key or the command-line option.

@@ -4,6 +4,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -32,6 +33,60 @@ int add_polygon(const std::vector<Vec2>& plan, double z, double size) {
     lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % points.size()]));
   const int loop = gmsh::model::geo::addCurveLoop(lines);
   return gmsh::model::geo::addPlaneSurface({loop});
+}
+
+// A slab whose mesh has a node at every given point (the bearings): a point on a vertex is that
+// vertex, one on an edge splits the edge there, one inside is embedded in the surface (after
+// synchronize: embed()). Without this the points are free nodes on top of the slab's own (gmsh
+// -check: duplicate nodes).
+struct SlabWithPoints {
+  int surface = 0;
+  std::vector<int> point_tags;  // per given point
+  std::vector<int> inside;      // to embed
+  void embed() const {
+    if (!inside.empty()) gmsh::model::mesh::embed(0, inside, 2, surface);
+  }
+};
+
+SlabWithPoints add_slab(const std::vector<Vec2>& plan, double z, double size,
+                        const std::vector<Vec2>& marks, double mark_size) {
+  const double tol =
+      1e-9 * std::sqrt(area_properties(ConvexPolygon(std::span<const Vec2>(plan))).area);
+  SlabWithPoints slab;
+  slab.point_tags.assign(marks.size(), 0);
+  std::vector<int> points, lines;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const Vec2 a = plan[i], b = plan[(i + 1) % plan.size()], d = b - a;
+    const double length = std::sqrt(dot(d, d));
+    // The vertex, then the marks on the open edge a -> b in order along it.
+    std::vector<std::pair<double, std::size_t>> on_edge;
+    int vertex = 0;
+    for (std::size_t k = 0; k < marks.size(); ++k) {
+      const Vec2 q = marks[k] - a;
+      const double t = dot(q, d) / length;  // along the edge, m
+      if (std::sqrt(dot(q, q)) <= tol) {
+        if (!vertex) vertex = gmsh::model::geo::addPoint(a.x, a.y, z, mark_size);
+        slab.point_tags[k] = vertex;
+      } else if (std::abs(cross(d, q)) / length <= tol && t > tol && t < length - tol) {
+        on_edge.push_back({t, k});
+      }
+    }
+    points.push_back(vertex ? vertex : gmsh::model::geo::addPoint(a.x, a.y, z, size));
+    std::sort(on_edge.begin(), on_edge.end());
+    for (const auto& [t, k] : on_edge)
+      if (!slab.point_tags[k])
+        points.push_back(slab.point_tags[k] =
+                             gmsh::model::geo::addPoint(marks[k].x, marks[k].y, z, mark_size));
+  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+    lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % points.size()]));
+  slab.surface = gmsh::model::geo::addPlaneSurface({gmsh::model::geo::addCurveLoop(lines)});
+  for (std::size_t k = 0; k < marks.size(); ++k)
+    if (!slab.point_tags[k]) {
+      slab.point_tags[k] = gmsh::model::geo::addPoint(marks[k].x, marks[k].y, z, mark_size);
+      slab.inside.push_back(slab.point_tags[k]);
+    }
+  return slab;
 }
 
 double slab_size(const std::vector<Vec2>& plan) {
@@ -69,14 +124,16 @@ GmshFile write_model(const Site& site, const std::string& dir, const std::string
                      double elevation, Keep keep) {
   gmsh::model::add(stem);
   Groups groups;
+  std::vector<SlabWithPoints> slabs;
   for (const PlanSlab& s : site.slabs) {
     if (!keep(s.elevation)) continue;
     const std::string prefix = s.name + "/" + s.level;
-    groups.add(prefix + "/slab", 2, add_polygon(s.plan_W, s.elevation, slab_size(s.plan_W)));
+    std::vector<Vec2> bearings;
+    for (const PlanBearing& b : s.bearings) bearings.push_back(b.p_W);
+    slabs.push_back(add_slab(s.plan_W, s.elevation, slab_size(s.plan_W), bearings, 0.5));
+    groups.add(prefix + "/slab", 2, slabs.back().surface);
     add_columns(s.columns, prefix, s.elevation, groups);
-    for (const PlanBearing& b : s.bearings)
-      groups.add(prefix + "/bearing", 0,
-                 gmsh::model::geo::addPoint(b.p_W.x, b.p_W.y, s.elevation, 0.5));
+    for (int tag : slabs.back().point_tags) groups.add(prefix + "/bearing", 0, tag);
   }
   if (keep(0.0)) {
     for (std::size_t i = 0; i < site.ground_columns.size(); ++i) {
@@ -89,6 +146,7 @@ GmshFile write_model(const Site& site, const std::string& dir, const std::string
       groups.add(w.structure + "/base/wall", 2, add_polygon(w.plan_W, 0.0, slab_size(w.plan_W)));
   }
   gmsh::model::geo::synchronize();
+  for (const SlabWithPoints& slab : slabs) slab.embed();
   GmshFile file{stem, elevation, groups.create()};
   gmsh::model::mesh::generate(2);
   gmsh::write((fs::path(dir) / (stem + ".geo_unrolled")).string());

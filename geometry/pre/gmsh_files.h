@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "geometry/convex_polygon.h"
-#include "geometry/pre/site_plan.h"
+#include "solver/structures/site_plan.h"
 
 namespace isopound::pre {
 

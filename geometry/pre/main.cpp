@@ -15,7 +15,6 @@
 #include "geometry/pre/model_scan.h"
 #include "geometry/pre/plan_figure.h"
 #include "geometry/pre/properties.h"
-#include "geometry/pre/site_plan.h"
 #include "post/headless.h"
 #include "post/render_png.h"
 #include "solver/core/modes.h"
@@ -24,6 +23,7 @@
 #include "solver/io/units.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
+#include "solver/structures/site_plan.h"
 
 namespace fs = std::filesystem;
 using namespace isopound;
@@ -105,12 +105,15 @@ int run(const std::string& model_path, const std::string& out_dir,
   std::vector<Clearance> clearances;
   CheckLimits limits;
   if (model.config) {
-    limits.reach = model.config->contact3d.search_distance;
-    limits.level_tolerance = model.config->contact3d.elevation_tolerance;
     if (model.is3d) {
       site = site_plan(*model.config);
       properties = structure_properties(*model.config);
-      clearances = check_site(model, site, properties, limits, problems);
+      // The reader ran the site checks (their problems are in `problems`); run again, into a
+      // list of their own, for the clearances they measure.
+      ProblemList again;
+      clearances =
+          check_site3d(*model.config, model.structures, site, site_limits(*model.config), again);
+      check_structures(model, site, properties, limits, problems);
     } else {
       check_model2d(model, limits, problems);
     }

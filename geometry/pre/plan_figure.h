@@ -10,7 +10,7 @@
 
 #include "geometry/pre/checks.h"
 #include "geometry/pre/properties.h"
-#include "geometry/pre/site_plan.h"
+#include "solver/structures/site_plan.h"
 #include "post/figure.h"
 
 namespace isopound::pre {

@@ -14,7 +14,9 @@
 
 #include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input3d.h"
+#include "solver/io/site_checks.h"
 #include "solver/structures/config3d.h"
+#include "solver/structures/site_plan.h"
 
 namespace isopound {
 namespace {
@@ -503,20 +505,25 @@ ImpactLawUses read_impact_law(const InputNode& node, ImpactLawConfig& config) {
 }
 
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
-                       const std::string& base_dir, std::vector<std::string>* used_keys) {
+                       const std::string& base_dir, std::vector<std::string>* used_keys,
+                       ProblemList* site_problems) {
   try {
     const InputNode top = InputNode::tracked(root, source_name);
     top.expect_keys(
         {"building", "neighbours", "structures", "contact", "ground_motion", "analysis", "output"});
     ModelConfig model;
     model.source = source_name;
+    ProblemList own_problems;
+    ProblemList& problems = site_problems ? *site_problems : own_problems;
     if (const auto structures = top.find("structures")) {  // 3D: model_input3d.cpp
       for (const char* key : {"building", "neighbours"})
         if (const auto n = top.find(key))
           n->fail("a 2D building cannot be combined with 3D structures (structures:)");
       model.structures3d = read_structures3d(*structures);
       if (const auto c = top.find("contact")) model.contact3d = read_contact3d(*c);
-      check_site3d(model, *structures, top.find("contact"));
+      check_site3d(model, structure_marks(*structures), site_plan(model), site_limits(model),
+                   problems);
+      if (!site_problems) problems.throw_errors();
     } else {
       if (const auto c = top.find("contact"))
         c->fail(
@@ -527,6 +534,8 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
     if (const auto list = top.find("neighbours")) {
       if (!list->is_sequence()) list->fail("must be a list of neighbours");
       for (const InputNode& n : list->elements()) model.neighbours.push_back(read_neighbour(n));
+      check_site2d(model, list->elements(), problems);
+      if (!site_problems) problems.throw_errors();
     }
     if (const auto n = top.find("ground_motion"))
       model.ground_motion = read_ground_motion(*n, base_dir);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/io/problems.h"
 #include "solver/io/yaml_reader.h"
 #include "solver/structures/config.h"
 
@@ -19,8 +20,12 @@ ModelConfig load_model_file(const std::string& path);
 // relative record paths (absolute ones are kept).
 // `used_keys` (optional) receives every key path the reader looked up for this model (the keys its
 // choices of model, law and format use), list indices dropped.
+// The site checks (site_checks.h) run once the structures are read: their errors are thrown
+// together (InputErrors), or, when `site_problems` is given (isopound-pre), collected there and
+// the reading goes on.
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
-                       const std::string& base_dir, std::vector<std::string>* used_keys = nullptr);
+                       const std::string& base_dir, std::vector<std::string>* used_keys = nullptr,
+                       ProblemList* site_problems = nullptr);
 
 // The impact-law keys of a 2D wall or neighbour (law, k, e, ...), also the 3D contact's option.
 ImpactLawUses read_impact_law(const InputNode& node, ImpactLawConfig& config);

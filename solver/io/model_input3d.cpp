@@ -7,13 +7,10 @@
 #include <optional>
 
 #include <limits>
-#include <sstream>
 
-#include "geometry/overlap.h"
 #include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input.h"
 #include "solver/structures/building3d.h"
-#include "solver/structures/pounding3d.h"
 
 namespace isopound {
 namespace {
@@ -55,18 +52,6 @@ std::vector<Vec2> read_plan(const InputNode& node) {
     poly->fail(std::string("not a convex polygon: ") + e.what());
   }
   return v;
-}
-
-bool inside(const std::vector<Vec2>& plan, Vec2 p) {
-  const ConvexPolygon poly(std::span<const Vec2>(plan.data(), plan.size()));
-  const AreaProperties a = area_properties(poly);
-  const double tol = 1e-9 * std::sqrt(a.area);
-  for (int i = 0; i < poly.size(); ++i) {
-    const Vec2 a0 = poly[i], a1 = poly[(i + 1) % poly.size()];
-    const Vec2 edge = a1 - a0;
-    if (cross(edge, p - a0) < -tol * std::sqrt(dot(edge, edge))) return false;
-  }
-  return true;
 }
 
 // Column section and material: defaults from the building's `columns:` map, overridden per item.
@@ -353,7 +338,6 @@ Building3DConfig read_building3d(const InputNode& node) {
 
   // Storeys: short form {count, height, mass, roof_mass} or a list.
   const InputNode storeys = node.required("storeys");
-  std::vector<InputNode> storey_nodes;  // per storey, the node to blame
   if (storeys.is_sequence()) {
     if (storeys.elements().empty()) storeys.fail("no storeys");
     if (storeys.elements().size() > kMaxStoreys) storeys.fail("too many storeys");
@@ -386,7 +370,6 @@ Building3DConfig read_building3d(const InputNode& node) {
         s.columns = grid_columns(item);
       }
       b.storeys.push_back(s);
-      storey_nodes.push_back(item);
     }
   } else {
     storeys.expect_keys({"count", "height", "mass", "roof_mass"});
@@ -400,7 +383,6 @@ Building3DConfig read_building3d(const InputNode& node) {
     s.columns = grid_columns(storeys);
     b.storeys.assign(static_cast<std::size_t>(count), s);
     storeys.read_quantity("roof_mass", dim::kMass, Bound::kPositive, b.storeys.back().floor.mass);
-    storey_nodes.assign(static_cast<std::size_t>(count), storeys);
   }
 
   // Base slab and bearings.
@@ -422,32 +404,16 @@ Building3DConfig read_building3d(const InputNode& node) {
         br.label = item.has("label") ? item.required("label").string()
                                      : numbered('B', b.bearings.size() + 1);
         item.read_quantity("carried_mass", dim::kMass, Bound::kPositive, br.carried_mass);
-        if (!inside(b.base.plan, br.position))
-          item.required("at").fail("bearing " + br.label + " is outside the base slab's plan");
         b.bearings.push_back(br);
       }
       if (b.bearings.empty()) list->fail("no bearings");
-    } else {
-      for (const Column3DConfig& c : b.storeys.front().columns)
-        if (!inside(b.base.plan, c.position))
-          storey_nodes.front().fail("column " + c.label +
-                                    " (and the bearing under it) is outside the base slab's plan");
     }
   } else {
     for (const char* key : {"base", "bearing", "bearings"})
       if (const auto n = node.find(key))
         n->fail("not allowed for a fixed-base building (isolated: false)");
   }
-  // Every column inside the floor it carries and the level it stands on.
-  for (std::size_t s = 0; s < b.storeys.size(); ++s) {
-    const std::vector<Vec2>* below =
-        s > 0 ? &b.storeys[s - 1].floor.plan : (b.isolated ? &b.base.plan : nullptr);
-    for (const Column3DConfig& c : b.storeys[s].columns) {
-      if (!inside(b.storeys[s].floor.plan, c.position) || (below && !inside(*below, c.position)))
-        storey_nodes[s].fail("column " + c.label + " of storey " + std::to_string(s + 1) +
-                             " is outside its slab's plan");
-    }
-  }
+  // Columns and bearings inside their slabs: the site checks (site_checks.h).
   if (const auto d = node.find("damping")) read_damping3d(*d, b.isolated, b.damping);
   if (const auto w = node.find("walls")) {
     if (!b.isolated)
@@ -602,80 +568,6 @@ ModelConfig::Contact3D read_contact3d(const InputNode& node) {
   node.read_quantity("elevation_tolerance", dim::kLength, Bound::kPositive, c.elevation_tolerance);
   node.read_quantity("search_distance", dim::kLength, Bound::kPositive, c.search_distance);
   return c;
-}
-
-void check_site3d(const ModelConfig& model, const InputNode& structures,
-                  const std::optional<InputNode>& contact) {
-  const std::vector<InputNode> items = structures.elements();
-  const std::vector<SiteBody> bodies = site_bodies(model);
-  const double tol = model.contact3d.elevation_tolerance;
-  const auto blame = [&](const SiteBody& s) -> const InputNode& { return items.at(s.building); };
-  // Overlaps at rest: slabs at one level (different structures), walls with base-level slabs.
-  for (std::size_t i = 0; i < bodies.size(); ++i)
-    for (std::size_t j = i + 1; j < bodies.size(); ++j) {
-      const SiteBody& a = bodies[i];
-      const SiteBody& b = bodies[j];
-      if (a.role == "wall" && b.role == "wall") continue;
-      if (a.role == "slab" && b.role == "slab" && a.structure == b.structure) continue;
-      if (std::abs(a.elevation - b.elevation) > tol) continue;
-      const Separation sep = separation_of(a.plan_W, b.plan_W);
-      if (sep.distance >= 0.0) continue;
-      std::ostringstream msg;
-      msg.precision(4);
-      if (a.role == "wall" || b.role == "wall") {
-        const SiteBody& wall = a.role == "wall" ? a : b;
-        const SiteBody& slab = a.role == "wall" ? b : a;
-        msg << "the " << wall.structure << " overlaps the slab " << slab.label() << " at rest (by "
-            << -sep.distance << " m): a wall must stand outside every slab at its level";
-        items.at(wall.building).fail_at_key("walls", msg.str());
-      }
-      msg << "structures '" << a.structure << "' and '" << b.structure << "' overlap at rest ("
-          << a.level << " and " << b.level << " by " << -sep.distance
-          << " m): place them apart (position, or adjacent: {to, side, gap})";
-      blame(b).fail(msg.str());
-    }
-  // Neighbours close enough to meet: every floor of one within the other's height must face a
-  // floor of the other (contact at mismatched levels is outside the model).
-  const double reach = model.contact3d.search_distance;
-  // (Later structures first: the neighbour listed after the building it stands by is blamed.)
-  for (std::size_t p = model.structures3d.size(); p-- > 0;)
-    for (std::size_t q = 0; q < model.structures3d.size(); ++q) {
-      if (p == q) continue;
-      std::vector<const SiteBody*> mine, theirs;
-      for (const SiteBody& s : bodies) {
-        if (s.role != "slab") continue;
-        if (s.building == static_cast<int>(p)) mine.push_back(&s);
-        if (s.building == static_cast<int>(q)) theirs.push_back(&s);
-      }
-      bool near = false;
-      for (const SiteBody* a : mine)
-        for (const SiteBody* b : theirs)
-          near = near || separation_of(a->plan_W, b->plan_W).distance <= reach;
-      if (!near) continue;
-      double top = 0.0, bottom = std::numeric_limits<double>::infinity();
-      for (const SiteBody* b : theirs) {
-        top = std::max(top, b->elevation);
-        bottom = std::min(bottom, b->elevation);
-      }
-      for (const SiteBody* a : mine) {
-        if (a->elevation <= tol || a->elevation > top + tol || a->elevation < bottom - tol)
-          continue;
-        bool matched = false;
-        for (const SiteBody* b : theirs)
-          matched = matched || std::abs(a->elevation - b->elevation) <= tol;
-        if (matched) continue;
-        std::ostringstream msg;
-        msg.precision(4);
-        msg << a->label() << " at " << a->elevation << " m faces structure '"
-            << model.structures3d[q].name
-            << "' (within the contact search distance) where it has no floor at that level: "
-               "slab-to-column contact at mismatched levels is outside the model; give both "
-               "equal storey heights, or place them farther apart than contact.search_distance ("
-            << reach << " m)";
-        items.at(p).required("storeys").fail(msg.str());
-      }
-    }
-  (void)contact;
 }
 
 std::vector<Building3DConfig> read_structures3d(const InputNode& node) {

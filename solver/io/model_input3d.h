@@ -20,12 +20,6 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node);
 // `contact:`, the 3D pounding law of every polygon contact pair (THEORY §6).
 ModelConfig::Contact3D read_contact3d(const InputNode& node);
 
-// Checks the site at rest once every structure is read (walls and `adjacent` resolved):
-// structures that overlap at rest, walls that overlap a slab, neighbours whose floors face the
-// other's at mismatched levels. Errors name the structure's entry in `structures`.
-void check_site3d(const ModelConfig& model, const InputNode& structures,
-                  const std::optional<InputNode>& contact);
-
 // The keys of `ground_motion:` that select a record pair.
 inline constexpr std::string_view kPairKeys[] = {"L", "T", "angle"};
 

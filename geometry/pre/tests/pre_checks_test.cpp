@@ -9,46 +9,6 @@
 namespace isopound::pre::test {
 namespace {
 
-// A one-storey 6 x 6 m building "a" (lines 1-14), isolated on bearings under its columns.
-const std::string kColumns = R"(          - {at: [-3 m, -3 m]}
-          - {at: [3 m, -3 m]}
-          - {at: [3 m, 3 m]}
-          - {at: [-3 m, 3 m]}
-)";
-std::string building_a(const std::string& columns = kColumns, const std::string& tail = "") {
-  return R"(structures:
-  - name: a
-    plan: {rectangle: [6 m, 6 m]}
-    columns: {section: [40 cm, 40 cm], E: 30 GPa, nu: 0.2}
-    storeys:
-      - height: 3 m
-        mass: 100 t
-        columns:
-)" + columns +
-         R"(    base: {mass: 100 t}
-    bearing: {model: linear, Tb: 2 s}
-)" + tail;
-}
-
-// A fixed-base one-storey building "b" at `position`, storey height `height`.
-std::string building_b(const std::string& position, const std::string& height,
-                       const std::string& plan = "{rectangle: [6 m, 6 m]}") {
-  return R"(  - name: b
-    isolated: false
-    position: )" +
-         position + R"(
-    plan: )" +
-         plan + R"(
-    columns: {section: [40 cm, 40 cm], E: 30 GPa, nu: 0.2}
-    damping: {type: none}
-    storeys:
-      - height: )" +
-         height + R"(
-        mass: 100 t
-        columns: [{at: [-2 m, -2 m]}, {at: [2 m, -2 m]}, {at: [2 m, 2 m]}, {at: [-2 m, 2 m]}]
-)";
-}
-
 struct PreRun {
   int exit_code;
   std::string output;

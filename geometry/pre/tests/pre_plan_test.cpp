@@ -9,8 +9,8 @@
 #include "geometry/pre/model_scan.h"
 #include "geometry/pre/plan_figure.h"
 #include "geometry/pre/properties.h"
-#include "geometry/pre/site_plan.h"
 #include "pre_test_support.h"
+#include "solver/structures/site_plan.h"
 
 namespace isopound::pre::test {
 
@@ -23,7 +23,8 @@ PlanView view_of(const std::string& model_path, Site& site) {
   EXPECT_TRUE(m.config.has_value());
   site = site_plan(*m.config);
   const auto properties = structure_properties(*m.config);
-  const auto clearances = check_site(m, site, properties, CheckLimits{}, problems);
+  const auto clearances =
+      check_site3d(*m.config, m.structures, site, site_limits(*m.config), problems);
   PlanView view;
   plan_figure(site, properties, clearances, PlanOptions{}, &view);
   return view;

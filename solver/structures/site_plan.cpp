@@ -1,6 +1,6 @@
 // The site in plan from a model's 3D structures: slabs, columns, bearings placed in frame W by
 // each building's (position, rotation), as the solver's building3d.cpp places them.
-#include "geometry/pre/site_plan.h"
+#include "solver/structures/site_plan.h"
 
 #include <cmath>
 #include <span>
@@ -9,7 +9,7 @@
 #include "solver/structures/config3d.h"
 #include "solver/structures/pounding3d.h"  // site_bodies(): walls as the solver builds them
 
-namespace isopound::pre {
+namespace isopound {
 
 void column_rectangle(double I11, double I22, double& b, double& h) {
   // (b h^3)(h b^3) = (bh)^4 = 144 I11 I22 and I11 / I22 = (h / b)^2.
@@ -105,4 +105,4 @@ Site site_plan(const ModelConfig& config) {
   return site;
 }
 
-}  // namespace isopound::pre
+}  // namespace isopound

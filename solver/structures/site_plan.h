@@ -9,7 +9,7 @@
 #include "geometry/convex_polygon.h"
 #include "solver/structures/config.h"
 
-namespace isopound::pre {
+namespace isopound {
 
 // A column drawn as the rectangle b x h (along its axes 1 and 2) with the column's I11 and I22
 // (b h^3 / 12 and h b^3 / 12: exact for a rectangular section, an equivalent one otherwise).
@@ -63,4 +63,4 @@ Site site_plan(const ModelConfig& config);
 // Equivalent rectangle b x h of a column with I11 = b h^3 / 12 and I22 = h b^3 / 12.
 void column_rectangle(double I11, double I22, double& b, double& h);
 
-}  // namespace isopound::pre
+}  // namespace isopound
