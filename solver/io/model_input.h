@@ -5,11 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "solver/io/problems.h"
 #include "solver/io/yaml_reader.h"
 #include "solver/structures/config.h"
 
 namespace isopound {
+
+class ProblemList;  // solver/io/problems.h
 
 // Reads and parses the file. A missing or unreadable file is an InputError with line 0; a YAML
 // syntax error one at the line yaml-cpp reports. Relative record paths are taken from the file's
