@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 
 namespace isopound::pre {
 namespace {
@@ -25,15 +26,40 @@ auto gmsh_call(F f) {
   }
 }
 
-// A plane surface through the polygon at height z; returns its tag.
-int add_polygon(const std::vector<Vec2>& plan, double z, double size) {
-  std::vector<int> points, lines;
-  for (Vec2 p : plan) points.push_back(gmsh::model::geo::addPoint(p.x, p.y, z, size));
-  for (std::size_t i = 0; i < points.size(); ++i)
-    lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % points.size()]));
-  const int loop = gmsh::model::geo::addCurveLoop(lines);
-  return gmsh::model::geo::addPlaneSurface({loop});
-}
+// The points and lines of one model: a point at the position of an earlier one is that point, a
+// line between two points already joined is that line (reversed if need be), so that bodies that
+// touch (a column flush with a slab's corner) share mesh nodes instead of duplicating them
+// (gmsh -check fails on duplicate nodes). Positions are compared to the micrometre.
+struct Geometry {
+  std::map<std::tuple<long long, long long, long long>, int> points;
+  std::map<std::pair<int, int>, int> lines;
+
+  int point(double x, double y, double z, double size) {
+    const auto key =
+        std::make_tuple(std::llround(x * 1e6), std::llround(y * 1e6), std::llround(z * 1e6));
+    const auto it = points.find(key);
+    if (it != points.end()) return it->second;
+    return points[key] = gmsh::model::geo::addPoint(x, y, z, size);
+  }
+  int line(int from, int to) {
+    if (const auto it = lines.find({from, to}); it != lines.end()) return it->second;
+    if (const auto it = lines.find({to, from}); it != lines.end()) return -it->second;
+    return lines[{from, to}] = gmsh::model::geo::addLine(from, to);
+  }
+  // A plane surface bounded by the closed chain of points.
+  int surface(const std::vector<int>& chain) {
+    std::vector<int> loop;
+    for (std::size_t i = 0; i < chain.size(); ++i)
+      loop.push_back(line(chain[i], chain[(i + 1) % chain.size()]));
+    return gmsh::model::geo::addPlaneSurface({gmsh::model::geo::addCurveLoop(loop)});
+  }
+  // A plane surface through the polygon at height z; returns its tag.
+  int polygon(const std::vector<Vec2>& plan, double z, double size) {
+    std::vector<int> chain;
+    for (Vec2 p : plan) chain.push_back(point(p.x, p.y, z, size));
+    return surface(chain);
+  }
+};
 
 // A slab whose mesh has a node at every given point (the bearings): a point on a vertex is that
 // vertex, one on an edge splits the edge there, one inside is embedded in the surface (after
@@ -48,42 +74,40 @@ struct SlabWithPoints {
   }
 };
 
-SlabWithPoints add_slab(const std::vector<Vec2>& plan, double z, double size,
+SlabWithPoints add_slab(Geometry& geometry, const std::vector<Vec2>& plan, double z, double size,
                         const std::vector<Vec2>& marks, double mark_size) {
   const double tol =
       1e-9 * std::sqrt(area_properties(ConvexPolygon(std::span<const Vec2>(plan))).area);
   SlabWithPoints slab;
   slab.point_tags.assign(marks.size(), 0);
-  std::vector<int> points, lines;
+  std::vector<int> chain;
   for (std::size_t i = 0; i < plan.size(); ++i) {
     const Vec2 a = plan[i], b = plan[(i + 1) % plan.size()], d = b - a;
     const double length = std::sqrt(dot(d, d));
     // The vertex, then the marks on the open edge a -> b in order along it.
     std::vector<std::pair<double, std::size_t>> on_edge;
-    int vertex = 0;
+    bool marked = false;
     for (std::size_t k = 0; k < marks.size(); ++k) {
       const Vec2 q = marks[k] - a;
       const double t = dot(q, d) / length;  // along the edge, m
-      if (std::sqrt(dot(q, q)) <= tol) {
-        if (!vertex) vertex = gmsh::model::geo::addPoint(a.x, a.y, z, mark_size);
-        slab.point_tags[k] = vertex;
-      } else if (std::abs(cross(d, q)) / length <= tol && t > tol && t < length - tol) {
+      if (std::sqrt(dot(q, q)) <= tol)
+        marked = true;
+      else if (std::abs(cross(d, q)) / length <= tol && t > tol && t < length - tol)
         on_edge.push_back({t, k});
-      }
     }
-    points.push_back(vertex ? vertex : gmsh::model::geo::addPoint(a.x, a.y, z, size));
+    chain.push_back(geometry.point(a.x, a.y, z, marked ? mark_size : size));
+    for (std::size_t k = 0; k < marks.size(); ++k)
+      if (std::sqrt(dot(marks[k] - a, marks[k] - a)) <= tol) slab.point_tags[k] = chain.back();
     std::sort(on_edge.begin(), on_edge.end());
-    for (const auto& [t, k] : on_edge)
-      if (!slab.point_tags[k])
-        points.push_back(slab.point_tags[k] =
-                             gmsh::model::geo::addPoint(marks[k].x, marks[k].y, z, mark_size));
+    for (const auto& [t, k] : on_edge) {
+      slab.point_tags[k] = geometry.point(marks[k].x, marks[k].y, z, mark_size);
+      if (slab.point_tags[k] != chain.back()) chain.push_back(slab.point_tags[k]);
+    }
   }
-  for (std::size_t i = 0; i < points.size(); ++i)
-    lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % points.size()]));
-  slab.surface = gmsh::model::geo::addPlaneSurface({gmsh::model::geo::addCurveLoop(lines)});
+  slab.surface = geometry.surface(chain);
   for (std::size_t k = 0; k < marks.size(); ++k)
     if (!slab.point_tags[k]) {
-      slab.point_tags[k] = gmsh::model::geo::addPoint(marks[k].x, marks[k].y, z, mark_size);
+      slab.point_tags[k] = geometry.point(marks[k].x, marks[k].y, z, mark_size);
       slab.inside.push_back(slab.point_tags[k]);
     }
   return slab;
@@ -112,10 +136,10 @@ struct Groups {
   }
 };
 
-void add_columns(const std::vector<PlanColumn>& columns, const std::string& prefix, double z,
-                 Groups& groups) {
+void add_columns(Geometry& geometry, const std::vector<PlanColumn>& columns,
+                 const std::string& prefix, double z, Groups& groups) {
   for (const PlanColumn& c : columns)
-    groups.add(prefix + "/column", 2, add_polygon(c.outline_W(), z, 0.5 * std::min(c.b, c.h)));
+    groups.add(prefix + "/column", 2, geometry.polygon(c.outline_W(), z, 0.5 * std::min(c.b, c.h)));
 }
 
 // One model: the levels whose elevation passes `keep`.
@@ -124,15 +148,16 @@ GmshFile write_model(const Site& site, const std::string& dir, const std::string
                      double elevation, Keep keep) {
   gmsh::model::add(stem);
   Groups groups;
+  Geometry geometry;
   std::vector<SlabWithPoints> slabs;
   for (const PlanSlab& s : site.slabs) {
     if (!keep(s.elevation)) continue;
     const std::string prefix = s.name + "/" + s.level;
     std::vector<Vec2> bearings;
     for (const PlanBearing& b : s.bearings) bearings.push_back(b.p_W);
-    slabs.push_back(add_slab(s.plan_W, s.elevation, slab_size(s.plan_W), bearings, 0.5));
+    slabs.push_back(add_slab(geometry, s.plan_W, s.elevation, slab_size(s.plan_W), bearings, 0.5));
     groups.add(prefix + "/slab", 2, slabs.back().surface);
-    add_columns(s.columns, prefix, s.elevation, groups);
+    add_columns(geometry, s.columns, prefix, s.elevation, groups);
     for (int tag : slabs.back().point_tags) groups.add(prefix + "/bearing", 0, tag);
   }
   if (keep(0.0)) {
@@ -140,10 +165,11 @@ GmshFile write_model(const Site& site, const std::string& dir, const std::string
       std::string name;
       for (const PlanSlab& s : site.slabs)
         if (s.structure == site.ground_columns_structure[i]) name = s.name;
-      add_columns({site.ground_columns[i]}, name + "/ground", 0.0, groups);
+      add_columns(geometry, {site.ground_columns[i]}, name + "/ground", 0.0, groups);
     }
     for (const PlanWall& w : site.walls)
-      groups.add(w.structure + "/base/wall", 2, add_polygon(w.plan_W, 0.0, slab_size(w.plan_W)));
+      groups.add(w.structure + "/base/wall", 2,
+                 geometry.polygon(w.plan_W, 0.0, slab_size(w.plan_W)));
   }
   gmsh::model::geo::synchronize();
   for (const SlabWithPoints& slab : slabs) slab.embed();
@@ -194,7 +220,8 @@ std::vector<GmshFile> write_gmsh_files(const Site& site, const std::string& dir)
 AreaProperties mesh_area_properties(const std::vector<Vec2>& plan, double size, int& triangles) {
   return gmsh_call([&] {
     gmsh::model::add("area-check");
-    const int surface = add_polygon(plan, 0.0, size);
+    Geometry geometry;
+    const int surface = geometry.polygon(plan, 0.0, size);
     gmsh::model::geo::synchronize();
     gmsh::model::mesh::generate(2);
     const int type = gmsh::model::mesh::getElementType("Triangle", 1);

@@ -183,6 +183,7 @@ TEST(PreChecks, FewOrCollinearBearingsWarn) {
       << line.output;
 }
 
+// (Six since issue 24: b's columns also stand in a's base slab, a check of its own.)
 TEST(PreChecks, FiveProblemsPrintAllFive) {
   std::string cols = kColumns;
   cols.replace(cols.find("[-3 m, 3 m]"), 11, "[-3.5 m, 3 m]");  // 1: column outside
@@ -193,16 +194,18 @@ TEST(PreChecks, FiveProblemsPrintAllFive) {
       - {at: [3 m, 3 m]}
       - {at: [-3 m, 4 m]}
 )") +  // 2: bearing outside
-      // 3: b's plan not convex, 4: b overlaps a, 5: b's floor at 3.5 m against a's at 3 m.
+      // 3: b's plan not convex, 4: b overlaps a, 5: b's floor at 3.5 m against a's at 3 m,
+      // 6: b's columns (at x = 3 and 7 m) stand in a's base slab (to x = 3 m).
       building_b("[5 m, 0 m]", "3.5 m",
                  "{polygon: [[-3 m, -3 m], [3 m, -3 m], [3 m, 3 m], [0 m, 1 m], [-3 m, 3 m]]}");
   const PreRun r = check("five", model);
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("5 errors"), std::string::npos) << r.output;
-  EXPECT_EQ(count(r.output, "error: " + r.file + ":"), 5) << r.output;
-  for (const char* what : {"column C4 of storey 1 is outside its slab's plan",
-                           "bearing B4 is outside the base slab's plan", "not a convex polygon",
-                           "overlap at rest", "has no floor of 'b' at its level"})
+  EXPECT_NE(r.output.find("6 errors"), std::string::npos) << r.output;
+  EXPECT_EQ(count(r.output, "error: " + r.file + ":"), 6) << r.output;
+  for (const char* what :
+       {"column C4 of storey 1 is outside its slab's plan",
+        "bearing B4 is outside the base slab's plan", "not a convex polygon", "overlap at rest",
+        "has no floor of 'b' at its level", "column C1 of storey 1 of 'b' stands in base of 'a'"})
     EXPECT_EQ(count(r.output, what), 1) << what << "\n" << r.output;
 }
 
