@@ -232,7 +232,7 @@ std::vector<std::string> loose_bearings() {
 // (removeDuplicateNodes leaves the node count unchanged: `gmsh -check` fails on duplicates), a
 // direct count of coincident nodes, and has every bearing embedded in its slab's mesh. Before the
 // bearings were embedded, each ground level of the thesis building had 12 duplicates (the
-// bearings on the slab's edges) and 4 loose bearings (inside it).
+// bearings on the slab's edges, measured both ways) and 16 loose bearings (all of them).
 TEST(PreGmsh, EveryShippedConfigsMeshesHaveNoDuplicateOrLooseNodes) {
   GmshSession session;
   int configs = 0, files = 0;
