@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iomanip>
 #include <stdexcept>
+#include <string>
 
 #include "solver/io/report3d.h"
 #include "solver/structures/config3d.h"
@@ -74,6 +75,27 @@ std::optional<double> friction_energy(const Model& model) {
   for (const auto& el : model.elements)
     if (dynamic_cast<const PolygonContact*>(el.get())) sum = sum.value_or(0.0) + el->output(9);
   return sum;
+}
+
+// Why the analysis ended where it did, when that is not the record's end (plus extra_time):
+// t_end (analysis.t_end or --until) before it, or a t_end past it, clipped to it. "" otherwise.
+std::string analysis_end_note(const RunStatistics& st) {
+  if (st.requested_end <= 0) return "";
+  char line[256];
+  if (st.requested_end < st.record_end * (1 - 1e-12)) {
+    std::snprintf(line, sizeof line,
+                  "stopped early at t_end = %.6g s (analysis.t_end or --until), before the end of "
+                  "the record + extra_time at %.6g s",
+                  st.duration, st.record_end);
+  } else if (st.requested_end > st.record_end * (1 + 1e-12)) {
+    std::snprintf(line, sizeof line,
+                  "t_end = %.6g s (analysis.t_end or --until) is past the end of the record + "
+                  "extra_time: clipped to %.6g s",
+                  st.requested_end, st.duration);
+  } else {
+    return "";
+  }
+  return line;
 }
 
 double structure_weight(const Model& model, const StructureInfo& s) {
@@ -281,6 +303,18 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                      {"max_step_s", st.max_step},
                      {"analysed_time_s", st.duration},
                      {"wall_seconds", st.wall_seconds}};
+  // How the analysis ended: at the record's end + extra_time, or at t_end (stated, with the
+  // clipping of a t_end past the record), so that a shortened run never reads as a whole one.
+  const std::string end_note = analysis_end_note(st);
+  j["end_of_analysis"] = {
+      {"analysed_time_s", st.duration},
+      {"record_end_s", st.record_end},
+      {"requested_end_s", st.requested_end > 0 ? json(st.requested_end) : json(nullptr)},
+      {"stopped_by", st.requested_end > 0 && st.requested_end < st.record_end * (1 - 1e-12)
+                         ? "t_end"
+                         : "end of record + extra_time"},
+      {"clipped", st.requested_end > st.record_end * (1 + 1e-12)},
+      {"note", end_note}};
   return j;
 }
 
@@ -357,6 +391,8 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
       r.stats.interval > 0 ? static_cast<int>(std::lround(job.motion.dt / r.stats.interval)) : 0,
       config.output.interval > 0 ? config.output.interval : job.motion.dt);
   out << line;
+  if (const std::string note = analysis_end_note(r.stats); !note.empty())
+    out << "  " << note << '\n';
   if (r.stats.step_period > 0) {
     std::snprintf(line, sizeof line,
                   "  largest step from T_min %.4g s / %g steps per period (%s modes)\n",

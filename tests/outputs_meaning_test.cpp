@@ -1,0 +1,197 @@
+// Outputs that mean what they say (issue 24, item 4): history rows exactly on k * interval for
+// any interval (sampled from the Newmark solution inside a step), early and clipped ends of the
+// analysis stated on the console and in summary.json.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "solver/io/model_input.h"
+#include "solver/io/report.h"
+#include "solver/structures/job.h"
+#include "tests/test_support.h"
+
+namespace isopound {
+namespace {
+
+namespace fs = std::filesystem;
+
+ModelConfig load(const std::string& text) {
+  return load_model(YAML::Load(text), "model.yaml", "");
+}
+
+int column(const History& h, const std::string& name) {
+  for (std::size_t c = 0; c < h.columns.size(); ++c)
+    if (h.columns[c] == name) return static_cast<int>(c);
+  ADD_FAILURE() << "no column '" << name << "'";
+  return 0;
+}
+
+// A 2-storey isolated building under a pulse sampled at 5 ms, fixed steps of `dt`.
+ModelConfig two_storey(const std::string& dt, double interval) {
+  ModelConfig m = load(R"(
+building:
+  name: main
+  base: {mass: 340 t}
+  floors: {count: 2, mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}
+  isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
+ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 6 s}}
+analysis: {stepping: fixed, dt: )" + dt + R"(}
+)");
+  m.output.interval = interval;
+  return m;
+}
+
+// The reproduction: interval 3 ms with 5 ms steps gave rows at 0, 0.005, 0.0075, ... while the
+// console said "output every 0.003 s". Now every row is at exactly k * 0.003 s, none missing.
+TEST(OutputSampling, RowsAreOnKTimesAnIntervalThatIsNotAMultipleOfTheStep) {
+  const JobResult job = run_job(two_storey("5 ms", 0.003));
+  const History& h = job.analysis.history;
+  const std::size_t cols = h.columns.size();
+  ASSERT_EQ(h.rows(), 2001u);  // 0, 0.003, ..., 6.000 s
+  for (std::size_t k = 0; k < h.rows(); ++k)
+    ASSERT_EQ(h.values[k * cols], static_cast<double>(k) * 0.003) << "row " << k;
+}
+
+// The rows inside a step follow the Newmark solution of that step (v linear, u from the average
+// acceleration), computed here from the run's own step ends (every step written with interval
+// 5 ms), and they converge to a run whose steps end on the grid: 1 ms steps, where 3 ms rows are
+// step ends. The sampled u is much closer to that run than a linear interpolation of u would be.
+TEST(OutputSampling, RowsInsideAStepFollowTheNewmarkSolution) {
+  const JobResult sampled = run_job(two_storey("5 ms", 0.003));
+  const JobResult ends = run_job(two_storey("5 ms", 0.005));
+  const JobResult fine = run_job(two_storey("1 ms", 0.003));
+  const History& hs = sampled.analysis.history;
+  const History& he = ends.analysis.history;
+  const History& hf = fine.analysis.history;
+  const std::size_t cols = hs.columns.size();
+  ASSERT_EQ(he.columns, hs.columns);
+  ASSERT_EQ(hf.rows(), hs.rows());
+  const int u = column(hs, "main/floor 2 u [m]");
+  const int v = column(hs, "main/floor 2 v [m/s]");
+  const int force = column(hs, "main/isolator force [N]");
+  double peak_u = 0.0, error_newmark = 0.0, error_linear = 0.0, error_fine = 0.0;
+  for (std::size_t k = 0; k < hs.rows(); ++k) {
+    const double t = static_cast<double>(k) * 0.003;
+    const std::size_t j = static_cast<std::size_t>(std::floor(t / 0.005 + 1e-9));
+    const double* row = &hs.values[k * cols];
+    const double* a = &he.values[j * cols];
+    peak_u = std::max(peak_u, std::abs(row[u]));
+    if (std::abs(a[0] - t) < 1e-12) {  // on a step end: that step's values, bit for bit
+      for (std::size_t c = 1; c < cols; ++c) ASSERT_EQ(row[c], a[c]) << "row " << k;
+      continue;
+    }
+    const double* b = &he.values[(j + 1) * cols];
+    const double s = (t - a[0]) / (b[0] - a[0]);
+    const double v_t = a[v] + s * (b[v] - a[v]);
+    const double u_t = a[u] + 0.5 * (t - a[0]) * (a[v] + v_t);
+    EXPECT_NEAR(row[v], v_t, 1e-12 * std::abs(b[v] - a[v]) + 1e-15) << "row " << k;
+    EXPECT_NEAR(row[u], u_t, 1e-9 * std::abs(b[u] - a[u]) + 1e-15) << "row " << k;
+    EXPECT_NEAR(row[force], a[force] + s * (b[force] - a[force]),
+                1e-9 * std::abs(b[force] - a[force]) + 1e-9)
+        << "row " << k;
+    const double u_fine = hf.values[k * cols + u];
+    error_newmark = std::max(error_newmark, std::abs(row[u] - u_fine));
+    error_linear = std::max(error_linear, std::abs(a[u] + s * (b[u] - a[u]) - u_fine));
+    error_fine = std::max(error_fine, std::abs(row[u] - u_fine));
+  }
+  ASSERT_GT(peak_u, 0.05);
+  // The 5 ms and 1 ms solutions differ by the integrator's own error (O(h^2)); the sampling
+  // adds little to it.
+  EXPECT_LT(error_fine, 1e-3 * peak_u);
+  EXPECT_LT(error_newmark, error_linear);
+}
+
+// Adaptive stepping with contacts (steps cut at events, of any length): still k * interval.
+TEST(OutputSampling, AdaptiveSteppingWithImpactsStaysOnTheGrid) {
+  ModelConfig m = load(R"(
+building:
+  name: main
+  base: {mass: 340 t}
+  floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
+  isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
+  walls: {gap: 5 cm, law: kelvin_voigt, stiffness: 2500 kN/mm, restitution: 0.7, mass: 500 t}
+ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8 s}}
+)");
+  m.output.interval = 0.007;
+  const JobResult job = run_job(m);
+  const History& h = job.analysis.history;
+  const std::size_t cols = h.columns.size();
+  ASSERT_GT(job.analysis.stats.rejected_steps, 0);  // events cut steps
+  ASSERT_EQ(h.rows(), static_cast<std::size_t>(std::floor(8.0 / 0.007)) + 1);
+  for (std::size_t k = 0; k < h.rows(); ++k)
+    ASSERT_EQ(h.values[k * cols], static_cast<double>(k) * 0.007) << "row " << k;
+}
+
+// t_end before the record's end: the run says it stopped early; after it: clipped, said so.
+TEST(AnalysisEnd, EarlyStopAndClippedEndAreInSummaryJson) {
+  ModelConfig m = two_storey("5 ms", 0.0);
+  m.output.histories = false;
+  {
+    const JobResult job = run_job(m);
+    const nlohmann::json end = summary_json(m, job)["end_of_analysis"];
+    EXPECT_EQ(end["stopped_by"], "end of record + extra_time");
+    EXPECT_EQ(end["clipped"], false);
+    EXPECT_TRUE(end["requested_end_s"].is_null());
+    EXPECT_EQ(end["note"], "");
+  }
+  m.analysis.t_end = 2.5;
+  {
+    const JobResult job = run_job(m);
+    const nlohmann::json end = summary_json(m, job)["end_of_analysis"];
+    EXPECT_EQ(end["stopped_by"], "t_end");
+    EXPECT_DOUBLE_EQ(end["analysed_time_s"].get<double>(), 2.5);
+    EXPECT_NEAR(end["record_end_s"].get<double>(), 6.0, 1e-9);
+    EXPECT_NE(end["note"].get<std::string>().find("stopped early"), std::string::npos);
+    std::ostringstream console;
+    print_summary(console, m, job);
+    EXPECT_NE(console.str().find("stopped early at t_end = 2.5 s"), std::string::npos)
+        << console.str();
+  }
+  m.analysis.t_end = 60.0;
+  {
+    const JobResult job = run_job(m);
+    const nlohmann::json end = summary_json(m, job)["end_of_analysis"];
+    EXPECT_EQ(end["clipped"], true);
+    EXPECT_EQ(end["stopped_by"], "end of record + extra_time");
+    EXPECT_DOUBLE_EQ(end["requested_end_s"].get<double>(), 60.0);
+    EXPECT_NEAR(end["analysed_time_s"].get<double>(), 6.0, 1e-9);
+    std::ostringstream console;
+    print_summary(console, m, job);
+    EXPECT_NE(console.str().find("t_end = 60 s (analysis.t_end or --until) is past the end"),
+              std::string::npos)
+        << console.str();
+  }
+}
+
+// The same through the command line: --until before and past the end of the record.
+TEST(AnalysisEnd, UntilIsStatedOnTheConsole) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("isopound-end-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string model = (test::source_dir() / "configs" / "tutorial.yaml").string();
+  test::CommandResult c = test::run_isopound("run '" + model + "' --no-histories --until 1.5 -o '" +
+                                             (dir / "a").string() + "'");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_NE(c.output.find("stopped early at t_end = 1.5 s"), std::string::npos) << c.output;
+  c = test::run_isopound("run '" + model + "' --no-histories --until 1000 -o '" +
+                         (dir / "b").string() + "'");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_NE(c.output.find("is past the end of the record"), std::string::npos) << c.output;
+  std::ifstream summary(dir / "b" / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(summary);
+  EXPECT_EQ(j["end_of_analysis"]["clipped"], true);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace isopound
