@@ -179,17 +179,33 @@ Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, dou
   return k;
 }
 
+namespace {
+
+double polar_moment_about_cm(const Diaphragm3DConfig& d, const AreaProperties& area, double e2,
+                             EccentricPolarMoment rule) {
+  double j_cm = d.polar_moment;
+  if (j_cm <= 0) {
+    j_cm = d.mass * area.radius_of_gyration_sq();
+    if (rule == EccentricPolarMoment::kThesis) j_cm += d.mass * e2;
+  }
+  return j_cm;
+}
+
+}  // namespace
+
+double polar_moment_about_cm(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
+  const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
+  return polar_moment_about_cm(d, area_properties(plan), dot(d.eccentricity, d.eccentricity),
+                               rule);
+}
+
 Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
   if (!(d.mass > 0)) throw std::invalid_argument("diaphragm mass must be > 0");
   const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
   const AreaProperties area = area_properties(plan);
   const Vec2 cm = area.p_WC + d.eccentricity;
   const double e2 = dot(d.eccentricity, d.eccentricity);
-  double j_cm = d.polar_moment;
-  if (j_cm <= 0) {
-    j_cm = d.mass * area.radius_of_gyration_sq();
-    if (rule == EccentricPolarMoment::kThesis) j_cm += d.mass * e2;
-  }
+  const double j_cm = polar_moment_about_cm(d, area, e2, rule);
   const Eigen::Matrix3d T = point_transform(cm);
   return T.transpose() * Eigen::Vector3d(d.mass, d.mass, j_cm).asDiagonal() * T;
 }
