@@ -119,7 +119,7 @@ building:
   base: {mass: 340 t}
   floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
   isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
-  walls: {gap: 5 cm, law: kelvin_voigt, stiffness: 2500 kN/mm, restitution: 0.7, mass: 500 t}
+  walls: {gap: 5 cm, law: kelvin_voigt, k: 2500 kN/mm, e: 0.7, mass: 500 t}
 ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8 s}}
 )");
   m.output.interval = 0.007;
@@ -191,6 +191,200 @@ TEST(AnalysisEnd, UntilIsStatedOnTheConsole) {
   const nlohmann::json j = nlohmann::json::parse(summary);
   EXPECT_EQ(j["end_of_analysis"]["clipped"], true);
   fs::remove_all(dir);
+}
+
+constexpr const char* kWallsAtTheBase = R"(
+building:
+  name: main
+  base: {mass: 340 t}
+  floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
+  isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
+  walls: {gap: 5 cm, law: kelvin_voigt, k: 2500 kN/mm, e: 0.7, mass: 500 t}
+ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8 s}}
+analysis: {stepping: fixed, dt: 1 ms}
+)";
+
+// With moat walls at the base the base shear is what reaches the foundation: isolator +
+// damping + wall forces, which by the structure's equilibrium is -sum of m a_abs over all its
+// levels (computed here from the histories) at every row. Before, the wall force was left out
+// and storey 1 carried several times the printed base shear.
+TEST(OutputBaseShear, IncludesTheWallForcesAtTheBase) {
+  const JobResult job = run_job(load(kWallsAtTheBase));
+  const History& h = job.analysis.history;
+  const std::size_t cols = h.columns.size();
+  const int base_shear = column(h, "main base_shear [N]");
+  const char* levels[] = {"main/base", "main/floor 1", "main/floor 2", "main/floor 3"};
+  const double masses[] = {340e3, 340e3, 340e3, 250e3};
+  double peak_wall = 0.0;
+  for (const auto& element : job.model.elements)
+    if (element->label().find("/wall") != std::string::npos) {
+      const std::size_t e = static_cast<std::size_t>(&element - &job.model.elements[0]);
+      peak_wall = std::max(peak_wall, job.analysis.element_outputs[e][0].value);
+    }
+  ASSERT_GT(peak_wall, 1e6);  // it pounds, hard
+  const double peak = job.analysis.base_shear[0].value;
+  ASSERT_GT(peak, peak_wall);
+  for (std::size_t r = 0; r < h.rows(); ++r) {
+    const double* row = &h.values[r * cols];
+    double inertia = 0.0;
+    for (int l = 0; l < 4; ++l)
+      inertia += masses[l] * row[column(h, std::string(levels[l]) + " a_abs [m/s2]")];
+    ASSERT_NEAR(row[base_shear], -inertia, 1e-6 * peak) << "row " << r;
+  }
+  EXPECT_GE(peak, job.analysis.story_shear[0].value);  // the base carries storey 1 and more
+}
+
+// A neighbour's base slab pounding ours at the base level is in both buildings' base shear.
+TEST(OutputBaseShear, IncludesANeighbourBaseSlabContact) {
+  const ModelConfig m = load(R"(
+building:
+  name: main
+  base: {mass: 340 t}
+  floors: {count: 2, mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}
+  isolator: {model: linear, Tb: 2 s}
+neighbours:
+  - side: right
+    gap: 2 cm
+    building:
+      name: other
+      base: {mass: 340 t}
+      floors: {count: 2, mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}
+      isolator: {model: linear, Tb: 3 s}
+    impact: {law: linear, k: 2500 kN/mm}
+ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8 s}}
+analysis: {stepping: fixed, dt: 1 ms}
+)");
+  const JobResult job = run_job(m);
+  const History& h = job.analysis.history;
+  const std::size_t cols = h.columns.size();
+  for (const char* name : {"main", "other"}) {
+    const int base_shear = column(h, std::string(name) + " base_shear [N]");
+    const double peak = job.analysis.base_shear[name == std::string("main") ? 0 : 1].value;
+    ASSERT_GT(peak, 0.0);
+    double worst = 0.0;
+    for (std::size_t r = 0; r < h.rows(); ++r) {
+      const double* row = &h.values[r * cols];
+      double inertia = 0.0;
+      for (const char* level : {"/base", "/floor 1", "/floor 2"})
+        inertia += 340e3 * row[column(h, std::string(name) + level + " a_abs [m/s2]")];
+      worst = std::max(worst, std::abs(row[base_shear] + inertia));
+    }
+    EXPECT_LT(worst, 1e-6 * peak) << name;
+  }
+}
+
+// Without walls or neighbours, --compare-unobstructed says there is nothing to compare (it
+// printed x1.00 everywhere), in the console and in summary.json.
+TEST(Unobstructed, NothingToCompareIsSaid) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("isopound-nothing-" + std::to_string(::getpid()));
+  const std::string model = (test::source_dir() / "configs" / "tutorial.yaml").string();
+  const test::CommandResult c = test::run_isopound(
+      "run '" + model + "' --no-histories --compare-unobstructed -o '" + dir.string() + "'");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_NE(c.output.find("nothing to compare"), std::string::npos) << c.output;
+  EXPECT_EQ(c.output.find("(x1.00)"), std::string::npos) << c.output;
+  std::ifstream summary(dir / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(summary);
+  EXPECT_NE(j["unobstructed"]["note"].get<std::string>().find("nothing to compare"),
+            std::string::npos);
+  EXPECT_FALSE(j["unobstructed"].contains("levels"));
+  fs::remove_all(dir);
+}
+
+// 2D neighbours get amplifications too: every level and storey of the neighbour, each the ratio
+// of its peak with and without pounding (looked up here by label in the two runs).
+TEST(Unobstructed, NeighboursGetAmplifications) {
+  const ModelConfig m = load(R"(
+building:
+  name: main
+  base: {mass: 340 t}
+  floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
+  isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
+neighbours:
+  - side: right
+    gap: 5 cm
+    building:
+      name: other
+      isolated: false
+      floors: {count: 4, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
+    impact: {law: kelvin_voigt, k: 2500 kN/mm, e: 0.7}
+ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8 s}}
+output: {histories: false}
+)");
+  const JobResult job = run_job(m);
+  const UnobstructedResult free = run_unobstructed(m, job);
+  const nlohmann::json u = summary_json(m, job, &free)["unobstructed"];
+  ASSERT_EQ(u["buildings"].size(), 2u);
+  EXPECT_EQ(u["buildings"][0]["levels"], u["levels"]);  // the old keys: the main building
+  const nlohmann::json& other = u["buildings"][1];
+  EXPECT_EQ(other["name"], "other");
+  ASSERT_EQ(other["levels"].size(), 4u);
+  ASSERT_EQ(other["stories"].size(), 4u);
+  const auto dof = [](const Model& model, const std::string& label) {
+    for (int i = 0; i < model.size(); ++i)
+      if (model.dofs[i].label == label) return i;
+    return -1;
+  };
+  bool amplified = false;
+  for (const auto& level : other["levels"]) {
+    const std::string label = level["label"];
+    const int with = dof(job.model, label), without = dof(free.job.model, label);
+    ASSERT_GE(with, 0);
+    ASSERT_GE(without, 0);
+    const double ratio = job.analysis.displacement[with].value /
+                         free.job.analysis.displacement[without].value;
+    EXPECT_DOUBLE_EQ(level["displacement_amplification"].get<double>(), ratio) << label;
+    amplified = amplified || std::abs(ratio - 1.0) > 0.01;
+  }
+  EXPECT_TRUE(amplified);  // pounding changes the neighbour's response
+  std::ostringstream console;
+  print_unobstructed(console, m, job, free);
+  EXPECT_NE(console.str().find("other/floor 4"), std::string::npos) << console.str();
+  EXPECT_NE(console.str().find("other/story 4"), std::string::npos) << console.str();
+}
+
+// Computed defaults are printed with the value they gave, never as 0.
+TEST(ComputedDefaults, CarriedMassAndRigidWallAndIntervalsHaveTheirValues) {
+  ModelConfig m = load(R"(
+building:
+  name: main
+  base: {mass: 340 t}
+  floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
+  isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
+  walls: {gap: 20 cm, law: kelvin_voigt, k: 2500 kN/mm, e: 0.7, mass: 500 t}
+ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 4 s}}
+output: {histories: false}
+)");
+  const JobResult job = run_job(m);
+  std::ostringstream console;
+  print_summary(console, m, job);
+  const std::string text = console.str();
+  EXPECT_NE(text.find("building.isolator.carried_mass = 1.27e+06 kg (computed"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("stiffness = rigid"), std::string::npos) << text;
+  EXPECT_NE(text.find("output.interval = 0.005 s (computed"), std::string::npos) << text;
+  EXPECT_EQ(text.find(" = 0 kg"), std::string::npos) << text;
+  EXPECT_EQ(text.find(" = 0 N/m"), std::string::npos) << text;
+  const nlohmann::json settings = summary_json(m, job)["settings"]["defaults_used"];
+  EXPECT_NE(settings["building.isolator.carried_mass"].get<std::string>().find("1.27e+06 kg"),
+            std::string::npos);
+}
+
+// 3D: the bearings' share of the mass and the polar moments from the plan (eq. 5.9), computed
+// here for the thesis building's square 16.5 m plan: J = m (a^2 + a^2) / 12.
+TEST(ComputedDefaults, BearingShareAndPolarMomentIn3D) {
+  const std::string model = (test::source_dir() / "configs" / "3d-thesis-building.yaml").string();
+  const test::CommandResult c = test::run_isopound("check '" + model + "'");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_EQ(c.output.find(" = 0 kg"), std::string::npos) << c.output;
+  EXPECT_EQ(c.output.find("polar_moment = 0"), std::string::npos) << c.output;
+  char share[64], base_j[64];
+  std::snprintf(share, sizeof share, "%.6g kg", (340e3 * 3 + 250e3) / 16);
+  std::snprintf(base_j, sizeof base_j, "%.6g kg m2", 340e3 * 2 * 16.5 * 16.5 / 12);
+  EXPECT_NE(c.output.find(share), std::string::npos) << share << "\n" << c.output;
+  EXPECT_NE(c.output.find(base_j), std::string::npos) << base_j << "\n" << c.output;
 }
 
 }  // namespace

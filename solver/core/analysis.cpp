@@ -188,7 +188,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   CompressedRows mass_rows;  // M, for M a_abs
   mass_rows.assign(model.mass);
   Eigen::VectorXd inertia(n);         // M a_abs
-  Eigen::VectorXd isolator_force(n);  // the isolator elements' internal forces
+  Eigen::VectorXd base_force(n);  // the isolator's and the base-level contacts' forces
   std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size());
   for (int e = 0; e < n_elements; ++e)
     res.element_outputs[e].resize(model.elements[e]->output_count());
@@ -316,16 +316,20 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       story_shear_now[s] = shear;
       update_peak(res.story_shear[s], shear, t);
     }
-    // Base shear: the force of the isolation layer, isolator + isolation damping. The
-    // superstructure's damping is internal to the levels and cancels in the sum.
+    // Base shear: every force that reaches the foundation from the structure, isolator +
+    // isolation damping + the contacts at the base level (walls, a neighbour's base slab). The
+    // superstructure's damping is internal to the levels and cancels in the sum; a base
+    // contact's force on another structure is not on these levels.
     const Eigen::VectorXd& damping_force = stepper.c_v();  // C v
     for (std::size_t s = 0; s < above_base.size(); ++s) {
       if (above_base[s].empty()) continue;
-      isolator_force.setZero();
+      base_force.setZero();
       const int iso = model.structures[s].isolator_element;
-      if (iso >= 0) model.elements[iso]->add_force(isolator_force);
+      if (iso >= 0) model.elements[iso]->add_force(base_force);
+      for (const int e : model.structures[s].base_contact_elements)
+        model.elements[e]->add_force(base_force);
       double shear = 0.0;
-      for (const int d : above_base[s]) shear += isolator_force[d] + damping_force[d];
+      for (const int d : above_base[s]) shear += base_force[d] + damping_force[d];
       base_shear_now[s] = shear;
       update_peak(res.base_shear[s], shear, t);
     }

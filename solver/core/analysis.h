@@ -106,9 +106,10 @@ struct AnalysisResult {
   // Storey shear, N: the force the storey transmits, V = -sum over the levels above it of
   // (M a_abs); positive when it pushes the part above in +x.
   std::vector<Peak> story_shear;  // per story
-  // Base shear of each structure with an isolated base, N: the isolation layer's force on the
-  // structure's levels, isolator + isolation damping force, positive when it resists a +x
-  // displacement (pulls in -x); without contacts it equals -sum over the levels of M a_abs.
+  // Base shear of each structure with an isolated base, N: every force reaching the foundation
+  // from the structure, isolator + isolation damping + the contacts at the base level
+  // (StructureInfo::base_contact_elements), positive when it resists a +x displacement (pulls
+  // in -x); without contacts above the base level it equals -sum over the levels of M a_abs.
   // Per structure (0 if fixed base).
   std::vector<Peak> base_shear;
   std::vector<double> final_displacement;          // per DOF at the end of the analysis, m

@@ -41,6 +41,10 @@ struct StructureInfo {
   bool has_base = false;              // level_dofs[0] is an isolated base slab
   std::vector<double> story_heights;  // story s links level s-1 (or ground) and level s
   int isolator_element = -1;          // index into Model::elements, or -1
+  // Elements that push the base level from outside the structure (a moat wall, a neighbour's
+  // base slab): their force on level_dofs[0] reaches the foundation and is part of the base
+  // shear, with the isolator's.
+  std::vector<int> base_contact_elements;
 };
 
 // A derived response in plan, for outputs only: two components, each a linear combination of DOF
