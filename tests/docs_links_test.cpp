@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 std::vector<std::string> link_problems(const std::string& text, const fs::path& page,
                                        const fs::path& root) {
   std::vector<std::string> problems;
-  const std::regex link(R"(\]\(([^)\s]+)(?:\s+"[^"]*")?\)|<img[^>]*\ssrc="([^"]+)")");
+  const std::regex link(R"re(\]\(([^)\s]+)(?:\s+"[^"]*")?\)|<img[^>]*\ssrc="([^"]+)")re");
   const fs::path base = root / page.parent_path();
   const std::string root_text = fs::weakly_canonical(root).string() + "/";
   std::istringstream lines(text);
@@ -82,14 +82,14 @@ TEST(DocsLinks, EveryLinkOfTheReadmeAndDocsStaysInTheRepositoryAndExists) {
 // The checker itself finds each kind of bad link (so the test above can fail).
 TEST(DocsLinks, CheckerFindsOutsideMissingAndSharedReferences) {
   const fs::path root = test::source_dir();
-  const std::string page = R"(See [theory](../shared/docs/THEORY.md) and [x](docs/missing.md).
+  const std::string page = R"md(See [theory](../shared/docs/THEORY.md) and [x](docs/missing.md).
 ![figure](docs/pre/plan.png) [web](https://example.org) [here](#conventions)
 <img src="../../etc/passwd">
 ```
 [not a link in code](nowhere.md)
 ```
 [readme](README.md#outputs)
-)";
+)md";
   const std::vector<std::string> problems = link_problems(page, "README.md", root);
   ASSERT_EQ(problems.size(), 4u);
   EXPECT_NE(problems[0].find("shared/docs"), std::string::npos) << problems[0];

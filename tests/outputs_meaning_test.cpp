@@ -278,7 +278,11 @@ analysis: {stepping: fixed, dt: 1 ms}
 TEST(Unobstructed, NothingToCompareIsSaid) {
   const fs::path dir =
       fs::temp_directory_path() / ("isopound-nothing-" + std::to_string(::getpid()));
-  const std::string model = (test::source_dir() / "configs" / "tutorial.yaml").string();
+  fs::create_directories(dir);
+  const std::string model = (dir / "free.yaml").string();
+  std::ofstream(model) << "building:\n  base: {mass: 340 t}\n"
+                          "  floors: {count: 2, mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}\n"
+                          "ground_motion: {pulse: {dt: 0.01 s, duration: 4 s}}\n";
   const test::CommandResult c = test::run_isopound(
       "run '" + model + "' --no-histories --compare-unobstructed -o '" + dir.string() + "'");
   ASSERT_EQ(c.exit_code, 0) << c.output;
@@ -385,6 +389,46 @@ TEST(ComputedDefaults, BearingShareAndPolarMomentIn3D) {
   std::snprintf(base_j, sizeof base_j, "%.6g kg m2", 340e3 * 2 * 16.5 * 16.5 / 12);
   EXPECT_NE(c.output.find(share), std::string::npos) << share << "\n" << c.output;
   EXPECT_NE(c.output.find(base_j), std::string::npos) << base_j << "\n" << c.output;
+}
+
+// 3D: the base shear has x, y and a resultant. Without damping (so that nothing but the
+// bearings reaches the ground) its x and y components equal the sums of the bearings' own
+// forces, read here from their history columns, at every row.
+TEST(OutputBaseShear, ThreeDimensionalHasXYAndResultant) {
+  YAML::Node root = YAML::LoadFile((test::source_dir() / "configs" / "tutorial-3d.yaml").string());
+  root["structures"][0]["damping"] = YAML::Load("{type: none}");
+  root["ground_motion"]["L"]["pulse"]["duration"] = "6 s";
+  root["ground_motion"]["T"]["pulse"]["duration"] = "6 s";
+  const ModelConfig m = load_model(root, "tutorial-3d.yaml", "");
+  const JobResult job = run_job(m);
+  const History& h = job.analysis.history;
+  const std::size_t cols = h.columns.size();
+  const int x = column(h, "building base_shear [N]");
+  const int y = column(h, "building base_shear_y [N]");
+  std::vector<int> fx, fy;
+  for (std::size_t c = 0; c < cols; ++c) {
+    const std::string& name = h.columns[c];
+    if (name.find(" force_x [N]") != std::string::npos) fx.push_back(static_cast<int>(c));
+    if (name.find(" force_y [N]") != std::string::npos) fy.push_back(static_cast<int>(c));
+  }
+  ASSERT_EQ(fx.size(), 16u);
+  ASSERT_EQ(fy.size(), 16u);
+  const double peak = job.analysis.base_shear_resultant[0].value;
+  ASSERT_GT(job.analysis.base_shear[0].value, 0.1 * peak);
+  ASSERT_GT(job.analysis.base_shear_y[0].value, 0.1 * peak);  // 30 degrees: both directions
+  double peak_resultant = 0.0;
+  for (std::size_t r = 0; r < h.rows(); ++r) {
+    const double* row = &h.values[r * cols];
+    double sx = 0.0, sy = 0.0;
+    for (const int c : fx) sx += row[c];
+    for (const int c : fy) sy += row[c];
+    ASSERT_NEAR(row[x], sx, 1e-6 * peak) << "row " << r;
+    ASSERT_NEAR(row[y], sy, 1e-6 * peak) << "row " << r;
+    peak_resultant = std::max(peak_resultant, std::hypot(row[x], row[y]));
+  }
+  EXPECT_LE(peak_resultant, peak * (1 + 1e-12));  // rows sample the steps' peak
+  const nlohmann::json b = summary_json(m, job)["buildings_3d"][0]["base_shear"];
+  EXPECT_DOUBLE_EQ(b["resultant"]["value"].get<double>(), peak);
 }
 
 }  // namespace

@@ -174,6 +174,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   res.tracked.resize(options.tracked.size());
   res.story_shear.resize(res.stories.size());
   res.base_shear.resize(model.structures.size());
+  res.base_shear_y.resize(model.structures.size());
+  res.base_shear_resultant.resize(model.structures.size());
   // Levels above each story (same order as stories_of) and the levels of each isolated
   // structure: the shears are sums of M a_abs over them.
   std::vector<std::vector<int>> above_story, above_base(model.structures.size());
@@ -189,7 +191,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   mass_rows.assign(model.mass);
   Eigen::VectorXd inertia(n);         // M a_abs
   Eigen::VectorXd base_force(n);  // the isolator's and the base-level contacts' forces
-  std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size());
+  std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size()),
+      base_shear_y_now(above_base.size());
   for (int e = 0; e < n_elements; ++e)
     res.element_outputs[e].resize(model.elements[e]->output_count());
 
@@ -254,8 +257,12 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     for (const auto& e : model.elements)
       for (int k = 0; k < e->output_count(); ++k)
         c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");
-    for (std::size_t s = 0; s < model.structures.size(); ++s)
-      if (model.structures[s].has_base) c.push_back(model.structures[s].name + " base_shear [N]");
+    for (std::size_t s = 0; s < model.structures.size(); ++s) {
+      if (!model.structures[s].has_base) continue;
+      c.push_back(model.structures[s].name + " base_shear [N]");
+      if (!model.structures[s].level_dofs_y.empty())
+        c.push_back(model.structures[s].name + " base_shear_y [N]");
+    }
     for (const Story& st : res.stories) c.push_back(st.label + " shear [N]");
     row.resize(c.size());
     previous_row.resize(c.size());
@@ -323,6 +330,21 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     const Eigen::VectorXd& damping_force = stepper.c_v();  // C v
     for (std::size_t s = 0; s < above_base.size(); ++s) {
       if (above_base[s].empty()) continue;
+      const StructureInfo& info = model.structures[s];
+      if (!info.level_dofs_y.empty()) {
+        // In plan: the equilibrium of the whole structure (its bearings may be springs in K).
+        base_force.setZero();
+        for (const int e : info.upper_contact_elements) model.elements[e]->add_force(base_force);
+        double x = 0.0, y = 0.0;
+        for (const int d : info.level_dofs) x -= inertia[d] + base_force[d];
+        for (const int d : info.level_dofs_y) y -= inertia[d] + base_force[d];
+        base_shear_now[s] = x;
+        base_shear_y_now[s] = y;
+        update_peak(res.base_shear[s], x, t);
+        update_peak(res.base_shear_y[s], y, t);
+        update_peak(res.base_shear_resultant[s], std::hypot(x, y), t);
+        continue;
+      }
       base_force.setZero();
       const int iso = model.structures[s].isolator_element;
       if (iso >= 0) model.elements[iso]->add_force(base_force);
@@ -382,8 +404,11 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       for (int i = 0; i < n; ++i) *r++ = v[i];
       for (int i = 0; i < n; ++i) *r++ = a[i] + rigid(i, ag);
       r = std::copy(output_scratch.begin(), output_scratch.end(), r);
-      for (std::size_t s = 0; s < above_base.size(); ++s)
-        if (!above_base[s].empty()) *r++ = base_shear_now[s];
+      for (std::size_t s = 0; s < above_base.size(); ++s) {
+        if (above_base[s].empty()) continue;
+        *r++ = base_shear_now[s];
+        if (!model.structures[s].level_dofs_y.empty()) *r++ = base_shear_y_now[s];
+      }
       std::copy(story_shear_now.begin(), story_shear_now.end(), r);
       // Every grid time up to this step's end: the step's own state on the grid, else sampled
       // inside the step (t_k > previous_t: earlier grid times were written by earlier steps).

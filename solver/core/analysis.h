@@ -110,8 +110,12 @@ struct AnalysisResult {
   // from the structure, isolator + isolation damping + the contacts at the base level
   // (StructureInfo::base_contact_elements), positive when it resists a +x displacement (pulls
   // in -x); without contacts above the base level it equals -sum over the levels of M a_abs.
-  // Per structure (0 if fixed base).
+  // Per structure (0 if fixed base). A structure in plan (StructureInfo::level_dofs_y): the
+  // x component, -sum over its levels of (M a_abs)_x minus its contacts above the base; its y
+  // component and the resultant sqrt(x^2 + y^2) at each instant in the next two (0 in 2D).
   std::vector<Peak> base_shear;
+  std::vector<Peak> base_shear_y;
+  std::vector<Peak> base_shear_resultant;
   std::vector<double> final_displacement;          // per DOF at the end of the analysis, m
   std::vector<std::vector<Peak>> element_outputs;  // per element, per output
   std::vector<Peak> tracked;                       // per RunOptions::tracked

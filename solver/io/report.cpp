@@ -248,8 +248,14 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
       // What is left on the isolators when the shaking (and extra_time) is over.
       js["residual_isolator_displacement_m"] = r.final_displacement[s.level_dofs[0]];
-      js["base_shear"] = peak_json(r.base_shear[si], "N");
+      js["base_shear"] = peak_json(r.base_shear[si], "N");  // x in plan (3D)
       js["base_shear_coefficient"] = weight > 0 ? r.base_shear[si].value / weight : 0.0;
+      if (!s.level_dofs_y.empty()) {
+        js["base_shear_y"] = peak_json(r.base_shear_y[si], "N");
+        js["base_shear_resultant"] = peak_json(r.base_shear_resultant[si], "N");
+        js["base_shear_resultant_coefficient"] =
+            weight > 0 ? r.base_shear_resultant[si].value / weight : 0.0;
+      }
     }
     json stories = json::array();
     const std::size_t count = s.story_heights.size();

@@ -227,8 +227,10 @@ void add_building3d(Model& model, const Building3DConfig& b) {
     d.structure = structure;
     model.dofs.push_back(d);
   }
-  for (std::size_t l = 0; l < a.levels_W.size(); ++l)
+  for (std::size_t l = 0; l < a.levels_W.size(); ++l) {
     info.level_dofs.push_back(offset + 3 * static_cast<int>(l));
+    info.level_dofs_y.push_back(offset + 3 * static_cast<int>(l) + 1);
+  }
   // story_heights stay empty: storey drifts of a 3D building are the column probes below.
 
   // Damping.
