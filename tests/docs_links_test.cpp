@@ -72,8 +72,7 @@ TEST(DocsLinks, EveryLinkOfTheReadmeAndDocsStaysInTheRepositoryAndExists) {
     buffer << in.rdbuf();
     const std::string text = buffer.str();
     links += static_cast<int>(std::count(text.begin(), text.end(), ']'));
-    for (const std::string& problem : link_problems(text, page, root))
-      ADD_FAILURE() << problem;
+    for (const std::string& problem : link_problems(text, page, root)) ADD_FAILURE() << problem;
   }
   EXPECT_TRUE(theory) << "docs/theory.md, the user manual, is missing";
   EXPECT_GT(links, 20);

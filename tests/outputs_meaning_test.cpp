@@ -45,7 +45,8 @@ building:
   floors: {count: 2, mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}
   isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
 ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 6 s}}
-analysis: {stepping: fixed, dt: )" + dt + R"(}
+analysis: {stepping: fixed, dt: )" +
+                       dt + R"(}
 )");
   m.output.interval = interval;
   return m;
@@ -175,8 +176,7 @@ TEST(AnalysisEnd, EarlyStopAndClippedEndAreInSummaryJson) {
 
 // The same through the command line: --until before and past the end of the record.
 TEST(AnalysisEnd, UntilIsStatedOnTheConsole) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("isopound-end-" + std::to_string(::getpid()));
+  const fs::path dir = fs::temp_directory_path() / ("isopound-end-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string model = (test::source_dir() / "configs" / "tutorial.yaml").string();
   test::CommandResult c = test::run_isopound("run '" + model + "' --no-histories --until 1.5 -o '" +
@@ -336,8 +336,8 @@ output: {histories: false}
     const int with = dof(job.model, label), without = dof(free.job.model, label);
     ASSERT_GE(with, 0);
     ASSERT_GE(without, 0);
-    const double ratio = job.analysis.displacement[with].value /
-                         free.job.analysis.displacement[without].value;
+    const double ratio =
+        job.analysis.displacement[with].value / free.job.analysis.displacement[without].value;
     EXPECT_DOUBLE_EQ(level["displacement_amplification"].get<double>(), ratio) << label;
     amplified = amplified || std::abs(ratio - 1.0) > 0.01;
   }
@@ -364,8 +364,7 @@ output: {histories: false}
   std::ostringstream console;
   print_summary(console, m, job);
   const std::string text = console.str();
-  EXPECT_NE(text.find("building.isolator.carried_mass = 1.27e+06 kg (computed"),
-            std::string::npos)
+  EXPECT_NE(text.find("building.isolator.carried_mass = 1.27e+06 kg (computed"), std::string::npos)
       << text;
   EXPECT_NE(text.find("stiffness = rigid"), std::string::npos) << text;
   EXPECT_NE(text.find("output.interval = 0.005 s (computed"), std::string::npos) << text;

@@ -189,7 +189,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   }
   CompressedRows mass_rows;  // M, for M a_abs
   mass_rows.assign(model.mass);
-  Eigen::VectorXd inertia(n);         // M a_abs
+  Eigen::VectorXd inertia(n);     // M a_abs
   Eigen::VectorXd base_force(n);  // the isolator's and the base-level contacts' forces
   std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size()),
       base_shear_y_now(above_base.size());
@@ -211,7 +211,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   const double H = motion.dt / per_sample;
   double total = motion.duration() + options.extra_time;
   res.stats.record_end = total;
-  res.stats.requested_end = cfg.t_end;
+  res.stats.t_end = cfg.t_end;
   if (cfg.t_end > 0) total = std::min(total, cfg.t_end);
   const long intervals = static_cast<long>(std::ceil(total / H - 1e-9));
   const int max_level = cfg.max_halvings;

@@ -57,7 +57,7 @@ struct RunStatistics {
   double wall_seconds = 0.0;
   double duration = 0.0;     // s of analysed time
   double record_end = 0.0;   // s, the record's duration + extra_time (the natural end)
-  double requested_end = 0.0;  // s, AnalysisConfig::t_end as asked (0: none); may pass record_end
+  double t_end = 0.0;        // s, AnalysisConfig::t_end as asked (0: none); may pass record_end
   double interval = 0.0;     // s, the analysis interval H (the record interval / an integer)
   double step_period = 0.0;  // s, T_min of the largest-step rule (0: not used or a mechanism)
 };

@@ -47,27 +47,27 @@ std::string computed(const ModelConfig& config, const std::string& key, double r
                      const RunStatistics* stats) {
   const bool three_d = !config.structures3d.empty();
   const int b3 = index_after(key, "structures");
-  const Building3DConfig* b = three_d && b3 >= 0 &&
-                                      b3 < static_cast<int>(config.structures3d.size())
-                                  ? &config.structures3d[static_cast<std::size_t>(b3)]
-                                  : nullptr;
-  if (key == "output.interval")
-    return number(record_dt, "s") + " (computed: every record sample)";
+  const Building3DConfig* b =
+      three_d && b3 >= 0 && b3 < static_cast<int>(config.structures3d.size())
+          ? &config.structures3d[static_cast<std::size_t>(b3)]
+          : nullptr;
+  if (key == "output.interval") return number(record_dt, "s") + " (computed: every record sample)";
   if (key == "analysis.dt") {
     if (config.analysis.stepping == AnalysisConfig::Stepping::kFixed) return "";
-    if (!stats) return "0 (the largest step from T_min / steps_per_period, set when the run starts)";
+    if (!stats)
+      return "0 (the largest step from T_min / steps_per_period, set when the run starts)";
     if (stats->step_period > 0)
-      return number(stats->interval, "s") + " (computed: the record interval divided to be <= T_min " +
+      return number(stats->interval, "s") +
+             " (computed: the record interval divided to be <= T_min " +
              number(stats->step_period, "s") + " / " +
              number(config.analysis.steps_per_period, "steps per period)");
     return number(stats->interval, "s") + " (computed: the record interval)";
   }
   if (!three_d && ends_with(key, "isolator.carried_mass")) {
     const int n = index_after(key, "neighbours");
-    const BuildingConfig& building =
-        n >= 0 && n < static_cast<int>(config.neighbours.size())
-            ? config.neighbours[static_cast<std::size_t>(n)].building
-            : config.building;
+    const BuildingConfig& building = n >= 0 && n < static_cast<int>(config.neighbours.size())
+                                         ? config.neighbours[static_cast<std::size_t>(n)].building
+                                         : config.building;
     return number(building_mass(building), "kg") +
            " (computed: the whole building incl. the base slab)";
   }

@@ -81,18 +81,18 @@ std::optional<double> friction_energy(const Model& model) {
 // Why the analysis ended where it did, when that is not the record's end (plus extra_time):
 // t_end (analysis.t_end or --until) before it, or a t_end past it, clipped to it. "" otherwise.
 std::string analysis_end_note(const RunStatistics& st) {
-  if (st.requested_end <= 0) return "";
+  if (st.t_end <= 0) return "";
   char line[256];
-  if (st.requested_end < st.record_end * (1 - 1e-12)) {
+  if (st.t_end < st.record_end * (1 - 1e-12)) {
     std::snprintf(line, sizeof line,
                   "stopped early at t_end = %.6g s (analysis.t_end or --until), before the end of "
                   "the record + extra_time at %.6g s",
                   st.duration, st.record_end);
-  } else if (st.requested_end > st.record_end * (1 + 1e-12)) {
+  } else if (st.t_end > st.record_end * (1 + 1e-12)) {
     std::snprintf(line, sizeof line,
                   "t_end = %.6g s (analysis.t_end or --until) is past the end of the record + "
                   "extra_time: clipped to %.6g s",
-                  st.requested_end, st.duration);
+                  st.t_end, st.duration);
   } else {
     return "";
   }
@@ -361,11 +361,11 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
   j["end_of_analysis"] = {
       {"analysed_time_s", st.duration},
       {"record_end_s", st.record_end},
-      {"requested_end_s", st.requested_end > 0 ? json(st.requested_end) : json(nullptr)},
-      {"stopped_by", st.requested_end > 0 && st.requested_end < st.record_end * (1 - 1e-12)
+      {"requested_end_s", st.t_end > 0 ? json(st.t_end) : json(nullptr)},
+      {"stopped_by", st.t_end > 0 && st.t_end < st.record_end * (1 - 1e-12)
                          ? "t_end"
                          : "end of record + extra_time"},
-      {"clipped", st.requested_end > st.record_end * (1 + 1e-12)},
+      {"clipped", st.t_end > st.record_end * (1 + 1e-12)},
       {"note", end_note}};
   return j;
 }
@@ -544,8 +544,7 @@ void print_unobstructed(std::ostream& out, const ModelConfig& config, const JobR
   out << "Without walls and neighbour contacts (amplification = with / without):\n";
   const auto amplification = [](const nlohmann::json& x) { return x.get<double>(); };
   for (const StructureInfo& s : job.model.structures) {
-    const std::optional<nlohmann::json> b =
-        unobstructed_structure_json(job, unobstructed.job, s);
+    const std::optional<nlohmann::json> b = unobstructed_structure_json(job, unobstructed.job, s);
     if (!b) continue;
     for (const auto& l : (*b)["levels"]) {
       std::snprintf(line, sizeof line,

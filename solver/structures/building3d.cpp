@@ -195,8 +195,7 @@ double polar_moment_about_cm(const Diaphragm3DConfig& d, const AreaProperties& a
 
 double polar_moment_about_cm(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
   const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
-  return polar_moment_about_cm(d, area_properties(plan), dot(d.eccentricity, d.eccentricity),
-                               rule);
+  return polar_moment_about_cm(d, area_properties(plan), dot(d.eccentricity, d.eccentricity), rule);
 }
 
 Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
