@@ -376,9 +376,10 @@ output: {histories: false}
 }
 
 // 3D: the bearings' share of the mass and the polar moments from the plan (eq. 5.9), computed
-// here for the thesis building's square 16.5 m plan: J = m (a^2 + a^2) / 12.
+// here for the thesis building's square 16.5 m plan (configs/tutorial-3d.yaml):
+// J = m (a^2 + a^2) / 12.
 TEST(ComputedDefaults, BearingShareAndPolarMomentIn3D) {
-  const std::string model = (test::source_dir() / "configs" / "3d-thesis-building.yaml").string();
+  const std::string model = (test::source_dir() / "configs" / "tutorial-3d.yaml").string();
   const test::CommandResult c = test::run_isopound("check '" + model + "'");
   ASSERT_EQ(c.exit_code, 0) << c.output;
   EXPECT_EQ(c.output.find(" = 0 kg"), std::string::npos) << c.output;
