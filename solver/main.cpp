@@ -14,6 +14,7 @@
 
 #include "geometry/overlap.h"
 #include "solver/core/modes.h"
+#include "solver/io/computed_defaults.h"
 #include "solver/io/model_input.h"
 #include "solver/io/overlap_report.h"
 #include "solver/io/polygon_input.h"
@@ -161,10 +162,10 @@ void print_modes(const ModelConfig& config) {
   }
 }
 
-void print_defaults(const ModelConfig& config) {
+void print_defaults(const ModelConfig& config, double record_dt) {
   if (config.defaults.empty()) return;
   std::printf("Defaults used (keys not in the file):\n");
-  for (const auto& [key, value] : config.defaults)
+  for (const auto& [key, value] : defaults_with_values(config, record_dt, nullptr))
     std::printf("  %s = %s\n", key.c_str(), value.c_str());
 }
 
@@ -261,7 +262,7 @@ int main(int argc, char** argv) {
       if (!quiet) {
         std::printf("%s: ok (%d DOFs, %zu ground-motion samples at %g s)\n", model_path.c_str(),
                     model.size(), motion.acceleration.size(), motion.dt);
-        print_defaults(config);
+        print_defaults(config, motion.dt);
       }
       return kOk;
     }

@@ -18,6 +18,7 @@
 #include "solver/io/model_input.h"
 #include "solver/structures/job.h"
 #include "solver/study/study_outputs.h"
+#include "tests/model_test_support.h"
 #include "tests/test_support.h"
 
 namespace isopound {
@@ -26,14 +27,10 @@ namespace {
 namespace fs = std::filesystem;
 
 ModelConfig load(const std::string& text) {
-  return load_model(YAML::Load(text), "model.yaml", "");
+  return test::load_model_text(text);
 }
-
 int column(const History& h, const std::string& name) {
-  for (std::size_t c = 0; c < h.columns.size(); ++c)
-    if (h.columns[c] == name) return static_cast<int>(c);
-  ADD_FAILURE() << "no column '" << name << "'";
-  return 0;
+  return test::history_column(h, name);
 }
 
 // 100,000 samples at 1 ms (a pulse sampled that finely): every row on k * interval, none lost.

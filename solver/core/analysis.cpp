@@ -99,6 +99,22 @@ std::string divergence_message(const Model& model, const NewmarkStepper& stepper
   return msg.str();
 }
 
+// A history row at time t inside a step from row `start` to row `end` (column 0: time; u of the
+// `dofs` DOFs from column first_u, their v right after). Newmark average acceleration (gamma 1/2,
+// beta 1/4) holds the acceleration at (a0 + a1) / 2 over the step, so v is linear in time and
+// u(t0 + tau) = u0 + tau (v0 + v(tau)) / 2, which is u1 at tau = h; the other columns (ground,
+// accelerations, forces) are interpolated linearly.
+void history_row_between(const std::vector<double>& start, const std::vector<double>& end,
+                         std::size_t first_u, int dofs, double t, std::vector<double>& out) {
+  const double tau = t - start[0];
+  const double s = tau / (end[0] - start[0]);
+  for (std::size_t c = 0; c < end.size(); ++c) out[c] = start[c] + s * (end[c] - start[c]);
+  out[0] = t;
+  const std::size_t first_v = first_u + static_cast<std::size_t>(dofs);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(dofs); ++i)
+    out[first_u + i] = start[first_u + i] + 0.5 * tau * (start[first_v + i] + out[first_v + i]);
+}
+
 }  // namespace
 
 double shortest_period(Model& model) {
@@ -158,6 +174,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   res.tracked.resize(options.tracked.size());
   res.story_shear.resize(res.stories.size());
   res.base_shear.resize(model.structures.size());
+  res.base_shear_y.resize(model.structures.size());
+  res.base_shear_resultant.resize(model.structures.size());
   // Levels above each story (same order as stories_of) and the levels of each isolated
   // structure: the shears are sums of M a_abs over them.
   std::vector<std::vector<int>> above_story, above_base(model.structures.size());
@@ -171,9 +189,10 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   }
   CompressedRows mass_rows;  // M, for M a_abs
   mass_rows.assign(model.mass);
-  Eigen::VectorXd inertia(n);         // M a_abs
-  Eigen::VectorXd isolator_force(n);  // the isolator elements' internal forces
-  std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size());
+  Eigen::VectorXd inertia(n);     // M a_abs
+  Eigen::VectorXd base_force(n);  // the isolator's and the base-level contacts' forces
+  std::vector<double> story_shear_now(above_story.size()), base_shear_now(above_base.size()),
+      base_shear_y_now(above_base.size());
   for (int e = 0; e < n_elements; ++e)
     res.element_outputs[e].resize(model.elements[e]->output_count());
 
@@ -191,6 +210,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     per_sample = std::max(1, static_cast<int>(std::ceil(motion.dt / max_step - 1e-9)));
   const double H = motion.dt / per_sample;
   double total = motion.duration() + options.extra_time;
+  res.stats.record_end = total;
+  res.stats.t_end = cfg.t_end;
   if (cfg.t_end > 0) total = std::min(total, cfg.t_end);
   const long intervals = static_cast<long>(std::ceil(total / H - 1e-9));
   const int max_level = cfg.max_halvings;
@@ -212,14 +233,17 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     force_scale[i] =
         cfg.tolerance * kGravity * std::max(model.mass(i, i), 1e-12) / model.dofs[i].length;
 
-  // History layout. Row k is at exactly k * out_interval (never an accumulated sum): the first
-  // accepted step ending within a millionth of a step of that time writes it.
+  // History layout. Row k is at exactly k * out_interval (never an accumulated sum). A step
+  // ending within a millionth of a step of k * out_interval writes its own state there; a grid
+  // time inside a step (an interval that is not a multiple of the step) is sampled from the
+  // step's Newmark solution (history_row_between).
   const double out_interval = options.output.interval > 0 ? options.output.interval : motion.dt;
   MemoryHistory memory_history(res.history);
   HistorySink* const sink = options.output.histories
                                 ? (options.history_sink ? options.history_sink : &memory_history)
                                 : nullptr;
-  std::vector<double> row;
+  std::vector<double> row, previous_row, sampled_row;  // this step's, the last step's, a grid row
+  const std::size_t first_u_column = two_components ? 3 : 2;
   if (sink) {
     std::vector<std::string> c = {"time [s]", "ground_acceleration [m/s2]"};
     if (two_components) c.push_back("ground_acceleration_y [m/s2]");
@@ -233,10 +257,16 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     for (const auto& e : model.elements)
       for (int k = 0; k < e->output_count(); ++k)
         c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");
-    for (std::size_t s = 0; s < model.structures.size(); ++s)
-      if (model.structures[s].has_base) c.push_back(model.structures[s].name + " base_shear [N]");
+    for (std::size_t s = 0; s < model.structures.size(); ++s) {
+      if (!model.structures[s].has_base) continue;
+      c.push_back(model.structures[s].name + " base_shear [N]");
+      if (!model.structures[s].level_dofs_y.empty())
+        c.push_back(model.structures[s].name + " base_shear_y [N]");
+    }
     for (const Story& st : res.stories) c.push_back(st.label + " shear [N]");
     row.resize(c.size());
+    previous_row.resize(c.size());
+    sampled_row.resize(c.size());
     sink->begin(c);
   }
   long next_row = 0;  // index of the next output time, next_row * out_interval
@@ -293,16 +323,35 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       story_shear_now[s] = shear;
       update_peak(res.story_shear[s], shear, t);
     }
-    // Base shear: the force of the isolation layer, isolator + isolation damping. The
-    // superstructure's damping is internal to the levels and cancels in the sum.
+    // Base shear: every force that reaches the foundation from the structure, isolator +
+    // isolation damping + the contacts at the base level (walls, a neighbour's base slab). The
+    // superstructure's damping is internal to the levels and cancels in the sum; a base
+    // contact's force on another structure is not on these levels.
     const Eigen::VectorXd& damping_force = stepper.c_v();  // C v
     for (std::size_t s = 0; s < above_base.size(); ++s) {
       if (above_base[s].empty()) continue;
-      isolator_force.setZero();
+      const StructureInfo& info = model.structures[s];
+      if (!info.level_dofs_y.empty()) {
+        // In plan: the equilibrium of the whole structure (its bearings may be springs in K).
+        base_force.setZero();
+        for (const int e : info.upper_contact_elements) model.elements[e]->add_force(base_force);
+        double x = 0.0, y = 0.0;
+        for (const int d : info.level_dofs) x -= inertia[d] + base_force[d];
+        for (const int d : info.level_dofs_y) y -= inertia[d] + base_force[d];
+        base_shear_now[s] = x;
+        base_shear_y_now[s] = y;
+        update_peak(res.base_shear[s], x, t);
+        update_peak(res.base_shear_y[s], y, t);
+        update_peak(res.base_shear_resultant[s], std::hypot(x, y), t);
+        continue;
+      }
+      base_force.setZero();
       const int iso = model.structures[s].isolator_element;
-      if (iso >= 0) model.elements[iso]->add_force(isolator_force);
+      if (iso >= 0) model.elements[iso]->add_force(base_force);
+      for (const int e : model.structures[s].base_contact_elements)
+        model.elements[e]->add_force(base_force);
       double shear = 0.0;
-      for (const int d : above_base[s]) shear += isolator_force[d] + damping_force[d];
+      for (const int d : above_base[s]) shear += base_force[d] + damping_force[d];
       base_shear_now[s] = shear;
       update_peak(res.base_shear[s], shear, t);
     }
@@ -346,23 +395,35 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     max_in = std::max(max_in, std::abs(e_in) + initial_energy);
     max_err = std::max(max_err, std::abs(en.error));
 
-    if (sink && t >= static_cast<double>(next_row) * out_interval - grid_tolerance) {
-      // On the grid (steps end on record samples): print the exact grid time k * interval.
-      const double k = std::round(t / out_interval);
-      const bool on_grid = std::abs(t - k * out_interval) <= grid_tolerance;
+    if (sink) {
       double* r = row.data();
-      *r++ = on_grid ? k * out_interval : t;
+      *r++ = t;
       *r++ = ag.x;
       if (two_components) *r++ = ag.y;
       for (int i = 0; i < n; ++i) *r++ = u[i];
       for (int i = 0; i < n; ++i) *r++ = v[i];
       for (int i = 0; i < n; ++i) *r++ = a[i] + rigid(i, ag);
       r = std::copy(output_scratch.begin(), output_scratch.end(), r);
-      for (std::size_t s = 0; s < above_base.size(); ++s)
-        if (!above_base[s].empty()) *r++ = base_shear_now[s];
+      for (std::size_t s = 0; s < above_base.size(); ++s) {
+        if (above_base[s].empty()) continue;
+        *r++ = base_shear_now[s];
+        if (!model.structures[s].level_dofs_y.empty()) *r++ = base_shear_y_now[s];
+      }
       std::copy(story_shear_now.begin(), story_shear_now.end(), r);
-      sink->row(row.data(), row.size());
-      next_row = static_cast<long>(on_grid ? k : std::floor(t / out_interval)) + 1;
+      // Every grid time up to this step's end: the step's own state on the grid, else sampled
+      // inside the step (t_k > previous_t: earlier grid times were written by earlier steps).
+      for (double t_k = static_cast<double>(next_row) * out_interval; t_k <= t + grid_tolerance;
+           t_k = static_cast<double>(++next_row) * out_interval) {
+        if (std::abs(t - t_k) <= grid_tolerance) {
+          row[0] = t_k;
+          sink->row(row.data(), row.size());
+          continue;
+        }
+        history_row_between(previous_row, row, first_u_column, n, t_k, sampled_row);
+        sink->row(sampled_row.data(), sampled_row.size());
+      }
+      row[0] = t;
+      std::swap(row, previous_row);
     }
     if (options.progress && (++progress_tick & 4095) == 0) options.progress(t, total);
   };

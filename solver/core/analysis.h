@@ -56,6 +56,8 @@ struct RunStatistics {
   double min_step = 0.0, max_step = 0.0;  // s
   double wall_seconds = 0.0;
   double duration = 0.0;     // s of analysed time
+  double record_end = 0.0;   // s, the record's duration + extra_time (the natural end)
+  double t_end = 0.0;        // s, AnalysisConfig::t_end as asked (0: none); may pass record_end
   double interval = 0.0;     // s, the analysis interval H (the record interval / an integer)
   double step_period = 0.0;  // s, T_min of the largest-step rule (0: not used or a mechanism)
 };
@@ -104,11 +106,16 @@ struct AnalysisResult {
   // Storey shear, N: the force the storey transmits, V = -sum over the levels above it of
   // (M a_abs); positive when it pushes the part above in +x.
   std::vector<Peak> story_shear;  // per story
-  // Base shear of each structure with an isolated base, N: the isolation layer's force on the
-  // structure's levels, isolator + isolation damping force, positive when it resists a +x
-  // displacement (pulls in -x); without contacts it equals -sum over the levels of M a_abs.
-  // Per structure (0 if fixed base).
+  // Base shear of each structure with an isolated base, N: every force reaching the foundation
+  // from the structure, isolator + isolation damping + the contacts at the base level
+  // (StructureInfo::base_contact_elements), positive when it resists a +x displacement (pulls
+  // in -x); without contacts above the base level it equals -sum over the levels of M a_abs.
+  // Per structure (0 if fixed base). A structure in plan (StructureInfo::level_dofs_y): the
+  // x component, -sum over its levels of (M a_abs)_x minus its contacts above the base; its y
+  // component and the resultant sqrt(x^2 + y^2) at each instant in the next two (0 in 2D).
   std::vector<Peak> base_shear;
+  std::vector<Peak> base_shear_y;
+  std::vector<Peak> base_shear_resultant;
   std::vector<double> final_displacement;          // per DOF at the end of the analysis, m
   std::vector<std::vector<Peak>> element_outputs;  // per element, per output
   std::vector<Peak> tracked;                       // per RunOptions::tracked

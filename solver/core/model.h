@@ -41,6 +41,16 @@ struct StructureInfo {
   bool has_base = false;              // level_dofs[0] is an isolated base slab
   std::vector<double> story_heights;  // story s links level s-1 (or ground) and level s
   int isolator_element = -1;          // index into Model::elements, or -1
+  // Elements that push the base level from outside the structure (a moat wall, a neighbour's
+  // base slab): their force on level_dofs[0] reaches the foundation and is part of the base
+  // shear, with the isolator's.
+  std::vector<int> base_contact_elements;
+  // A structure in plan (3D): the y DOF of each level (level_dofs holds the x DOFs); empty in 2D.
+  // Its base shear is then taken from the equilibrium of the whole structure, -sum over the
+  // levels of (M a_abs) in x and y minus the contacts above the base (upper_contact_elements),
+  // since its bearings may be linear springs inside K.
+  std::vector<int> level_dofs_y;
+  std::vector<int> upper_contact_elements;
 };
 
 // A derived response in plan, for outputs only: two components, each a linear combination of DOF

@@ -12,7 +12,9 @@
 #include <fstream>
 #include <iomanip>
 #include <stdexcept>
+#include <string>
 
+#include "solver/io/computed_defaults.h"
 #include "solver/io/report3d.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
@@ -76,6 +78,79 @@ std::optional<double> friction_energy(const Model& model) {
   return sum;
 }
 
+// Why the analysis ended where it did, when that is not the record's end (plus extra_time):
+// t_end (analysis.t_end or --until) before it, or a t_end past it, clipped to it. "" otherwise.
+std::string analysis_end_note(const RunStatistics& st) {
+  if (st.t_end <= 0) return "";
+  char line[256];
+  if (st.t_end < st.record_end * (1 - 1e-12)) {
+    std::snprintf(line, sizeof line,
+                  "stopped early at t_end = %.6g s (analysis.t_end or --until), before the end of "
+                  "the record + extra_time at %.6g s",
+                  st.duration, st.record_end);
+  } else if (st.t_end > st.record_end * (1 + 1e-12)) {
+    std::snprintf(line, sizeof line,
+                  "t_end = %.6g s (analysis.t_end or --until) is past the end of the record + "
+                  "extra_time: clipped to %.6g s",
+                  st.t_end, st.duration);
+  } else {
+    return "";
+  }
+  return line;
+}
+
+constexpr const char* kNothingToCompare =
+    "nothing to compare: the model has no walls and no contacts with neighbours, so the run "
+    "without them is this run (every amplification would be 1)";
+
+// Whether the model has contact elements (2D walls and neighbours, 3D polygon contacts).
+bool has_contacts(const Model& model) {
+  for (const auto& el : model.elements)
+    if (is_contact(*el) || dynamic_cast<const PolygonContact*>(el.get())) return true;
+  return false;
+}
+
+int dof_by_label(const Model& model, const std::string& label) {
+  for (int i = 0; i < model.size(); ++i)
+    if (model.dofs[i].label == label) return i;
+  return -1;
+}
+
+// The peaks of structure `s` of the pounding run `job` beside those of the same structure in the
+// unobstructed run, and their ratios; nullopt for a structure absent there (a flexible wall).
+std::optional<nlohmann::json> unobstructed_structure_json(const JobResult& job,
+                                                          const JobResult& free_job,
+                                                          const StructureInfo& s) {
+  using nlohmann::json;
+  const AnalysisResult& r = job.analysis;
+  const AnalysisResult& u = free_job.analysis;
+  const Model& model = job.model;
+  if (s.level_dofs.empty() || dof_by_label(free_job.model, model.dofs[s.level_dofs[0]].label) < 0)
+    return std::nullopt;
+  const auto ratio = [](double x, double y) { return y > 0 ? x / y : 0.0; };
+  json levels = json::array();
+  for (const int d : s.level_dofs) {
+    const int f = dof_by_label(free_job.model, model.dofs[d].label);
+    levels.push_back(
+        {{"label", model.dofs[d].label},
+         {"unobstructed_displacement", peak_json(u.displacement[f], "m")},
+         {"unobstructed_absolute_acceleration", peak_json(u.absolute_acceleration[f], "m/s2")},
+         {"displacement_amplification", ratio(r.displacement[d].value, u.displacement[f].value)},
+         {"acceleration_amplification",
+          ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[f].value)}});
+  }
+  json stories = json::array();
+  for (std::size_t k = 0; k < r.stories.size(); ++k) {
+    if (r.stories[k].label.rfind(s.name + "/", 0) != 0) continue;
+    for (std::size_t f = 0; f < u.stories.size(); ++f)
+      if (u.stories[f].label == r.stories[k].label)
+        stories.push_back({{"label", r.stories[k].label},
+                           {"unobstructed_drift", peak_json(u.drift[f], "m")},
+                           {"drift_amplification", ratio(r.drift[k].value, u.drift[f].value)}});
+  }
+  return json{{"name", s.name}, {"levels", levels}, {"stories", stories}};
+}
+
 double structure_weight(const Model& model, const StructureInfo& s) {
   double mass = 0.0;
   for (const int d : s.level_dofs) mass += model.mass(d, d);
@@ -129,7 +204,8 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
 
   const AnalysisConfig& a = config.analysis;
   json defaults = json::object();
-  for (const auto& [key, value] : config.defaults) defaults[key] = value;
+  for (const auto& [key, value] : defaults_with_values(config, job.motion.dt, &r.stats))
+    defaults[key] = value;
   j["settings"] = {
       {"integrator", "Newmark average acceleration (gamma 1/2, beta 1/4), Newton-Raphson"},
       {"stepping", stepping_name(a.stepping)},
@@ -172,8 +248,14 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
       // What is left on the isolators when the shaking (and extra_time) is over.
       js["residual_isolator_displacement_m"] = r.final_displacement[s.level_dofs[0]];
-      js["base_shear"] = peak_json(r.base_shear[si], "N");
+      js["base_shear"] = peak_json(r.base_shear[si], "N");  // x in plan (3D)
       js["base_shear_coefficient"] = weight > 0 ? r.base_shear[si].value / weight : 0.0;
+      if (!s.level_dofs_y.empty()) {
+        js["base_shear_y"] = peak_json(r.base_shear_y[si], "N");
+        js["base_shear_resultant"] = peak_json(r.base_shear_resultant[si], "N");
+        js["base_shear_resultant_coefficient"] =
+            weight > 0 ? r.base_shear_resultant[si].value / weight : 0.0;
+      }
     }
     json stories = json::array();
     const std::size_t count = s.story_heights.size();
@@ -232,30 +314,20 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                   "isolator_hysteretic + impact_dissipated (+ friction_dissipated in 3D "
                   "pounding)"}};
   if (friction) j["energy"]["friction_dissipated_J"] = *friction;
-  if (unobstructed && !config.structures3d.empty()) {
+  if (unobstructed && !has_contacts(model)) {
+    j[config.structures3d.empty() ? "unobstructed" : "unobstructed_3d"] = {
+        {"note", kNothingToCompare}};
+  } else if (unobstructed && !config.structures3d.empty()) {
     j["unobstructed_3d"] = unobstructed3d_json(job, *unobstructed);  // report3d.cpp
   } else if (unobstructed) {
-    // The main building is structure 0 in both runs, with the same DOF and story numbering.
-    const AnalysisResult& u = unobstructed->job.analysis;
-    const StructureInfo& s = model.structures[0];
-    const auto ratio = [](double x, double y) { return y > 0 ? x / y : 0.0; };
-    json levels = json::array();
-    for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
-      const int d = s.level_dofs[k];
-      levels.push_back(
-          {{"label", model.dofs[d].label},
-           {"unobstructed_displacement", peak_json(u.displacement[d], "m")},
-           {"unobstructed_absolute_acceleration", peak_json(u.absolute_acceleration[d], "m/s2")},
-           {"displacement_amplification", ratio(r.displacement[d].value, u.displacement[d].value)},
-           {"acceleration_amplification",
-            ratio(r.absolute_acceleration[d].value, u.absolute_acceleration[d].value)}});
+    // Every building: the main one (structure 0, also under the old keys "levels" and
+    // "stories") and each neighbour; DOFs and stories matched by label (wall structures shift
+    // the numbering of later structures).
+    json buildings = json::array();
+    for (const StructureInfo& s : model.structures) {
+      const std::optional<json> b = unobstructed_structure_json(job, unobstructed->job, s);
+      if (b) buildings.push_back(*b);
     }
-    json stories = json::array();
-    const std::size_t count = s.story_heights.size();
-    for (std::size_t k = 0; k < count; ++k)
-      stories.push_back({{"label", r.stories[k].label},
-                         {"unobstructed_drift", peak_json(u.drift[k], "m")},
-                         {"drift_amplification", ratio(r.drift[k].value, u.drift[k].value)}});
     json gaps = json::array();
     for (const ContactGap& c : unobstructed->gaps)
       gaps.push_back({{"label", c.label},
@@ -266,9 +338,11 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
         {"note",
          "the same analysis without walls and without contacts between neighbours; "
          "amplification = peak with pounding / peak without; critical_gap_m per contact = the "
-         "largest closing of its gap without contact (a smaller gap pounds under this record)"},
-        {"levels", levels},
-        {"stories", stories},
+         "largest closing of its gap without contact (a smaller gap pounds under this record); "
+         "buildings: the main building and every neighbour"},
+        {"levels", buildings.at(0)["levels"]},
+        {"stories", buildings.at(0)["stories"]},
+        {"buildings", buildings},
         {"contacts", gaps}};
   }
 
@@ -281,6 +355,18 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                      {"max_step_s", st.max_step},
                      {"analysed_time_s", st.duration},
                      {"wall_seconds", st.wall_seconds}};
+  // How the analysis ended: at the record's end + extra_time, or at t_end (stated, with the
+  // clipping of a t_end past the record), so that a shortened run never reads as a whole one.
+  const std::string end_note = analysis_end_note(st);
+  j["end_of_analysis"] = {
+      {"analysed_time_s", st.duration},
+      {"record_end_s", st.record_end},
+      {"requested_end_s", st.t_end > 0 ? json(st.t_end) : json(nullptr)},
+      {"stopped_by", st.t_end > 0 && st.t_end < st.record_end * (1 - 1e-12)
+                         ? "t_end"
+                         : "end of record + extra_time"},
+      {"clipped", st.t_end > st.record_end * (1 + 1e-12)},
+      {"note", end_note}};
   return j;
 }
 
@@ -348,7 +434,8 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
   out << line;
   if (!config.defaults.empty()) {
     out << "Defaults used (keys not in the file):\n";
-    for (const auto& [key, value] : config.defaults) out << "  " << key << " = " << value << '\n';
+    for (const auto& [key, value] : defaults_with_values(config, job.motion.dt, &r.stats))
+      out << "  " << key << " = " << value << '\n';
   }
   std::snprintf(
       line, sizeof line,
@@ -357,6 +444,8 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
       r.stats.interval > 0 ? static_cast<int>(std::lround(job.motion.dt / r.stats.interval)) : 0,
       config.output.interval > 0 ? config.output.interval : job.motion.dt);
   out << line;
+  if (const std::string note = analysis_end_note(r.stats); !note.empty())
+    out << "  " << note << '\n';
   if (r.stats.step_period > 0) {
     std::snprintf(line, sizeof line,
                   "  largest step from T_min %.4g s / %g steps per period (%s modes)\n",
@@ -446,30 +535,34 @@ namespace isopound {
 
 void print_unobstructed(std::ostream& out, const ModelConfig& config, const JobResult& job,
                         const UnobstructedResult& unobstructed) {
+  if (!has_contacts(job.model)) {
+    out << "--compare-unobstructed: " << kNothingToCompare << '\n';
+    return;
+  }
   if (!config.structures3d.empty()) return print_unobstructed3d(out, job, unobstructed);
-  const AnalysisResult& r = job.analysis;
-  const AnalysisResult& u = unobstructed.job.analysis;
-  const Model& model = job.model;
-  const StructureInfo& s = model.structures[0];
   char line[256];
   out << "Without walls and neighbour contacts (amplification = with / without):\n";
-  for (const int d : s.level_dofs) {
-    std::snprintf(
-        line, sizeof line,
-        "  %-22s displacement %8.2f cm (x%.2f)   abs. acceleration %6.3f g (x%.2f)\n",
-        model.dofs[d].label.c_str(), 100 * u.displacement[d].value,
-        u.displacement[d].value > 0 ? r.displacement[d].value / u.displacement[d].value : 0.0,
-        u.absolute_acceleration[d].value / kGravity,
-        u.absolute_acceleration[d].value > 0
-            ? r.absolute_acceleration[d].value / u.absolute_acceleration[d].value
-            : 0.0);
-    out << line;
-  }
-  for (std::size_t k = 0; k < s.story_heights.size(); ++k) {
-    std::snprintf(line, sizeof line, "  %-22s drift %8.3f cm (x%.2f)\n", r.stories[k].label.c_str(),
-                  100 * u.drift[k].value,
-                  u.drift[k].value > 0 ? r.drift[k].value / u.drift[k].value : 0.0);
-    out << line;
+  const auto amplification = [](const nlohmann::json& x) { return x.get<double>(); };
+  for (const StructureInfo& s : job.model.structures) {
+    const std::optional<nlohmann::json> b = unobstructed_structure_json(job, unobstructed.job, s);
+    if (!b) continue;
+    for (const auto& l : (*b)["levels"]) {
+      std::snprintf(line, sizeof line,
+                    "  %-22s displacement %8.2f cm (x%.2f)   abs. acceleration %6.3f g (x%.2f)\n",
+                    l["label"].get<std::string>().c_str(),
+                    100 * l["unobstructed_displacement"]["value"].get<double>(),
+                    amplification(l["displacement_amplification"]),
+                    l["unobstructed_absolute_acceleration"]["value"].get<double>() / kGravity,
+                    amplification(l["acceleration_amplification"]));
+      out << line;
+    }
+    for (const auto& st : (*b)["stories"]) {
+      std::snprintf(line, sizeof line, "  %-22s drift %8.3f cm (x%.2f)\n",
+                    st["label"].get<std::string>().c_str(),
+                    100 * st["unobstructed_drift"]["value"].get<double>(),
+                    amplification(st["drift_amplification"]));
+      out << line;
+    }
   }
   out << "Critical gaps (a gap below this pounds under this record):\n";
   for (const ContactGap& c : unobstructed.gaps) {

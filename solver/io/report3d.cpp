@@ -141,6 +141,12 @@ nlohmann::json summary3d_json(const JobResult& job) {
       bearings.push_back(je);
     }
     jb["bearings"] = bearings;
+    if (s.has_base) {  // everything reaching the foundation (analysis.h), in x, y and resultant
+      const std::size_t si = static_cast<std::size_t>(&s - model.structures.data());
+      jb["base_shear"] = {{"x", peak_json(r.base_shear[si], "N")},
+                          {"y", peak_json(r.base_shear_y[si], "N")},
+                          {"resultant", peak_json(r.base_shear_resultant[si], "N")}};
+    }
     buildings.push_back(jb);
   }
   return buildings;
@@ -362,6 +368,15 @@ void print_summary3d(std::ostream& out, const JobResult& job) {
                   "  bearings (%zu): peak resultant deformation %.2f cm, force %.1f kN\n",
                   b["bearings"].size(), 100 * d, f / 1e3);
     out << line;
+    if (b.contains("base_shear")) {
+      const auto& v = b["base_shear"];
+      std::snprintf(line, sizeof line,
+                    "  base shear x %.1f kN, y %.1f kN, resultant %.1f kN (bearings, damping and "
+                    "base contacts)\n",
+                    v["x"]["value"].get<double>() / 1e3, v["y"]["value"].get<double>() / 1e3,
+                    v["resultant"]["value"].get<double>() / 1e3);
+      out << line;
+    }
   }
   print_contacts3d(out, job);
 }

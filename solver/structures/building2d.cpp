@@ -13,15 +13,11 @@
 
 namespace isopound {
 
-namespace {
-
 double building_mass(const BuildingConfig& b) {
   double m = b.isolated ? b.base_mass : 0.0;
   for (const FloorConfig& f : b.floors) m += f.mass;
   return m;
 }
-
-}  // namespace
 
 ShearStick fixed_base_superstructure(const BuildingConfig& b) {
   const int n = static_cast<int>(b.floors.size());

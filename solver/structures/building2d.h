@@ -13,6 +13,10 @@ namespace isopound {
 // structures). Throws std::invalid_argument on an inconsistent building.
 void add_building(Model& model, const BuildingConfig& building);
 
+// The building's total mass, kg: the base slab (isolated) and every floor; the mass the
+// isolator carries unless `carried_mass` is given.
+double building_mass(const BuildingConfig& building);
+
 Model make_model(const BuildingConfig& building);
 
 // The fixed-base superstructure (floors only, story 1 to the ground): mass and stiffness.

@@ -179,17 +179,32 @@ Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, dou
   return k;
 }
 
+namespace {
+
+double polar_moment_about_cm(const Diaphragm3DConfig& d, const AreaProperties& area, double e2,
+                             EccentricPolarMoment rule) {
+  double j_cm = d.polar_moment;
+  if (j_cm <= 0) {
+    j_cm = d.mass * area.radius_of_gyration_sq();
+    if (rule == EccentricPolarMoment::kThesis) j_cm += d.mass * e2;
+  }
+  return j_cm;
+}
+
+}  // namespace
+
+double polar_moment_about_cm(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
+  const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
+  return polar_moment_about_cm(d, area_properties(plan), dot(d.eccentricity, d.eccentricity), rule);
+}
+
 Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
   if (!(d.mass > 0)) throw std::invalid_argument("diaphragm mass must be > 0");
   const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
   const AreaProperties area = area_properties(plan);
   const Vec2 cm = area.p_WC + d.eccentricity;
   const double e2 = dot(d.eccentricity, d.eccentricity);
-  double j_cm = d.polar_moment;
-  if (j_cm <= 0) {
-    j_cm = d.mass * area.radius_of_gyration_sq();
-    if (rule == EccentricPolarMoment::kThesis) j_cm += d.mass * e2;
-  }
+  const double j_cm = polar_moment_about_cm(d, area, e2, rule);
   const Eigen::Matrix3d T = point_transform(cm);
   return T.transpose() * Eigen::Vector3d(d.mass, d.mass, j_cm).asDiagonal() * T;
 }
@@ -211,8 +226,10 @@ void add_building3d(Model& model, const Building3DConfig& b) {
     d.structure = structure;
     model.dofs.push_back(d);
   }
-  for (std::size_t l = 0; l < a.levels_W.size(); ++l)
+  for (std::size_t l = 0; l < a.levels_W.size(); ++l) {
     info.level_dofs.push_back(offset + 3 * static_cast<int>(l));
+    info.level_dofs_y.push_back(offset + 3 * static_cast<int>(l) + 1);
+  }
   // story_heights stay empty: storey drifts of a 3D building are the column probes below.
 
   // Damping.

@@ -19,6 +19,10 @@ Vec2 to_plan(const Building3DConfig& b, Vec2 p_B);
 Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns_W, double height,
                                  ColumnCoupling coupling);
 
+// Polar moment of a diaphragm about its centre of mass, kg m^2: the given one, else from its
+// plan (THEORY eq. 5.9; `rule` says whether the eccentricity's m e^2 is added).
+double polar_moment_about_cm(const Diaphragm3DConfig& diaphragm, EccentricPolarMoment rule);
+
 // Mass matrix (3 x 3, DOFs at the plan origin) of a diaphragm whose plan and eccentricity are
 // in the plan frame.
 Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& diaphragm_W, EccentricPolarMoment rule);

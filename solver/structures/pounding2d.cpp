@@ -74,6 +74,9 @@ void add_walls(Model& model, int structure, const BuildingConfig& building,
       ContactBody wall_body;  // rigid wall: the ground
       if (wall.stiffness > 0)
         wall_body = {add_wall_structure(model, name + " structure", wall), -s};
+      if (wall.level == 0 && building.isolated)
+        model.structures[structure].base_contact_elements.push_back(
+            static_cast<int>(model.elements.size()));
       add_contact(model, name, {level_dof, s}, wall_body, right ? wall.gap_right : wall.gap_left,
                   wall.impact, level_mass, wall.mass, steps_per_contact);
     }
@@ -98,6 +101,12 @@ void add_neighbour(Model& model, int main, const BuildingConfig& main_building,
                                 model.dofs[dof_main].label.substr(main_building.name.size() + 1);
       ++pairs;
       if (!neighbour.pounding) continue;
+      // Base slab against base slab: the contact is part of both structures' base shear.
+      const int element = static_cast<int>(model.elements.size());
+      if (i == 0 && main_building.isolated)
+        model.structures[main].base_contact_elements.push_back(element);
+      if (j == 0 && neighbour.building.isolated)
+        model.structures[other].base_contact_elements.push_back(element);
       add_contact(model, label, {dof_main, s}, {dof_other, -s}, neighbour.gap, neighbour.impact,
                   model.mass(dof_main, dof_main), model.mass(dof_other, dof_other),
                   steps_per_contact);

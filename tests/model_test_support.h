@@ -1,0 +1,27 @@
+// Test helpers for models written inline and their histories: a model from YAML text (file name
+// "model.yaml", paths relative to the working directory) and a history column by its name.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "solver/core/analysis.h"
+#include "solver/io/model_input.h"
+
+namespace isopound::test {
+
+inline ModelConfig load_model_text(const std::string& text) {
+  return load_model(YAML::Load(text), "model.yaml", "");
+}
+
+// The index of the column `name` (with its unit, e.g. "main/base u [m]"); a test failure if none.
+inline int history_column(const History& h, const std::string& name) {
+  for (std::size_t c = 0; c < h.columns.size(); ++c)
+    if (h.columns[c] == name) return static_cast<int>(c);
+  ADD_FAILURE() << "no column '" << name << "'";
+  return 0;
+}
+
+}  // namespace isopound::test
