@@ -349,6 +349,9 @@ ScannedModel scan_model(const std::string& path, ProblemList& problems) {
       report(e);  // the same message as the structures-alone read's is kept once
     }
   }
+  // Implausible values (solver/io/plausibility.h) are warnings here too: --strict refuses them.
+  if (m.config)
+    for (const std::string& w : m.config->warnings) problems.warning(w);
   return m;
 }
 

@@ -1,0 +1,42 @@
+// The command-line contract shared by isopound, isopound-pre and isopound-post: usage errors exit
+// 2, option ranges are printed as people write them ("must be >= 0", never the 309 digits of
+// DBL_MAX), and options that take a quantity accept units ("--until '5 s'", "--angle '30 deg'").
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "solver/io/units.h"
+
+namespace isopound {
+
+// A number >= `min` (e.g. "-j 0": 0 means all cores). CLI11's own NonNegativeNumber prints its
+// upper bound, DBL_MAX, in full.
+inline CLI::Validator at_least(double min) {
+  return CLI::Validator(
+      [min](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+        if (!(value >= min)) return "must be >= " + format_number(min) + " (got " + text + ")";
+        return {};
+      },
+      ">= " + format_number(min));
+}
+
+// A quantity option's value in SI: "5 s", "5000 ms" or a bare number (SI of `expected`); must
+// be > 0 when `positive`. Throws CLI::ValidationError naming the option (caught as a usage
+// error: exit 2).
+inline double option_quantity(const std::string& option, const std::string& text,
+                              const Dimension& expected, bool positive) {
+  double value = 0.0;
+  try {
+    value = parse_quantity_as(text, expected);
+  } catch (const UnitError& e) {
+    throw CLI::ValidationError(option, e.what());
+  }
+  if (positive && !(value > 0.0))
+    throw CLI::ValidationError(option, "must be > 0 (got '" + text + "')");
+  return value;
+}
+
+}  // namespace isopound
