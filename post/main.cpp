@@ -24,6 +24,7 @@
 #include "solver/core/constants.h"
 #include "solver/excitation/ground_motion.h"
 #include "solver/io/report.h"
+#include "solver/study/cli_contract.h"
 
 namespace fs = std::filesystem;
 using namespace isopound;
@@ -333,7 +334,8 @@ int main(int argc, char** argv) {
   spectra->add_option("--damping", sa.damping, "damping ratio in % (default 5)");
   spectra->add_option("-o,--output,--out", sa.out, "output directory (default: spectra)");
   spectra->add_option("--unit", sa.unit, "columns files: g | m/s2 | cm/s2");
-  spectra->add_option("--dt", sa.dt, "columns files without a time column: time step [s]");
+  spectra->add_option("--dt", sa.dt, "columns files without a time column: time step, e.g. '5 ms'")
+      ->transform(quantity_of(dim::kTime, true));
   spectra->add_option("--column", sa.column, "columns files: acceleration column (0-based)");
   spectra->add_option("--time-column", sa.time_column, "columns files: time column (0-based)");
   spectra->add_option("--scale", sa.scale, "multiplies the acceleration");
@@ -354,12 +356,18 @@ int main(int argc, char** argv) {
   animate->add_option("--scale", ao.scale, "displacement magnification (default 1)");
   animate->add_option("--fps", ao.fps, "frames per second of analysis time (default 25)");
   animate->add_option("-o,--output,--out", out, "output directory (default: RUN_DIR/animation)");
-  animate->add_option("--start", ao.start, "time of the first frame [s] (default 0)");
-  animate->add_option("--end", ao.end, "time of the last frame [s] (default: end of the run)");
-  animate->add_option("--preview", preview, "also write preview.png of the frame at this time [s]");
+  animate->add_option("--start", ao.start, "time of the first frame, e.g. '2 s' (default 0)")
+      ->transform(quantity_of(dim::kTime, false));
+  animate
+      ->add_option("--end", ao.end, "time of the last frame, e.g. '8 s' (default: end of the run)")
+      ->transform(quantity_of(dim::kTime, false));
+  animate->add_option("--preview", preview, "also write preview.png of the frame at this time (s)")
+      ->transform(quantity_of(dim::kTime, false));
   animate->add_option("--model", model, "model file (default: the one named in summary.json)");
-  animate->add_option("--force-length", ao.force_length,
-                      "3D: drawn length of the run's largest contact force [m] (default 3)");
+  animate
+      ->add_option("--force-length", ao.force_length,
+                   "3D: drawn length of the run's largest contact force, e.g. '3 m' (default 3 m)")
+      ->transform(quantity_of(dim::kLength, true));
 
   std::string db;
   PolarStudyOptions po;

@@ -228,10 +228,10 @@ int main(int argc, char** argv) {
   run->add_flag("--no-histories", no_histories, "Skip histories.csv");
   run->add_flag("--compare-unobstructed", compare_unobstructed,
                 "Also run without walls and neighbours; report each peak's amplification");
-  std::string until_text;
-  run->add_option(
-      "--until", until_text,
-      "Stop the analysis at this time, e.g. '5 s' (a bare number is s; analysis.t_end)");
+  double until = 0.0;
+  run->add_option("--until", until,
+                  "Stop the analysis at this time, e.g. '5 s' (a bare number is s; analysis.t_end)")
+      ->transform(quantity_of(dim::kTime, true));
   bool strict = false;
   run->add_flag("--strict", strict, "Implausible values (warnings) are errors: exit 2");
   EnsembleOptions ensemble;
@@ -287,8 +287,6 @@ int main(int argc, char** argv) {
   try {
     if (*demo) return run_and_write(demo_config(), out_dir, quiet);
     if (*overlap) return print_overlaps(pairs_path, exact);
-    const double until =
-        until_text.empty() ? 0.0 : option_quantity("--until", until_text, dim::kTime, true);
     ModelConfig config = load_model_file(model_path);
     check_options_apply(config, record_path, ensemble, run->count("--jobs") > 0);
     if (!record_path.empty()) {

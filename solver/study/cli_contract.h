@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <string>
 
 #include "solver/io/units.h"
@@ -23,20 +24,25 @@ inline CLI::Validator at_least(double min) {
       ">= " + format_number(min));
 }
 
-// A quantity option's value in SI: "5 s", "5000 ms" or a bare number (SI of `expected`); must
-// be > 0 when `positive`. Throws CLI::ValidationError naming the option (caught as a usage
-// error: exit 2).
-inline double option_quantity(const std::string& option, const std::string& text,
-                              const Dimension& expected, bool positive) {
-  double value = 0.0;
-  try {
-    value = parse_quantity_as(text, expected);
-  } catch (const UnitError& e) {
-    throw CLI::ValidationError(option, e.what());
-  }
-  if (positive && !(value > 0.0))
-    throw CLI::ValidationError(option, "must be > 0 (got '" + text + "')");
-  return value;
+// A quantity option: "5 s", "5000 ms" or a bare number (SI of `expected`), rewritten to its SI
+// value before CLI11 converts it (use with ->transform); > 0 when `positive`. An error names the
+// option and exits 2 like every usage error.
+inline CLI::Validator quantity_of(const Dimension& expected, bool positive) {
+  return CLI::Validator(
+      [expected, positive](std::string& text) -> std::string {
+        double value = 0.0;
+        try {
+          value = parse_quantity_as(text, expected);
+        } catch (const UnitError& e) {
+          return e.what();
+        }
+        if (positive && !(value > 0.0)) return "must be > 0 (got '" + text + "')";
+        char si[40];
+        std::snprintf(si, sizeof si, "%.17g", value);
+        text = si;
+        return {};
+      },
+      "QUANTITY");
 }
 
 }  // namespace isopound
