@@ -99,11 +99,7 @@ IsolatorConfig read_isolator(const InputNode& node) {
       qw->fail(
           "must be > 0 for the bilinear and bouc_wen models (an isolator without strength is "
           "model: linear)");
-    // Q/W is a fraction of the weight: a bare 5 is 500 %, never meant.
-    if (iso.strength_ratio > 1.0)
-      qw->fail("Q/W is a fraction of the weight: '" + qw->string() + "' is " +
-               std::to_string(static_cast<long>(std::lround(iso.strength_ratio * 100))) +
-               " %; did you mean '" + qw->string() + " %'?");
+    // Q/W > 1 (a bare 5 is 500 %) is refused by the plausibility table (plausibility.h).
   } else {
     node.note_default("QW", "0.05");
   }

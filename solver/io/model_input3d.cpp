@@ -192,8 +192,6 @@ BearingConfig read_bearing_law(const InputNode& node) {
     c.strength_ratio = qw->number(Bound::kNonNegative);
     if (c.strength_ratio == 0.0)
       qw->fail("must be > 0 for a yielding bearing (a bearing without strength is model: linear)");
-    if (c.strength_ratio > 1.0)
-      qw->fail("Q/W is a fraction of the weight: did you mean '" + qw->string() + " %'?");
   } else {
     node.note_default("QW", "0.05");
   }

@@ -48,7 +48,7 @@ constexpr std::array<PlausibleRange, 34> kRanges{{
   {"ratios",       dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
   {"isolation",    dim::kNone, 0, 1, 0, 0.5, "%", 1e-2, "an isolation damping ratio"},
   {"Tb",           dim::kTime, 0, 30, 0.5, 8, "s", 1, "an isolation period"},
-  {"dt",           dim::kTime, 0, 1, 1e-6, 0.05, "ms", 1e-3, "a time step"},
+  {"dt",           dim::kTime, 0, 100, 1e-6, 0.05, "ms", 1e-3, "a time step"},
   {"interval",     dim::kTime, 0, 60, 0, 1, "ms", 1e-3, "an output interval"},
   {"t_end",        dim::kTime, 0, 1e5, 0.01, 1000, "s", 1, "an analysis end time"},
   {"extra_time",   dim::kTime, 0, 1e4, 0, 300, "s", 1, "free vibration after the record"},
@@ -57,7 +57,7 @@ constexpr std::array<PlausibleRange, 34> kRanges{{
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 26> kUnchecked{{
+constexpr std::array<UncheckedKey, 30> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
@@ -84,6 +84,10 @@ constexpr std::array<UncheckedKey, 26> kUnchecked{{
     {"J", "torsion constant (m^4): depends on the section"},
     {"bays_x", "grid spacing (m): the site's own geometry"},
     {"bays_y", "grid spacing (m): the site's own geometry"},
+    {"angle", "an angle: its unit is required (a bare number is an error)"},
+    {"rotation", "an angle: its unit is required (a bare number is an error)"},
+    {"orientation", "an angle: its unit is required (a bare number is an error)"},
+    {"phase", "an angle: its unit is required (a bare number is an error)"},
 }};
 
 // Units a bare number may have been meant in, per dimension, for the hint.
@@ -172,7 +176,8 @@ PlausibilityVerdict check_plausible(std::string_view key_path, const Dimension& 
   while (!written.empty() && written.back() == ' ') written.pop_back();
   while (!written.empty() && written.front() == ' ') written.erase(0, 1);
   std::string message = "'" + written + "'";
-  if (!has_unit && !(d == dim::kNone)) message += " (a bare number is SI: " + in_unit(si, *r) + ")";
+  if (!has_unit && r->unit_si != 1.0)
+    message += " (a bare number is SI: " + in_unit(si, *r) + ")";
   message += hard ? " is impossible for " : " is implausible for ";
   message += std::string(r->what) + " (" +
              (hard ? "possible: " + range_text(r->hard_min, r->hard_max, *r)
