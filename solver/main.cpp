@@ -297,11 +297,13 @@ int main(int argc, char** argv) {
     if (until > 0) config.analysis.t_end = until;
     if (ensemble.jobs == 0)
       ensemble.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    // The record is read before anything runs: its unit is stated and its peak checked.
+    std::optional<GroundMotion> motion;
     if (*run || *check) {
-      const GroundMotion motion =
-          load_ground_motion(config.ground_motion, !config.structures3d.empty());
-      check_record_peak(config, motion, record_path);
-      if (!quiet && !motion.unit_note.empty()) std::printf("%s\n", motion.unit_note.c_str());
+      if (*check && !quiet) std::printf("%s: reading the ground motion...\n", model_path.c_str());
+      motion = load_ground_motion(config.ground_motion, !config.structures3d.empty());
+      check_record_peak(config, *motion, record_path);
+      if (!quiet && !motion->unit_note.empty()) std::printf("%s\n", motion->unit_note.c_str());
     }
     if (!config.warnings.empty()) {
       for (const std::string& w : config.warnings)
@@ -320,14 +322,11 @@ int main(int argc, char** argv) {
       return kOk;
     }
     if (*check) {
-      if (!quiet) std::printf("%s: reading the ground motion...\n", model_path.c_str());
-      const GroundMotion motion =
-          load_ground_motion(config.ground_motion, !config.structures3d.empty());
-      check_step_against_record(config.analysis, motion);
+      check_step_against_record(config.analysis, *motion);
       Model model = build_model(config);
       if (!quiet) {
         std::printf("%s: ok (%d DOFs, %zu ground-motion samples at %g s)\n", model_path.c_str(),
-                    model.size(), motion.acceleration.size(), motion.dt);
+                    model.size(), motion->acceleration.size(), motion->dt);
         print_defaults(config);
       }
       return kOk;
