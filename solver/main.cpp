@@ -189,7 +189,7 @@ void check_record_peak(ModelConfig& config, const GroundMotion& motion,
   double pga = 0.0;
   for (double a : motion.acceleration) pga = std::max(pga, std::abs(a));
   for (double a : motion.acceleration_y) pga = std::max(pga, std::abs(a));
-  const std::string text = format_number(pga / kGravity) + " g";
+  const std::string text = readable_number(pga / kGravity) + " g";
   const PlausibilityVerdict v =
       check_plausible("ground_motion.pga", dim::kAcceleration, pga, text, true);
   if (v.level == Plausibility::kOk) return;

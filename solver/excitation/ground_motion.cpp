@@ -338,13 +338,18 @@ struct HeaderUnit {
 double acceleration_unit_si(std::string unit) {
   std::transform(unit.begin(), unit.end(), unit.begin(),
                  [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
-  for (const char* sec : {"SEC"}) {  // CM/SEC/SEC -> CM/S/S
-    for (std::size_t at = unit.find(sec); at != std::string::npos; at = unit.find(sec))
-      unit.replace(at, 3, "S");
+  std::string seconds;  // CM/SEC/SEC -> CM/S/S
+  for (std::size_t i = 0; i < unit.size();) {
+    const bool sec = unit.compare(i, 3, "SEC") == 0;
+    seconds.push_back(unit[i]);
+    i += sec ? 3 : 1;
   }
-  for (const char* square : {"**2", "^2", "2"})  // CM/S**2, CM/S^2, CM/S2 -> CM/S/S
-    if (unit.ends_with(std::string("/S") + square))
-      unit = unit.substr(0, unit.size() - std::string(square).size()) + "/S";
+  unit = std::move(seconds);
+  for (const std::string_view square : {"/S**2", "/S^2", "/S2"}) {  // CM/S**2 -> CM/S/S
+    if (!unit.ends_with(square)) continue;
+    unit.resize(unit.size() - square.size());
+    unit.append("/S/S");  // appended: GCC 12 warns a false -Wrestrict on '+' at -O3
+  }
   if (unit == "G" || unit == "GS") return kGravity;
   if (unit == "GAL" || unit == "GALS" || unit == "CM/S/S") return 0.01;
   if (unit == "M/S/S") return 1.0;

@@ -120,7 +120,10 @@ std::string number(double x) {
 
 // "15 cm" for 0.15 m in the row's unit.
 std::string in_unit(double si, const PlausibleRange& r) {
-  return number(si / r.unit_si) + (r.unit.empty() ? "" : " " + std::string(r.unit));
+  // Appended, not '+': GCC 12 warns a false -Wrestrict on "x" + std::string at -O3.
+  std::string out = number(si / r.unit_si);
+  if (!r.unit.empty()) out.append(" ").append(r.unit);
+  return out;
 }
 
 std::string range_text(double lo, double hi, const PlausibleRange& r) {

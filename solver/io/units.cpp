@@ -329,10 +329,10 @@ double parse_angle(std::string_view text) {
   const Quantity q = parse_quantity(text);
   const std::string_view unit = split_quantity(text).unit;
   if (!q.has_unit) {
-    const std::string number = format_number(q.si);
+    const std::string number = readable_number(q.si);
     throw UnitError(quoted(trim(text)) + " is an angle without a unit: '" + number + " deg' is " +
-                    format_number(q.si * std::numbers::pi / 180.0) + " rad, '" + number +
-                    " rad' is " + format_number(q.si * 180.0 / std::numbers::pi) +
+                    readable_number(q.si * std::numbers::pi / 180.0) + " rad, '" + number +
+                    " rad' is " + readable_number(q.si * 180.0 / std::numbers::pi) +
                     " deg; did you mean '" + number + " deg'? Write the unit");
   }
   if (unit != "deg" && unit != "rad" && unit != "\xC2\xB0")
@@ -341,7 +341,7 @@ double parse_angle(std::string_view text) {
   return q.si;
 }
 
-std::string format_number(double value) {
+std::string readable_number(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%g", value);
   return buffer;

@@ -59,6 +59,6 @@ double parse_angle(std::string_view text);
 
 // A number as people write it: 1e+308 as "1e+308", 0.003 as "0.003" (%g with 6 digits), never
 // the 309 digits of std::to_string.
-std::string format_number(double value);
+std::string readable_number(double value);
 
 }  // namespace isopound

@@ -18,10 +18,10 @@ inline CLI::Validator at_least(double min) {
       [min](std::string& text) -> std::string {
         double value = 0.0;
         if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
-        if (!(value >= min)) return "must be >= " + format_number(min) + " (got " + text + ")";
+        if (!(value >= min)) return "must be >= " + readable_number(min) + " (got " + text + ")";
         return {};
       },
-      ">= " + format_number(min));
+      ">= " + readable_number(min));
 }
 
 // A quantity option: "5 s", "5000 ms" or a bare number (SI of `expected`), rewritten to its SI
