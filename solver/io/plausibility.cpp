@@ -48,7 +48,7 @@ constexpr std::array<PlausibleRange, 34> kRanges{{
   {"ratios",       dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
   {"isolation",    dim::kNone, 0, 1, 0, 0.5, "%", 1e-2, "an isolation damping ratio"},
   {"Tb",           dim::kTime, 0, 30, 0.5, 8, "s", 1, "an isolation period"},
-  {"dt",           dim::kTime, 0, 100, 1e-6, 0.05, "ms", 1e-3, "a time step"},
+  {"dt",           dim::kTime, 0, 100, 0, 0.05, "ms", 1e-3, "a time step (analysis: 0 = automatic)"},
   {"interval",     dim::kTime, 0, 60, 0, 1, "ms", 1e-3, "an output interval"},
   {"t_end",        dim::kTime, 0, 1e5, 0.01, 1000, "s", 1, "an analysis end time"},
   {"extra_time",   dim::kTime, 0, 1e4, 0, 300, "s", 1, "free vibration after the record"},
