@@ -18,11 +18,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr Dimension kLinearMass{-1, 1, 0};  // kg/m
 
 // clang-format off
-constexpr std::array<PlausibleRange, 34> kRanges{{
+constexpr std::array<PlausibleRange, 35> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
   {"gap_right",    dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
+  {"R",            dim::kLength, 0, 100, 0.5, 10, "m", 1, "a friction pendulum radius"},
   {"uy",           dim::kLength, 0, 1, 1e-4, 0.1, "mm", 1e-3, "a bearing yield displacement"},
   {"thickness",    dim::kLength, 0, 20, 0.05, 3, "m", 1, "a wall thickness"},
   {"height",       dim::kLength, 0, 200, 0.2, 20, "m", 1, "a storey or wall height"},
@@ -57,7 +58,7 @@ constexpr std::array<PlausibleRange, 34> kRanges{{
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 30> kUnchecked{{
+constexpr std::array<UncheckedKey, 35> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
@@ -84,6 +85,11 @@ constexpr std::array<UncheckedKey, 30> kUnchecked{{
     {"J", "torsion constant (m^4): depends on the section"},
     {"bays_x", "grid spacing (m): the site's own geometry"},
     {"bays_y", "grid spacing (m): the site's own geometry"},
+    {"position", "plan coordinates (m): the site's own geometry, checked by the site checks"},
+    {"rectangle", "plan size (m): the site's own geometry, checked by the site checks"},
+    {"polygon", "plan vertices (m): the site's own geometry, checked by the site checks"},
+    {"eccentricity", "centre-of-mass offset (m): checked against the slab by the site checks"},
+    {"restitution", "coefficient of restitution, bounded by the reader"},
     {"angle", "an angle: its unit is required (a bare number is an error)"},
     {"rotation", "an angle: its unit is required (a bare number is an error)"},
     {"orientation", "an angle: its unit is required (a bare number is an error)"},
