@@ -29,6 +29,31 @@ std::string describe(int i, Vec2 p) {
   throw InvalidPolygon(i, describe(i, p) + ": " + what);
 }
 
+// Two edges of the outline that cross (not at a shared vertex), as "edge 0-1 crosses edge 2-3";
+// empty when none do. Only called on the way to an error: O(n^2).
+std::string crossing_edges(std::span<const Vec2> in) {
+  const int n = int(in.size());
+  const auto side = [](Vec2 a, Vec2 b, Vec2 p) { return cross(b - a, p - a); };
+  for (int i = 0; i < n; ++i) {
+    const Vec2 a = in[i], b = in[(i + 1) % n];
+    for (int j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
+      const Vec2 c = in[j], d = in[(j + 1) % n];
+      const double s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
+      if (((s1 > 0 && s2 < 0) || (s1 < 0 && s2 > 0)) && ((s3 > 0 && s4 < 0) || (s3 < 0 && s4 > 0)))
+        return "edge " + std::to_string(i) + "-" + std::to_string((i + 1) % n) + " crosses edge " +
+               std::to_string(j) + "-" + std::to_string((j + 1) % n);
+    }
+  }
+  return {};
+}
+
+[[noreturn]] void reject_self_crossing(const std::string& crossing) {
+  throw InvalidPolygon(-1, "the outline crosses itself (" + crossing +
+                               "): a self-crossing plan; list the vertices in order around the "
+                               "outline");
+}
+
 }  // namespace
 
 ConvexPolygon::ConvexPolygon(std::initializer_list<Vec2> vertices)
@@ -66,6 +91,8 @@ ConvexPolygon::ConvexPolygon(std::span<const Vec2> in) {
   double twice_area = 0.0;
   for (int i = 1; i + 1 < n; ++i) twice_area += cross(in[i] - in[0], in[i + 1] - in[0]);
   if (std::abs(twice_area) <= kCollinearSine * size * size) {
+    if (const std::string crossing = crossing_edges(in); !crossing.empty())
+      reject_self_crossing(crossing);
     throw InvalidPolygon(-1, "zero area: all " + std::to_string(n) + " vertices lie on one line");
   }
   const double orientation = twice_area > 0.0 ? 1.0 : -1.0;
@@ -80,9 +107,15 @@ ConvexPolygon::ConvexPolygon(std::span<const Vec2> in) {
       reject(i, in[i], "lies on the straight line through its neighbours (remove it)");
     }
     if (c < 0.0) {
+      const std::string crossing = crossing_edges(in);
+      const std::string turn = orientation > 0.0
+                                   ? "the outline turns right here: not convex"
+                                   : "the outline (clockwise) turns left here: not convex";
       reject(i, in[i],
-             orientation > 0.0 ? "the outline turns right here: not convex"
-                               : "the outline (clockwise) turns left here: not convex");
+             crossing.empty() ? turn
+                              : turn + " (the outline crosses itself, " + crossing +
+                                    ": a self-crossing plan; list the vertices in order around "
+                                    "the outline)");
     }
     turned += std::atan2(c, dot(e_in, e_out));
     if (turned > 2.0 * std::numbers::pi * (1.0 + 1e-9)) {

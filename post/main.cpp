@@ -23,6 +23,8 @@
 #include "post/xy_plot.h"
 #include "solver/core/constants.h"
 #include "solver/excitation/ground_motion.h"
+#include "solver/io/report.h"
+#include "solver/study/cli_contract.h"
 
 namespace fs = std::filesystem;
 using namespace isopound;
@@ -322,6 +324,7 @@ int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<st
 int main(int argc, char** argv) {
   CLI::App app{"isopound-post: plots, response spectra, polar figures and animations"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("isopound-post ") + kIsopoundVersion);
 
   SpectraArgs sa;
   auto* spectra =
@@ -329,9 +332,10 @@ int main(int argc, char** argv) {
   spectra->add_option("records", sa.records, "record files (PEER .AT2 or columns)")->required();
   spectra->add_flag("--pair", sa.pair, "records two by two form horizontal pairs: RotD50/RotD100");
   spectra->add_option("--damping", sa.damping, "damping ratio in % (default 5)");
-  spectra->add_option("-o,--out", sa.out, "output directory (default: spectra)");
+  spectra->add_option("-o,--output,--out", sa.out, "output directory (default: spectra)");
   spectra->add_option("--unit", sa.unit, "columns files: g | m/s2 | cm/s2");
-  spectra->add_option("--dt", sa.dt, "columns files without a time column: time step [s]");
+  spectra->add_option("--dt", sa.dt, "columns files without a time column: time step, e.g. '5 ms'")
+      ->transform(quantity_of(dim::kTime, true));
   spectra->add_option("--column", sa.column, "columns files: acceleration column (0-based)");
   spectra->add_option("--time-column", sa.time_column, "columns files: time column (0-based)");
   spectra->add_option("--scale", sa.scale, "multiplies the acceleration");
@@ -341,7 +345,7 @@ int main(int argc, char** argv) {
   std::string run_dir, out, model;
   auto* plot = app.add_subcommand("plot", "time histories and hysteresis loops of a run (PNG)");
   plot->add_option("run_dir", run_dir, "directory with histories.csv and summary.json")->required();
-  plot->add_option("-o,--out", out, "output directory (default: the run directory)");
+  plot->add_option("-o,--output,--out", out, "output directory (default: the run directory)");
   plot->add_option("--model", model, "model file (default: the one named in summary.json)");
 
   AnimationOptions ao;
@@ -351,13 +355,19 @@ int main(int argc, char** argv) {
       ->required();
   animate->add_option("--scale", ao.scale, "displacement magnification (default 1)");
   animate->add_option("--fps", ao.fps, "frames per second of analysis time (default 25)");
-  animate->add_option("-o,--out", out, "output directory (default: RUN_DIR/animation)");
-  animate->add_option("--start", ao.start, "time of the first frame [s] (default 0)");
-  animate->add_option("--end", ao.end, "time of the last frame [s] (default: end of the run)");
-  animate->add_option("--preview", preview, "also write preview.png of the frame at this time [s]");
+  animate->add_option("-o,--output,--out", out, "output directory (default: RUN_DIR/animation)");
+  animate->add_option("--start", ao.start, "time of the first frame, e.g. '2 s' (default 0)")
+      ->transform(quantity_of(dim::kTime, false));
+  animate
+      ->add_option("--end", ao.end, "time of the last frame, e.g. '8 s' (default: end of the run)")
+      ->transform(quantity_of(dim::kTime, false));
+  animate->add_option("--preview", preview, "also write preview.png of the frame at this time (s)")
+      ->transform(quantity_of(dim::kTime, false));
   animate->add_option("--model", model, "model file (default: the one named in summary.json)");
-  animate->add_option("--force-length", ao.force_length,
-                      "3D: drawn length of the run's largest contact force [m] (default 3)");
+  animate
+      ->add_option("--force-length", ao.force_length,
+                   "3D: drawn length of the run's largest contact force, e.g. '3 m' (default 3 m)")
+      ->transform(quantity_of(dim::kLength, true));
 
   std::string db;
   PolarStudyOptions po;
@@ -371,7 +381,7 @@ int main(int argc, char** argv) {
   polar->add_option("--unit", po.unit, "display unit of the quantity (cm, g, kN, %, ...)");
   polar->add_option("--angle-axis", po.angle_axis,
                     "the incidence-angle axis (default: found by name)");
-  polar->add_option("-o,--out", out, "output path without extension");
+  polar->add_option("-o,--output,--out", out, "output path without extension");
 
   try {
     app.parse(argc, argv);

@@ -3,6 +3,7 @@
 // Errors are printed as "file:line:col: key: what" and give a non-zero exit code.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -13,18 +14,21 @@
 #include <thread>
 
 #include "geometry/overlap.h"
+#include "solver/core/constants.h"
 #include "solver/core/modes.h"
 #include "solver/io/computed_defaults.h"
 #include "solver/io/model_input.h"
 #include "solver/io/overlap_report.h"
+#include "solver/io/plausibility.h"
 #include "solver/io/polygon_input.h"
 #include "solver/io/report.h"
 #include "solver/io/report3d.h"
+#include "solver/io/report_modes2d.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
-#include "solver/io/report_modes2d.h"
+#include "solver/study/cli_contract.h"
 #include "solver/study/ensemble.h"   // run --ensemble N
 #include "solver/study/study_cli.h"  // study commands (sweep, export)
 
@@ -162,6 +166,46 @@ void print_modes(const ModelConfig& config) {
   }
 }
 
+// A command-line option that does not apply to the model is an error naming what to use.
+void check_options_apply(const ModelConfig& config, const std::string& record_path,
+                         const EnsembleOptions& ensemble, bool jobs_given) {
+  if (!record_path.empty() && config.ground_motion.components.size() == 2)
+    throw CLI::ValidationError(
+        "--record",
+        "does not apply to this model: its ground motion is a record pair (ground_motion.L and "
+        "ground_motion.T at ground_motion.angle); change L and T in the model file, or run "
+        "several pairs with a study (isopound sweep, records: [{L: ..., T: ...}])");
+  if (jobs_given && ensemble.members == 0)
+    throw CLI::ValidationError("-j", "only applies with --ensemble N (threads for its members)");
+}
+
+// The record's peak against the plausibility table (row "pga"): a unit slip (a cm/s^2 file
+// read as g) gives a peak of hundreds of g.
+void check_record_peak(ModelConfig& config, const GroundMotion& motion,
+                       const std::string& record_path) {
+  const GroundMotionConfig& g = config.ground_motion;
+  const bool any_record =
+      !g.use_pulse ||
+      (g.components.size() == 2 && !(g.components[0].use_pulse && g.components[1].use_pulse));
+  if (!any_record) return;  // the built-in pulse has no unit to slip (its amplitude is m/s)
+  double pga = 0.0;
+  for (double a : motion.acceleration) pga = std::max(pga, std::abs(a));
+  for (double a : motion.acceleration_y) pga = std::max(pga, std::abs(a));
+  const std::string text = readable_number(pga / kGravity) + " g";
+  const PlausibilityVerdict v =
+      check_plausible("ground_motion.pga", dim::kAcceleration, pga, text, true);
+  if (v.level == Plausibility::kOk) return;
+  const std::string where = record_path.empty()
+                                ? "ground_motion (peak ground acceleration of the record as read)"
+                                : "--record (peak ground acceleration of the record as read)";
+  const std::string hint =
+      "; check the record's unit: values in cm/s^2 read as g give 981 times the peak, in "
+      "m/s^2 read as g 9.81 times (columns: ground_motion.unit; PEER: the header line)";
+  if (v.level == Plausibility::kError)
+    throw InputError(config.source, 0, 0, where, v.message + hint);
+  config.warnings.push_back(InputError(config.source, 0, 0, where, v.message + hint).what());
+}
+
 void print_defaults(const ModelConfig& config, double record_dt) {
   if (config.defaults.empty()) return;
   std::printf("Defaults used (keys not in the file):\n");
@@ -187,17 +231,21 @@ int main(int argc, char** argv) {
   run->add_flag("--compare-unobstructed", compare_unobstructed,
                 "Also run without walls and neighbours; report each peak's amplification");
   double until = 0.0;
-  run->add_option("--until", until, "Stop the analysis at this time, s (analysis.t_end)")
-      ->check(CLI::PositiveNumber);
+  run->add_option("--until", until,
+                  "Stop the analysis at this time, e.g. '5 s' (a bare number is s; analysis.t_end)")
+      ->transform(quantity_of(dim::kTime, true));
+  bool strict = false;
+  run->add_flag("--strict", strict, "Implausible values (warnings) are errors: exit 2");
   EnsembleOptions ensemble;
   ensemble.members = 0;
-  ensemble.jobs = std::max(1u, std::thread::hardware_concurrency());
+  ensemble.jobs = 0;  // all cores, as in sweep
   run->add_option("--ensemble", ensemble.members,
                   "Run N members, each but the first with its base slab offset by 1 um; report "
                   "every peak's spread and the predictability horizon")
       ->check(CLI::Range(2, 100000));
-  run->add_option("-j,--jobs", ensemble.jobs, "Threads for --ensemble (default: all cores)")
-      ->check(CLI::PositiveNumber);
+  run->add_option("-j,--jobs", ensemble.jobs,
+                  "Threads for --ensemble; 0 = all cores (default), as in sweep")
+      ->check(at_least(0));
 
   CLI::App* demo = app.add_subcommand(
       "demo", "3-storey Bouc-Wen isolated building under the built-in near-fault pulse");
@@ -208,10 +256,12 @@ int main(int argc, char** argv) {
       app.add_subcommand("modes", "Periods and mode shapes of every structure of a model");
   modes->add_option("model", model_path, "Model file (YAML)")->required();
   modes->add_flag("-q,--quiet", quiet, "Check the model, print nothing");
+  modes->add_flag("--strict", strict, "Implausible values (warnings) are errors: exit 2");
 
   CLI::App* check = app.add_subcommand("check", "Read and validate a model, run nothing");
   check->add_option("model", model_path, "Model file (YAML)")->required();
   check->add_flag("-q,--quiet", quiet, "Print nothing when the model is valid");
+  check->add_flag("--strict", strict, "Implausible values (warnings) are errors: exit 2");
 
   CLI::App* geometry = app.add_subcommand("geometry", "Geometry of convex polygons in plan");
   geometry->require_subcommand(1);
@@ -240,12 +290,32 @@ int main(int argc, char** argv) {
     if (*demo) return run_and_write(demo_config(), out_dir, quiet);
     if (*overlap) return print_overlaps(pairs_path, exact);
     ModelConfig config = load_model_file(model_path);
+    check_options_apply(config, record_path, ensemble, run->count("--jobs") > 0);
     if (!record_path.empty()) {
       config.ground_motion.use_pulse = false;
       config.ground_motion.record_path = record_path;
     }
     if (no_histories) config.output.histories = false;
     if (until > 0) config.analysis.t_end = until;
+    if (ensemble.jobs == 0)
+      ensemble.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    // The record is read before anything runs: its unit is stated and its peak checked.
+    std::optional<GroundMotion> motion;
+    if (*run || *check) {
+      if (*check && !quiet) std::printf("%s: reading the ground motion...\n", model_path.c_str());
+      motion = load_ground_motion(config.ground_motion, !config.structures3d.empty());
+      check_record_peak(config, *motion, record_path);
+      if (!quiet && !motion->unit_note.empty()) std::printf("%s\n", motion->unit_note.c_str());
+    }
+    if (!config.warnings.empty()) {
+      for (const std::string& w : config.warnings)
+        std::cerr << "isopound: " << (strict ? "error: " : "warning: ") << w << '\n';
+      if (strict) {
+        std::cerr << "isopound: error: " << config.warnings.size()
+                  << " implausible value(s) refused by --strict\n";
+        return kBadInput;
+      }
+    }
     if (*run)
       return run_and_write(config, out_dir, quiet, compare_unobstructed,
                            ensemble.members > 0 ? &ensemble : nullptr);
@@ -254,15 +324,12 @@ int main(int argc, char** argv) {
       return kOk;
     }
     if (*check) {
-      if (!quiet) std::printf("%s: reading the ground motion...\n", model_path.c_str());
-      const GroundMotion motion =
-          load_ground_motion(config.ground_motion, !config.structures3d.empty());
-      check_step_against_record(config.analysis, motion);
+      check_step_against_record(config.analysis, *motion);
       Model model = build_model(config);
       if (!quiet) {
         std::printf("%s: ok (%d DOFs, %zu ground-motion samples at %g s)\n", model_path.c_str(),
-                    model.size(), motion.acceleration.size(), motion.dt);
-        print_defaults(config, motion.dt);
+                    model.size(), motion->acceleration.size(), motion->dt);
+        print_defaults(config, motion->dt);
       }
       return kOk;
     }
@@ -271,6 +338,9 @@ int main(int argc, char** argv) {
     std::istringstream lines(e.what());
     for (std::string line; std::getline(lines, line);)
       std::cerr << "isopound: error: " << line << '\n';
+    return kBadInput;
+  } catch (const CLI::ValidationError& e) {
+    std::cerr << "isopound: error: " << e.what() << '\n';
     return kBadInput;
   } catch (const RecordError& e) {
     // Name what pointed at the file: the model key or the command-line option.

@@ -18,6 +18,7 @@
 #include "post/headless.h"
 #include "post/render_png.h"
 #include "solver/core/modes.h"
+#include "solver/io/report.h"
 #include "solver/io/report3d.h"
 #include "solver/io/report_modes2d.h"
 #include "solver/io/units.h"
@@ -94,7 +95,7 @@ int run(const std::string& model_path, const std::string& out_dir,
   std::optional<double> angle;
   if (angle_text) {
     try {
-      angle = parse_quantity_as(*angle_text, dim::kNone);
+      angle = parse_angle(*angle_text);
     } catch (const std::exception& e) {
       std::cerr << "--angle: " << e.what() << '\n';
       return kBadInput;
@@ -232,7 +233,13 @@ int main(int argc, char** argv) {
                  "model's ground_motion.angle)");
   app.add_flag("--no-plan", no_plan, "Skip plan.png (no X server needed)");
   app.add_flag("--strict", strict, "Warnings also give exit code 2");
-  CLI11_PARSE(app, argc, argv);
+  app.set_version_flag("--version", std::string("isopound-pre ") + kIsopoundVersion);
+  // Usage errors are bad input (exit 2), as in isopound and isopound-post; --help exits 0.
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kOk : kBadInput;
+  }
   try {
     return run(model_path, out_dir, angle, no_plan, strict);
   } catch (const InputError& e) {

@@ -146,6 +146,9 @@ ScannedModel scan_model(const std::string& path, ProblemList& problems) {
   } catch (const InputError& e) {
     problems.error(e.what());  // a repeat of the scan's own (non-convex plan) is kept once
   }
+  // Implausible values (solver/io/plausibility.h) are warnings here too: --strict refuses them.
+  if (m.config)
+    for (const std::string& w : m.config->warnings) problems.warning(w);
   return m;
 }
 

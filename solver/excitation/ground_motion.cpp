@@ -325,8 +325,81 @@ bool names_velocity_or_displacement(std::string_view line) {
   throw RecordError(path, 0, std::string("no NPTS/DT header line found (") + kHeaderForms + ")");
 }
 
+// The acceleration unit a PEER header states above its NPTS/DT line, in the forms seen in real
+// files (records/README.md section 3): "ACCELERATION TIME SERIES IN UNITS OF G", "... IN UNITS
+// OF G. FILTER POINTS ...", "Acceleration in g", "The units are (g)".
+struct HeaderUnit {
+  double si = kGravity;  // m/s^2 per value
+  std::string text;      // as written, "CM/S/S"; empty when the header states none
+  int line = 0;          // 1-based
+};
+
+// "CM/S/S" -> 0.01 m/s^2; 0 for a unit not known.
+double acceleration_unit_si(std::string unit) {
+  std::transform(unit.begin(), unit.end(), unit.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
+  std::string seconds;  // CM/SEC/SEC -> CM/S/S
+  for (std::size_t i = 0; i < unit.size();) {
+    const bool sec = unit.compare(i, 3, "SEC") == 0;
+    seconds.push_back(unit[i]);
+    i += sec ? 3 : 1;
+  }
+  unit = std::move(seconds);
+  for (const std::string_view square : {"/S**2", "/S^2", "/S2"}) {  // CM/S**2 -> CM/S/S
+    if (!unit.ends_with(square)) continue;
+    unit.resize(unit.size() - square.size());
+    unit.append("/S/S");  // appended: GCC 12 warns a false -Wrestrict on '+' at -O3
+  }
+  if (unit == "G" || unit == "GS") return kGravity;
+  if (unit == "GAL" || unit == "GALS" || unit == "CM/S/S") return 0.01;
+  if (unit == "M/S/S") return 1.0;
+  if (unit == "MM/S/S") return 0.001;
+  if (unit == "IN/S/S") return 0.0254;
+  if (unit == "FT/S/S") return 0.3048;
+  return 0.0;
+}
+
+HeaderUnit header_unit(const std::string& path, const std::vector<std::string>& lines,
+                       std::size_t header_index) {
+  HeaderUnit out;
+  for (std::size_t i = 0; i < header_index && i < lines.size(); ++i) {
+    std::string upper = lines[i];
+    std::transform(upper.begin(), upper.end(), upper.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
+    std::size_t at = std::string::npos;
+    for (const char* phrase : {"UNITS OF ", "UNITS ARE ", "ACCELERATION IN "}) {
+      at = upper.find(phrase);
+      if (at != std::string::npos) {
+        at += std::string_view(phrase).size();
+        break;
+      }
+    }
+    if (at == std::string::npos) continue;
+    std::string_view rest = trim(std::string_view(lines[i]).substr(at));
+    std::size_t end = 0;
+    while (end < rest.size() && !std::isspace(static_cast<unsigned char>(rest[end])) &&
+           rest[end] != ',')
+      ++end;
+    std::string_view word = rest.substr(0, end);
+    while (!word.empty() && (word.front() == '(' || word.front() == '[')) word.remove_prefix(1);
+    while (!word.empty() && (word.back() == ')' || word.back() == ']' || word.back() == '.' ||
+                             word.back() == ';' || word.back() == ':'))
+      word.remove_suffix(1);
+    out.text = std::string(word);
+    out.line = static_cast<int>(i + 1);
+    out.si = acceleration_unit_si(out.text);
+    if (out.si == 0.0)
+      throw RecordError(path, out.line,
+                        "the header states the unit '" + out.text +
+                            "', not an acceleration unit isopound knows (g, cm/s/s or gal, "
+                            "m/s/s, mm/s/s, in/s/s, ft/s/s)");
+    return out;
+  }
+  return out;
+}
+
 GroundMotion read_peer(const std::string& path, const std::vector<std::string>& lines,
-                       LineReader& reader, const PeerHeader& header, double factor) {
+                       LineReader& reader, const PeerHeader& header, double scale) {
   const int header_line = static_cast<int>(header.index + 1);
 
   // A PEER velocity/displacement file (.VT2/.DT2) has the same layout: refuse it.
@@ -334,6 +407,8 @@ GroundMotion read_peer(const std::string& path, const std::vector<std::string>& 
     if (names_velocity_or_displacement(lines[i]))
       throw RecordError(path, static_cast<int>(i + 1),
                         "this PEER file holds velocity or displacement, not acceleration");
+  const HeaderUnit unit = header_unit(path, lines, header.index);
+  const double factor = unit.si * scale;
 
   long long npts = 0;
   {
@@ -354,6 +429,12 @@ GroundMotion read_peer(const std::string& path, const std::vector<std::string>& 
   GroundMotion motion;
   motion.name = std::filesystem::path(path).stem().string();
   motion.dt = dt;
+  const std::string file = std::filesystem::path(path).filename().string();
+  if (unit.text.empty())
+    motion.unit_note = file + ": the header states no unit: read as g (the PEER convention)";
+  else if (unit.si != kGravity)
+    motion.unit_note = file + ": header line " + std::to_string(unit.line) + " says units of " +
+                       unit.text + ": converted to m/s^2 (x " + fmt(unit.si) + " per value)";
   // A bogus NPTS must not reserve gigabytes before the data prove it: a value takes at least
   // two bytes of the file (a digit and a separator).
   const long long fits = reader.size() > 0 ? static_cast<long long>(reader.size() / 2) : 1LL << 20;
@@ -487,7 +568,9 @@ GroundMotion read_columns(const std::string& path, const std::vector<std::string
     // sample k is at k*dt from the start of the record, as everywhere in isopound.
   } else {
     if (options.dt == 0.0)
-      throw RecordError(path, 0, "no time step: a column file without a time column needs dt > 0");
+      throw RecordError(path, 0,
+                        "no time step: a column file without a time column needs dt > 0" +
+                            std::string(hint));
     if (!(options.dt > 0.0) || !std::isfinite(options.dt))
       throw RecordError(path, 0, "dt = " + fmt(options.dt) + " s: the time step must be > 0");
     dt = options.dt;
@@ -605,9 +688,9 @@ GroundMotion read_record(const std::string& path, const RecordReadOptions& optio
       lines.size() < head_lines)
     throw RecordError(path, 0, "empty file (no header and no data)");
 
-  // PEER files are in g by definition (header line 3) and carry their own DT, so
+  // PEER files state their unit (header line 3, read by read_peer) and carry their own DT, so
   // options.unit and options.dt do not apply to them.
-  const double peer_factor = kGravity * options.scale;
+  const double peer_factor = options.scale;
   switch (options.format) {
     case Format::kPeer: {
       const auto header = find_peer_header(lines, lines.size());

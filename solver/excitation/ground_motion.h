@@ -18,6 +18,9 @@ struct GroundMotion {
   // Second horizontal component (the model's y direction), same dt and length; empty: the
   // motion acts along x only.
   std::vector<double> acceleration_y;
+  // What the reader assumed or converted about the file's unit, for the console ("RSN1.AT2:
+  // header line 3 says UNITS OF CM/S/S: converted to m/s^2"); empty when the header says g.
+  std::string unit_note;
 
   double duration() const { return dt * static_cast<double>(acceleration.size() - 1); }
   // Linear interpolation; 0 outside [0, duration()].
@@ -57,7 +60,7 @@ struct RecordReadOptions {
   int column = 0;
   int time_column = -1;
   double dt = 0.0;                               // s; columns without a time column need it (> 0)
-  AccelerationUnit unit = AccelerationUnit::kG;  // PEER files are always in g
+  AccelerationUnit unit = AccelerationUnit::kG;  // columns only: PEER files state their unit
   double scale = 1.0;                            // multiplies the acceleration
 };
 

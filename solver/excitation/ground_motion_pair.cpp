@@ -9,6 +9,8 @@ namespace isopound {
 GroundMotion combine_pair(const GroundMotion& L, const GroundMotion& T, double angle) {
   GroundMotion out;
   out.name = L.name + "+" + T.name;
+  out.unit_note = L.unit_note;
+  if (!T.unit_note.empty()) out.unit_note += (out.unit_note.empty() ? "" : "\n") + T.unit_note;
   const bool same_dt = std::abs(L.dt - T.dt) <= 1e-12 * std::max(L.dt, T.dt);
   out.dt = same_dt ? L.dt : std::min(L.dt, T.dt);
   const double duration = std::max(L.duration(), T.duration());

@@ -15,7 +15,9 @@
 #include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input3d.h"
 #include "solver/io/site_checks.h"
+#include "solver/structures/building2d.h"
 #include "solver/structures/config3d.h"
+#include "solver/structures/rayleigh_modes.h"
 #include "solver/structures/site_plan.h"
 
 namespace isopound {
@@ -99,11 +101,7 @@ IsolatorConfig read_isolator(const InputNode& node) {
       qw->fail(
           "must be > 0 for the bilinear and bouc_wen models (an isolator without strength is "
           "model: linear)");
-    // Q/W is a fraction of the weight: a bare 5 is 500 %, never meant.
-    if (iso.strength_ratio > 1.0)
-      qw->fail("Q/W is a fraction of the weight: '" + qw->string() + "' is " +
-               std::to_string(static_cast<long>(std::lround(iso.strength_ratio * 100))) +
-               " %; did you mean '" + qw->string() + " %'?");
+    // Q/W > 1 (a bare 5 is 500 %) is refused by the plausibility table (plausibility.h).
   } else {
     node.note_default("QW", "0.05");
   }
@@ -353,7 +351,7 @@ PulseParameters read_pulse(const InputNode& node) {
     p.gamma = gamma->number();
     if (!(p.gamma > 1.0)) gamma->fail("must be > 1 (got '" + gamma->string() + "')");
   }
-  node.read_number("phase", Bound::kAny, p.phase);  // "90 deg" or radians
+  node.read_angle("phase", p.phase);  // "90 deg" or "1.57 rad"
   node.read_quantity("t_peak", dim::kTime, Bound::kNonNegative, p.t_peak);
   node.read_quantity("duration", dim::kTime, Bound::kPositive, p.duration);
   node.read_quantity("dt", dim::kTime, Bound::kPositive, p.dt);
@@ -410,13 +408,25 @@ GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& 
     for (const char* key : {"column", "time_column", "dt", "unit"})
       if (written(node.yaml(), key))
         node.find(key)->fail(
-            "not used: a PEER .AT2 record carries its own NPTS/DT and is in g (use 'scale' to "
-            "change the amplitude); a PEER record uses: record, format, scale, extra_time");
+            "not used: a PEER .AT2 record carries its own NPTS/DT and states its unit in its "
+            "header (use 'scale' to change the amplitude); a PEER record uses: record, format, "
+            "scale, extra_time");
     return g;
   }
   // Unknown (the file cannot be read now; reading it later reports why): the column keys are
   // read as given, without requiring any.
   const bool known = effective == Format::kColumns;
+  // Read as columns only because no NPTS/DT line was found: say so when a column key is missing.
+  const std::string as_columns =
+      known && !format ? " (no NPTS/DT header line was found in '" +
+                             fs::path(g.record_path).filename().string() +
+                             "', so it is read as a plain column file, which needs it; write "
+                             "format: columns to say so, or check the PEER header)"
+                       : "";
+  for (const char* key : {"dt", "unit"})
+    if (!as_columns.empty() && !written(node.yaml(), key) &&
+        !(std::string_view(key) == "dt" && written(node.yaml(), "time_column")))
+      node.fail_at_key(key, "missing required key '" + std::string(key) + "'" + as_columns);
   node.read_integer("column", 0, kIntMax, read.column);
   const auto time_column = node.find("time_column");
   if (time_column) {
@@ -504,6 +514,21 @@ ImpactLawUses read_impact_law(const InputNode& node, ImpactLawConfig& config) {
   return read_impact(node, config);
 }
 
+namespace {
+
+// Rayleigh damping at two fixed-base modes of (nearly) equal frequency is refused at its key
+// (rayleigh_modes.h); any other inconsistency is reported when the model is built, as before.
+void check_damping_modes2d(const InputNode& building, const BuildingConfig& b) {
+  try {
+    superstructure_damping(b);
+  } catch (const RayleighModesError& e) {
+    building.fail_at_key("damping.superstructure.modes", e.what());
+  } catch (const std::invalid_argument&) {
+  }
+}
+
+}  // namespace
+
 ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
                        const std::string& base_dir, std::vector<std::string>* used_keys,
                        ProblemList* site_problems) {
@@ -531,9 +556,13 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
             "take their impact law in their own section");
       model.building = read_building(top.required("building"));
     }
+    if (model.structures3d.empty()) check_damping_modes2d(top.required("building"), model.building);
     if (const auto list = top.find("neighbours")) {
       if (!list->is_sequence()) list->fail("must be a list of neighbours");
-      for (const InputNode& n : list->elements()) model.neighbours.push_back(read_neighbour(n));
+      for (const InputNode& n : list->elements()) {
+        model.neighbours.push_back(read_neighbour(n));
+        check_damping_modes2d(n.required("building"), model.neighbours.back().building);
+      }
       check_site2d(model, list->elements(), problems);
       if (!site_problems) problems.throw_errors();
     }
@@ -564,6 +593,7 @@ ModelConfig load_model(const YAML::Node& root, const std::string& source_name,
     if (used_keys) *used_keys = top.used_keys();
     top.refuse_unused();
     for (const DefaultUsed& d : top.defaults_used()) model.defaults.emplace_back(d.key, d.value);
+    model.warnings = top.warnings();
     return model;
   } catch (const YAML::Exception& e) {
     // Not expected (keys are found by iteration, never indexed), but keep the promise of

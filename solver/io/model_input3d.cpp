@@ -11,6 +11,8 @@
 #include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/pounding3d.h"
+#include "solver/structures/rayleigh_modes.h"
 
 namespace isopound {
 namespace {
@@ -72,7 +74,7 @@ void read_column_props(const InputNode& node, ColumnProps& p) {
   }
   for (auto [key, out] : {std::pair{"I11", &p.I11}, {"I22", &p.I22}, {"J", &p.J}})
     if (const auto n = node.find(key)) *out = n->quantity(kAreaMoment, Bound::kPositive);
-  node.read_number("orientation", Bound::kAny, p.orientation);
+  node.read_angle("orientation", p.orientation);
   if (const auto n = node.find("E")) p.E = n->quantity(dim::kPressure, Bound::kPositive);
   if (const auto n = node.find("G")) p.G = n->quantity(dim::kPressure, Bound::kPositive);
   if (const auto n = node.find("nu")) {
@@ -176,8 +178,6 @@ BearingConfig read_bearing_law(const InputNode& node) {
     c.strength_ratio = qw->number(Bound::kNonNegative);
     if (c.strength_ratio == 0.0)
       qw->fail("must be > 0 for a yielding bearing (a bearing without strength is model: linear)");
-    if (c.strength_ratio > 1.0)
-      qw->fail("Q/W is a fraction of the weight: did you mean '" + qw->string() + " %'?");
   } else {
     node.note_default("QW", "0.05");
   }
@@ -291,7 +291,7 @@ Building3DConfig read_building3d(const InputNode& node) {
     if (b.name.empty()) n->fail("must not be empty");
   }
   if (const auto p = node.find("position")) b.position = read_point(*p);
-  node.read_number("rotation", Bound::kAny, b.rotation);
+  node.read_angle("rotation", b.rotation);
   node.read_boolean("isolated", b.isolated);
   if (const auto r = node.find("polar_moment_rule"))
     b.polar_moment_rule = r->choice<EccentricPolarMoment>(
@@ -576,6 +576,15 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
   std::vector<Building3DConfig> out;
   for (const InputNode& item : node.elements()) {
     out.push_back(read_building3d(item));
+    try {
+      check_damping_modes(out.back());
+    } catch (const RayleighModesError& e) {
+      const auto damping = item.find("damping");
+      if (damping && damping->has("modes")) damping->required("modes").fail(e.what());
+      item.fail_at_key("damping", std::string(e.what()) + " (modes [1, 4] is the default)");
+    } catch (const std::invalid_argument&) {
+      // Any other inconsistency is reported when the model is built, as before.
+    }
     for (std::size_t k = 0; k + 1 < out.size(); ++k)
       if (out[k].name == out.back().name)
         item.fail_at_key("name", "two structures are named '" + out.back().name + "'");
@@ -598,7 +607,7 @@ GroundMotionConfig read_ground_motion_pair(
   node.expect_keys({"L", "T", "angle", "extra_time"});
   GroundMotionConfig g;
   node.read_quantity("extra_time", dim::kTime, Bound::kNonNegative, g.extra_time);
-  node.read_number("angle", Bound::kAny, g.angle);
+  node.read_angle("angle", g.angle);
   for (const InputNode& c : {*l, *t}) {
     if (c.has("extra_time"))
       c.find("extra_time")->fail("give extra_time once, at ground_motion, for the pair");

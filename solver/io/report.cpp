@@ -2,6 +2,8 @@
 // JSON key ends in its unit (_m, _s, _N, _J, _m_s2) or is dimensionless.
 #include "solver/io/report.h"
 
+#include <filesystem>
+
 #include <optional>
 
 #include "solver/elements/polygon_contact.h"
@@ -166,7 +168,22 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
   const Model& model = job.model;
   json j;
   j["isopound_version"] = kIsopoundVersion;
-  j["model_file"] = config.source;
+  // Absolute, so that isopound-post finds the model from any directory; the text as given and
+  // the directory it was resolved from say how.
+  {
+    std::error_code ec;
+    const std::filesystem::path cwd = std::filesystem::current_path(ec);
+    const std::filesystem::path given(config.source);
+    const bool is_file = !config.source.empty() && config.source.front() != '(';
+    j["model_file"] = is_file && !ec
+                          ? (given.is_absolute() ? given : cwd / given).lexically_normal().string()
+                          : config.source;
+    if (is_file) {
+      j["model_file_as_given"] = config.source;
+      j["model_file_resolved_from"] = ec ? std::string() : cwd.string();
+    }
+  }
+  j["warnings"] = config.warnings;  // implausible values (solver/io/plausibility.h)
 
   const GroundMotionConfig& g = config.ground_motion;
   j["ground_motion"] = {{"name", job.motion.name},

@@ -325,4 +325,26 @@ double parse_quantity_as(std::string_view text, const Dimension& expected) {
   return q.si;
 }
 
+double parse_angle(std::string_view text) {
+  const Quantity q = parse_quantity(text);
+  const std::string_view unit = split_quantity(text).unit;
+  if (!q.has_unit) {
+    const std::string number = readable_number(q.si);
+    throw UnitError(quoted(trim(text)) + " is an angle without a unit: '" + number + " deg' is " +
+                    readable_number(q.si * std::numbers::pi / 180.0) + " rad, '" + number +
+                    " rad' is " + readable_number(q.si * 180.0 / std::numbers::pi) +
+                    " deg; did you mean '" + number + " deg'? Write the unit");
+  }
+  if (unit != "deg" && unit != "rad" && unit != "\xC2\xB0")
+    throw UnitError("unit " + quoted(unit) +
+                    " is not an angle unit: write deg or rad (e.g. '30 deg')");
+  return q.si;
+}
+
+std::string readable_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
 }  // namespace isopound

@@ -53,4 +53,12 @@ Quantity parse_quantity(std::string_view text);
 // Parses and checks the dimension. A bare number is taken as SI of `expected`.
 double parse_quantity_as(std::string_view text, const Dimension& expected);
 
+// An angle in rad from "30 deg", "30 \u00b0" or "0.5 rad". A bare number is refused: "30" could be
+// 30 deg or 30 rad (1718.9 deg), and the message names both readings.
+double parse_angle(std::string_view text);
+
+// A number as people write it: 1e+308 as "1e+308", 0.003 as "0.003" (%g with 6 digits), never
+// the 309 digits of std::to_string.
+std::string readable_number(double value);
+
 }  // namespace isopound

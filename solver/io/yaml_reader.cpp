@@ -2,6 +2,8 @@
 // yaml-cpp 0.7: never index a missing key (InvalidNode, no position); look keys up by iterating.
 #include "solver/io/yaml_reader.h"
 
+#include "solver/io/plausibility.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -11,6 +13,8 @@
 #include <iterator>
 #include <limits>
 #include <mutex>
+#include <numbers>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -91,6 +95,18 @@ std::set<std::string>& registry() {
   static std::set<std::string> keys;
   return keys;
 }
+std::vector<std::pair<std::string, Dimension>>& quantity_registry() {
+  static std::vector<std::pair<std::string, Dimension>> keys;
+  return keys;
+}
+
+void register_quantity_key(const std::string& key, const Dimension& d) {
+  const std::lock_guard<std::mutex> lock(registry_mutex());
+  auto& keys = quantity_registry();
+  for (const auto& [k, dimension] : keys)
+    if (k == key && dimension == d) return;
+  keys.emplace_back(key, d);
+}
 
 std::string format_si(double value, const Dimension& d) {
   std::ostringstream os;
@@ -119,6 +135,7 @@ struct KeyLedger {
   };
   std::vector<Map> maps;
   std::vector<DefaultUsed> defaults;
+  std::vector<std::string> warnings;
 
   Map& at(const std::string& path, const YAML::Node& node) {
     for (Map& m : maps)
@@ -131,6 +148,11 @@ struct KeyLedger {
 std::vector<std::string> known_model_keys() {
   const std::lock_guard<std::mutex> lock(registry_mutex());
   return {registry().begin(), registry().end()};
+}
+
+std::vector<std::pair<std::string, Dimension>> known_quantity_keys() {
+  const std::lock_guard<std::mutex> lock(registry_mutex());
+  return quantity_registry();
 }
 
 InputError::InputError(std::string file, int line, int column, std::string key, std::string what)
@@ -186,6 +208,10 @@ void InputNode::note_default(std::string_view key, std::string value) const {
 
 std::vector<DefaultUsed> InputNode::defaults_used() const {
   return ledger_ ? ledger_->defaults : std::vector<DefaultUsed>{};
+}
+
+std::vector<std::string> InputNode::warnings() const {
+  return ledger_ ? ledger_->warnings : std::vector<std::string>{};
 }
 
 std::vector<std::string> InputNode::used_keys() const {
@@ -376,8 +402,10 @@ double InputNode::quantity(const Dimension& expected, Bound bound) const {
     fail("expected a number with an optional unit (e.g. '340 t', '2 s', '5 %'), got " + kind());
   const std::string text = string();
   double value = 0.0;
+  bool has_unit = false;
   try {
     value = parse_quantity_as(text, expected);
+    has_unit = parse_quantity(text).has_unit;
   } catch (const UnitError& e) {
     fail(e.what());
   }
@@ -398,6 +426,38 @@ double InputNode::quantity(const Dimension& expected, Bound bound) const {
       if (!(value >= 0.0 && value < 1.0)) fail("must be in [0, 1), e.g. '5 %' or 0.05" + got);
       break;
   }
+  if (ledger_) check_plausibility(expected, value, text, has_unit);
+  return value;
+}
+
+// The plausibility table (plausibility.h) for tracked reads: an impossible value is an error,
+// an implausible one a warning kept in the ledger. Registers the key as numeric.
+void InputNode::check_plausibility(const Dimension& expected, double value, const std::string& text,
+                                   bool has_unit) const {
+  register_quantity_key(generic_path(path_), expected);
+  const PlausibilityVerdict verdict = check_plausible(path_, expected, value, text, has_unit);
+  if (verdict.level == Plausibility::kError) fail(verdict.message);
+  if (verdict.level == Plausibility::kWarning) {
+    const YAML::Mark m = mark();
+    std::string warning = InputError(file_, has_position(m) ? m.line + 1 : 0,
+                                     has_position(m) ? m.column + 1 : 0, path_, verdict.message)
+                              .what();
+    auto& all = ledger_->warnings;
+    if (std::find(all.begin(), all.end(), warning) == all.end()) all.push_back(std::move(warning));
+  }
+}
+
+double InputNode::angle() const {
+  if (node_.IsDefined() && (node_.IsMap() || node_.IsSequence()))
+    fail("expected an angle with its unit (e.g. '30 deg'), got " + kind());
+  const std::string text = string();
+  double value = 0.0;
+  try {
+    value = parse_angle(text);
+  } catch (const UnitError& e) {
+    fail(e.what());
+  }
+  if (ledger_) register_quantity_key(generic_path(path_), dim::kNone);
   return value;
 }
 
@@ -445,6 +505,12 @@ void InputNode::read_number(std::string_view key, Bound bound, double& out) cons
   else
     note_default(key, format_si(out, dim::kNone));
 }
+void InputNode::read_angle(std::string_view key, double& out) const {
+  if (const auto child = find(key))
+    out = child->angle();
+  else
+    note_default(key, format_si(out * 180.0 / std::numbers::pi, dim::kNone) + " deg");
+}
 void InputNode::read_integer(std::string_view key, int min, int max, int& out) const {
   if (const auto child = find(key))
     out = child->integer(min, max);
@@ -472,6 +538,49 @@ void InputNode::fail_unknown_choice(const std::string& text,
   fail("unknown " + noun + " '" + text + "'; allowed: " + join(names));
 }
 
+namespace {
+
+// A NUL byte, or many control characters, in the first 4 kB: not a text file.
+void refuse_binary(const std::string& text, const std::string& path, std::string_view what) {
+  const std::size_t n = std::min<std::size_t>(text.size(), 4096);
+  std::size_t control = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == 0)
+      throw InputError(path, 0, 0, "",
+                       "is a binary file (a NUL byte at byte " + std::to_string(i + 1) + "), not " +
+                           std::string(what) + " (YAML text)");
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f') ++control;
+  }
+  if (control > 8 && control * 20 > n)
+    throw InputError(path, 0, 0, "",
+                     "is a binary file (" + std::to_string(control) +
+                         " control characters in its first " + std::to_string(n) + " bytes), not " +
+                         std::string(what) + " (YAML text)");
+}
+
+// The 1-based line and column of the first tab in a line's leading white space.
+std::optional<std::pair<int, int>> first_indenting_tab(const std::string& text) {
+  int line = 1;
+  bool leading = true;
+  int column = 0;
+  for (char c : text) {
+    ++column;
+    if (c == '\n') {
+      ++line;
+      column = 0;
+      leading = true;
+      continue;
+    }
+    if (!leading) continue;
+    if (c == '\t') return std::pair{line, column};
+    if (c != ' ') leading = false;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::string read_input_file(const std::string& path, std::string_view expected) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path, 0, 0, "", "file not found");
@@ -488,10 +597,16 @@ YAML::Node parse_single_document(const std::string& text, const std::string& pat
                                  std::string_view what) {
   const auto line = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.line + 1; };
   const auto column = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.column + 1; };
+  refuse_binary(text, path, what);
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
+    // YAML indents with spaces only; yaml-cpp's own message does not say a tab was the cause.
+    if (const auto tab = first_indenting_tab(text))
+      throw InputError(path, tab->first, tab->second, "",
+                       "a tab character in the indentation: YAML indents with spaces only "
+                       "(replace the tab by spaces)");
     throw InputError(path, line(e.mark), column(e.mark), "", "YAML syntax error: " + e.msg);
   }
   if (documents.size() > 1) {

@@ -65,6 +65,9 @@ struct KeyLedger;  // what a tracked read looked up (yaml_reader.cpp)
 // Every key path a tracked read has ever looked up in this process, list indices dropped
 // ("building.walls.k_h", "neighbours.building.floors.mass"): the reader's own schema.
 std::vector<std::string> known_model_keys();
+// Every key path a tracked read has read as a quantity or number, with the dimension read
+// (angles as dimensionless): the numeric part of the schema, for the plausibility tests.
+std::vector<std::pair<std::string, Dimension>> known_quantity_keys();
 
 // A node of an input file together with its key path ("building.floors[1].mass") and the
 // nearest known position. Nodes built in code have no mark: errors then point at the nearest
@@ -104,6 +107,9 @@ class InputNode {
   double quantity(const Dimension& expected, Bound bound = Bound::kAny) const;
   // A dimensionless number; "5 %" and "0.05" both give 0.05.
   double number(Bound bound = Bound::kAny) const { return quantity(dim::kNone, bound); }
+  // An angle in rad; the text must say deg or rad (a bare number is refused, naming both
+  // readings: parse_angle in units.h).
+  double angle() const;
   int integer(int min, int max) const;
   bool boolean() const;  // true/false, yes/no, on/off
   std::string string() const;
@@ -137,6 +143,7 @@ class InputNode {
   void read_quantity(std::string_view key, const Dimension& expected, Bound bound,
                      double& out) const;
   void read_number(std::string_view key, Bound bound, double& out) const;
+  void read_angle(std::string_view key, double& out) const;
   void read_integer(std::string_view key, int min, int max, int& out) const;
   void read_boolean(std::string_view key, bool& out) const;
   void read_string(std::string_view key, std::string& out) const;
@@ -148,6 +155,8 @@ class InputNode {
   // Records that `key` of this map was absent and `value` is used instead.
   void note_default(std::string_view key, std::string value) const;
   std::vector<DefaultUsed> defaults_used() const;
+  // Legal but implausible values read so far (plausibility.h), "file:line:col: key: what".
+  std::vector<std::string> warnings() const;
   // Every key path looked up so far, list indices dropped ("building.walls.k"), sorted.
   std::vector<std::string> used_keys() const;
 
@@ -162,6 +171,8 @@ class InputNode {
             YAML::Mark parent_mark, std::shared_ptr<KeyLedger> ledger);
   void note_used(std::string_view key) const;
   void note_choice(const std::string& text) const;
+  void check_plausibility(const Dimension& expected, double value, const std::string& text,
+                          bool has_unit) const;
   YAML::Mark mark() const;  // the best known 0-based position, possibly null
   std::string child_path(std::string_view key) const;
   [[noreturn]] void fail_unknown_choice(const std::string& text,

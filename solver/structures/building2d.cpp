@@ -10,6 +10,7 @@
 #include "solver/elements/uniaxial_link.h"
 #include "solver/structures/bearing.h"
 #include "solver/structures/isolator.h"
+#include "solver/structures/rayleigh_modes.h"
 
 namespace isopound {
 
@@ -50,6 +51,7 @@ Eigen::MatrixXd superstructure_damping(const BuildingConfig& b) {
   if (d.mode_a < 1 || d.mode_b < 1 || d.mode_a > n || d.mode_b > n || d.mode_a == d.mode_b)
     throw std::invalid_argument("Rayleigh damping needs two distinct modes in 1.." +
                                 std::to_string(n) + " of the fixed-base superstructure");
+  require_distinct_modes(modes.omega, d.mode_a, d.mode_b, "the fixed-base superstructure");
   const double wa = modes.omega[d.mode_a - 1];
   const double wb = modes.omega[d.mode_b - 1];
   const double a0 = 2.0 * d.ratio * wa * wb / (wa + wb);

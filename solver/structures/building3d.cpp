@@ -9,6 +9,7 @@
 
 #include "solver/core/modes.h"
 #include "solver/structures/bearing_element.h"
+#include "solver/structures/rayleigh_modes.h"
 
 namespace isopound {
 
@@ -145,6 +146,7 @@ Eigen::MatrixXd rayleigh(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
   if (d.mode_a < 1 || d.mode_b < 1 || d.mode_a > count || d.mode_b > count || d.mode_a == d.mode_b)
     throw std::invalid_argument("Rayleigh damping needs two distinct modes in 1.." +
                                 std::to_string(count) + " of " + what);
+  require_distinct_modes(modes.omega, d.mode_a, d.mode_b, what);
   const double wa = modes.omega[d.mode_a - 1], wb = modes.omega[d.mode_b - 1];
   // xi = a0 / (2 omega) + a1 omega / 2 at both modes.
   Eigen::Matrix2d A;
@@ -326,6 +328,19 @@ LinearModel3D linear_model3d(const Building3DConfig& b, bool initial, bool fixed
   LinearModel3D m{a.mass, a.stiffness, a.influence, a.dofs};
   if (with_base) add_bearing_springs(m.stiffness, a, bearing_stiffnesses(b, a, initial));
   return m;
+}
+
+void check_damping_modes(const Building3DConfig& b) {
+  const Damping3DConfig& d = b.damping;
+  if (d.type == Damping3DConfig::Type::kNone) return;
+  const bool non_classical = d.type == Damping3DConfig::Type::kNonClassical;
+  const LinearModel3D m =
+      linear_model3d(b, !non_classical && d.initial_bearing_stiffness, non_classical);
+  const Modes modes = compute_modes(m.stiffness, m.mass, m.influence.col(0));
+  require_distinct_modes(modes.omega, d.mode_a, d.mode_b,
+                         non_classical && b.isolated
+                             ? "the fixed-base superstructure of building '" + b.name + "'"
+                             : "building '" + b.name + "'");
 }
 
 }  // namespace isopound

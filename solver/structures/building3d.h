@@ -42,4 +42,8 @@ struct LinearModel3D {
 LinearModel3D linear_model3d(const Building3DConfig& building, bool initial_bearing_stiffness,
                              bool fixed_base_superstructure);
 
+// Refuses (RayleighModesError, rayleigh_modes.h) Rayleigh or non-classical damping at two
+// modes of equal or nearly equal frequency, for the model input to report at its key.
+void check_damping_modes(const Building3DConfig& building);
+
 }  // namespace isopound

@@ -182,6 +182,9 @@ struct ModelConfig {
   // Keys the file did not give and the values used for them ("building.walls[0].mass",
   // "500000 kg"): printed in the settings block and summary.json, so no default is silent.
   std::vector<std::pair<std::string, std::string>> defaults;
+  // Legal but implausible values ("file:line:col: key: what", solver/io/plausibility.h):
+  // printed in the run and in summary.json; --strict refuses them.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace isopound

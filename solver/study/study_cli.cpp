@@ -2,6 +2,8 @@
 // the sweep spreads over the ranks, and only rank 0 prints.
 #include "solver/study/study_cli.h"
 
+#include "solver/study/cli_contract.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -85,7 +87,7 @@ StudyCommands add_study_commands(CLI::App& app) {
                                        "ranks); results go to an SQLite database");
   sweep->add_option("study", o.study_path, "Study file (YAML)")->required();
   sweep->add_option("-j,--jobs", o.sweep.jobs, "Worker threads per rank (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(at_least(0));
   sweep->add_option("--db", o.sweep.db_path,
                     "Results database (default: <study>.db in the current directory)");
   sweep->add_flag("--resume", o.sweep.resume,

@@ -348,6 +348,8 @@ class StudyReader {
         written.ends_with("deg") || written.ends_with("\xC2\xB0")) {
       scale = 180.0 / std::numbers::pi;
       unit = "deg";
+    } else if (written.ends_with("rad")) {
+      unit = "rad";  // a bare angle is refused by the model reader (units.h, parse_angle)
     }
     std::vector<Level> levels;
     for (std::int64_t i = 0; i < count; ++i) {

@@ -1,0 +1,210 @@
+// The table of plausible ranges and its check (interface: plausibility.h; documented in
+// docs/plausibility.md, which lists the same rows). Hard ranges are wide: only values that no
+// building can have (a 15 m moat gap, a friction coefficient of 8) are errors; the plausible
+// ranges cover real base-isolated buildings, so toy models warn but still run.
+#include "solver/io/plausibility.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "solver/core/constants.h"
+
+namespace isopound {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr Dimension kLinearMass{-1, 1, 0};  // kg/m
+
+// clang-format off
+constexpr std::array<PlausibleRange, 35> kRanges{{
+  // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
+  {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
+  {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
+  {"gap_right",    dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
+  {"R",            dim::kLength, 0, 100, 0.5, 10, "m", 1, "a friction pendulum radius"},
+  {"uy",           dim::kLength, 0, 1, 1e-4, 0.1, "mm", 1e-3, "a bearing yield displacement"},
+  {"thickness",    dim::kLength, 0, 20, 0.05, 3, "m", 1, "a wall thickness"},
+  {"height",       dim::kLength, 0, 200, 0.2, 20, "m", 1, "a storey or wall height"},
+  {"extension",    dim::kLength, 0, 100, 0, 20, "m", 1, "a wall extension beyond the slab"},
+  {"mass",         dim::kMass, 0, 1e9, 1e3, 1e8, "t", 1e3, "a floor or base-slab mass"},
+  {"roof_mass",    dim::kMass, 0, 1e9, 1e3, 1e8, "t", 1e3, "a roof mass"},
+  {"carried_mass", dim::kMass, 0, 1e9, 0, 1e8, "t", 1e3, "the mass one bearing carries"},
+  {"mass_per_length", kLinearMass, 0, 1e7, 10, 1e5, "t/m", 1e3, "a wall mass per length"},
+  {"stiffness",    dim::kStiffness, 0, 1e14, 1e5, 1e12, "kN/m", 1e3, "a storey or wall stiffness"},
+  {"k",            dim::kStiffness, 0, 1e15, 1e5, 1e13, "kN/m", 1e3, "an impact stiffness"},
+  {"k_h",          dim::kHertzStiffness, 0, 1e16, 1e6, 1e14, "kN/m^1.5", 1e3, "a Hertz impact stiffness"},
+  {"k_tangential", dim::kStiffness, 0, 1e15, 1e4, 1e13, "kN/m", 1e3, "a tangential contact stiffness"},
+  {"k_normal",     dim::kPressure, 0, 1e15, 1e5, 1e13, "kN/m^2", 1e3, "a contact stiffness per area"},
+  {"E",            dim::kPressure, 0, 1e13, 1e8, 1e12, "GPa", 1e9, "an elastic modulus"},
+  {"G",            dim::kPressure, 0, 1e13, 4e7, 5e11, "GPa", 1e9, "a shear modulus"},
+  {"nu",           dim::kNone, 0, 0.5, 0.05, 0.45, "", 1, "a Poisson ratio"},
+  {"mu_slow",      dim::kNone, 0, 1, 0.005, 0.3, "%", 1e-2, "a friction coefficient"},
+  {"mu_fast",      dim::kNone, 0, 1, 0.005, 0.3, "%", 1e-2, "a friction coefficient"},
+  {"mu_static",    dim::kNone, 0, 2, 0, 1, "", 1, "a contact friction coefficient"},
+  {"mu_kinetic",   dim::kNone, 0, 2, 0, 1, "", 1, "a contact friction coefficient"},
+  {"QW",           dim::kNone, 0, 1, 0.005, 0.3, "%", 1e-2, "a bearing strength ratio Q/W"},
+  {"ratio",        dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
+  {"ratios",       dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
+  {"isolation",    dim::kNone, 0, 1, 0, 0.5, "%", 1e-2, "an isolation damping ratio"},
+  {"Tb",           dim::kTime, 0, 30, 0.5, 8, "s", 1, "an isolation period"},
+  {"dt",           dim::kTime, 0, 100, 0, 0.05, "ms", 1e-3, "a time step (analysis: 0 = automatic)"},
+  {"interval",     dim::kTime, 0, 60, 0, 1, "ms", 1e-3, "an output interval"},
+  {"t_end",        dim::kTime, 0, 1e5, 0.01, 1000, "s", 1, "an analysis end time"},
+  {"extra_time",   dim::kTime, 0, 1e4, 0, 300, "s", 1, "free vibration after the record"},
+  {"scale",        dim::kNone, -100, 100, -20, 20, "", 1, "a record scale factor"},
+  {"pga",          dim::kAcceleration, 0, 10 * kGravity, 0.005 * kGravity, 3 * kGravity, "g", kGravity, "a record's peak ground acceleration"},
+}};
+// clang-format on
+
+constexpr std::array<UncheckedKey, 35> kUnchecked{{
+    {"tolerance", "a solver setting (relative error), bounded by the reader"},
+    {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
+    {"steps_per_period", "a solver setting, bounded by the reader"},
+    {"steps_per_contact", "a solver setting, bounded by the reader"},
+    {"participation_threshold", "a solver setting (a mass ratio), bounded by the reader"},
+    {"n", "Bouc-Wen shape exponent (dimensionless, no other unit to mean)"},
+    {"A", "Bouc-Wen shape parameter (dimensionless)"},
+    {"beta", "Bouc-Wen shape parameter (dimensionless)"},
+    {"gamma", "Bouc-Wen or pulse shape parameter (dimensionless)"},
+    {"rate_parameter", "friction rate parameter, s/m: no common other unit"},
+    {"e", "coefficient of restitution, bounded (0, 1] by the reader"},
+    {"damping", "a damping ratio of a wall, bounded [0, 1) by the reader"},
+    {"polar_moment", "kg m^2: depends on the plan; computed when absent"},
+    {"amplitude", "pulse velocity amplitude; the record's peak is checked instead (pga)"},
+    {"period", "pulse period: shape of the built-in pulse"},
+    {"t_peak", "pulse time of the peak: shape of the built-in pulse"},
+    {"duration", "pulse duration: shape of the built-in pulse"},
+    {"min_impact_velocity", "a contact-detection setting"},
+    {"elevation_tolerance", "a contact-detection setting (m)"},
+    {"search_distance", "a contact-detection setting (m)"},
+    {"section", "column b x h: checked against the plan by the site checks"},
+    {"I11", "second moment of area (m^4): depends on the section"},
+    {"I22", "second moment of area (m^4): depends on the section"},
+    {"J", "torsion constant (m^4): depends on the section"},
+    {"bays_x", "grid spacing (m): the site's own geometry"},
+    {"bays_y", "grid spacing (m): the site's own geometry"},
+    {"position", "plan coordinates (m): the site's own geometry, checked by the site checks"},
+    {"rectangle", "plan size (m): the site's own geometry, checked by the site checks"},
+    {"polygon", "plan vertices (m): the site's own geometry, checked by the site checks"},
+    {"eccentricity", "centre-of-mass offset (m): checked against the slab by the site checks"},
+    {"restitution", "coefficient of restitution, bounded by the reader"},
+    {"angle", "an angle: its unit is required (a bare number is an error)"},
+    {"rotation", "an angle: its unit is required (a bare number is an error)"},
+    {"orientation", "an angle: its unit is required (a bare number is an error)"},
+    {"phase", "an angle: its unit is required (a bare number is an error)"},
+}};
+
+// Units a bare number may have been meant in, per dimension, for the hint.
+struct Alternative {
+  Dimension dimension;
+  std::string_view unit;
+  double si;
+};
+constexpr std::array<Alternative, 13> kAlternatives{{
+    {dim::kLength, "cm", 1e-2},
+    {dim::kLength, "mm", 1e-3},
+    {dim::kMass, "t", 1e3},
+    {dim::kStiffness, "kN/m", 1e3},
+    {dim::kStiffness, "kN/mm", 1e6},
+    {dim::kStiffness, "MN/m", 1e6},
+    {dim::kPressure, "MPa", 1e6},
+    {dim::kPressure, "GPa", 1e9},
+    {dim::kTime, "ms", 1e-3},
+    {dim::kNone, "%", 1e-2},
+    {kLinearMass, "t/m", 1e3},
+    {dim::kHertzStiffness, "kN/m^1.5", 1e3},
+    {dim::kHertzStiffness, "MN/m^1.5", 1e6},
+}};
+
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", x);
+  return buffer;
+}
+
+// "15 cm" for 0.15 m in the row's unit.
+std::string in_unit(double si, const PlausibleRange& r) {
+  // Appended, not '+': GCC 12 warns a false -Wrestrict on "x" + std::string at -O3.
+  std::string out = number(si / r.unit_si);
+  if (!r.unit.empty()) out.append(" ").append(r.unit);
+  return out;
+}
+
+std::string range_text(double lo, double hi, const PlausibleRange& r) {
+  if (hi == kInf) return ">= " + in_unit(lo, r);
+  return in_unit(lo, r) + " to " + in_unit(hi, r);
+}
+
+}  // namespace
+
+std::span<const PlausibleRange> plausible_ranges() {
+  return kRanges;
+}
+
+std::string key_of(std::string_view key_path) {
+  std::string generic;
+  for (std::size_t i = 0; i < key_path.size(); ++i) {
+    if (key_path[i] == '[') {
+      while (i < key_path.size() && key_path[i] != ']') ++i;
+      continue;
+    }
+    generic += key_path[i];
+  }
+  const std::size_t dot = generic.find_last_of('.');
+  return dot == std::string::npos ? generic : generic.substr(dot + 1);
+}
+
+std::span<const UncheckedKey> unchecked_keys() {
+  return kUnchecked;
+}
+
+bool is_unchecked_key(std::string_view key) {
+  for (const UncheckedKey& u : kUnchecked)
+    if (u.key == key) return true;
+  return false;
+}
+
+const PlausibleRange* plausible_range_for(std::string_view key_path, const Dimension& d) {
+  const std::string key = key_of(key_path);
+  for (const PlausibleRange& r : kRanges)
+    if (r.key == key && r.dimension == d) return &r;
+  return nullptr;
+}
+
+PlausibilityVerdict check_plausible(std::string_view key_path, const Dimension& d, double si,
+                                    std::string_view text, bool has_unit) {
+  PlausibilityVerdict verdict;
+  const PlausibleRange* r = plausible_range_for(key_path, d);
+  if (r == nullptr || !std::isfinite(si)) return verdict;
+  const bool hard = si < r->hard_min || si > r->hard_max;
+  if (!hard && si >= r->low && si <= r->high) return verdict;
+  verdict.level = hard ? Plausibility::kError : Plausibility::kWarning;
+  std::string written(text);
+  while (!written.empty() && written.back() == ' ') written.pop_back();
+  while (!written.empty() && written.front() == ' ') written.erase(0, 1);
+  std::string message = "'" + written + "'";
+  if (!has_unit && r->unit_si != 1.0)
+    message += " (a bare number is SI: " + in_unit(si, *r) + ")";
+  message += hard ? " is impossible for " : " is implausible for ";
+  message += std::string(r->what) + " (" +
+             (hard ? "possible: " + range_text(r->hard_min, r->hard_max, *r)
+                   : "plausible: " + range_text(r->low, r->high, *r)) +
+             ")";
+  if (!has_unit) {
+    for (const Alternative& a : kAlternatives) {
+      if (!(a.dimension == d)) continue;
+      const double meant = si * a.si;
+      if (meant >= r->low && meant <= r->high) {
+        message += "; did you mean '" + number(si) + " " + std::string(a.unit) + "'?";
+        break;
+      }
+    }
+  }
+  if (!hard) message += " (--strict makes this an error)";
+  verdict.message = std::move(message);
+  return verdict;
+}
+
+}  // namespace isopound
