@@ -6,13 +6,11 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 namespace isopound {
 namespace {
@@ -118,13 +116,17 @@ struct KeyLedger {
     std::vector<std::string> choices;
   };
   std::vector<Map> maps;
+  std::unordered_map<std::string, std::size_t> index;  // path -> maps[i]: a lookup is O(1)
   std::vector<DefaultUsed> defaults;
 
   Map& at(const std::string& path, const YAML::Node& node) {
-    for (Map& m : maps)
-      if (m.path == path) return m;
-    maps.push_back(Map{node, path, {}, {}});
-    return maps.back();
+    const auto [it, added] = index.try_emplace(path, maps.size());
+    if (added) maps.push_back(Map{node, path, {}, {}});
+    return maps[it->second];
+  }
+  Map* find(const std::string& path) {
+    const auto it = index.find(path);
+    return it == index.end() ? nullptr : &maps[it->second];
   }
 };
 
@@ -175,8 +177,7 @@ void InputNode::note_choice(const std::string& text) const {
   const std::string parent = dot == std::string::npos ? "" : path_.substr(0, dot);
   const std::string key = dot == std::string::npos ? path_ : path_.substr(dot + 1);
   if (key.find('[') != std::string::npos) return;  // a list item is not a key of a map
-  for (KeyLedger::Map& m : ledger_->maps)
-    if (m.path == parent) m.choices.push_back(key + ": " + text);
+  if (KeyLedger::Map* m = ledger_->find(parent)) m->choices.push_back(key + ": " + text);
 }
 
 void InputNode::note_default(std::string_view key, std::string value) const {
@@ -470,37 +471,6 @@ void InputNode::fail_unknown_choice(const std::string& text,
   std::string noun = dot == std::string::npos ? path_ : path_.substr(dot + 1);
   if (noun.empty()) noun = "value";
   fail("unknown " + noun + " '" + text + "'; allowed: " + join(names));
-}
-
-std::string read_input_file(const std::string& path, std::string_view expected) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path, 0, 0, "", "file not found");
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path, 0, 0, "", "is a directory, expected " + std::string(expected));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, "", "cannot open the file");
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError(path, 0, 0, "", "cannot read the file");
-  return text;
-}
-
-YAML::Node parse_single_document(const std::string& text, const std::string& path,
-                                 std::string_view what) {
-  const auto line = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.line + 1; };
-  const auto column = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.column + 1; };
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, line(e.mark), column(e.mark), "", "YAML syntax error: " + e.msg);
-  }
-  if (documents.size() > 1) {
-    const YAML::Mark second =
-        documents[1].IsDefined() ? documents[1].Mark() : YAML::Mark::null_mark();
-    throw InputError(path, line(second), column(second), "",
-                     "more than one YAML document ('---'); " + std::string(what) + " holds one");
-  }
-  return documents.empty() ? YAML::Node() : documents.front();
 }
 
 }  // namespace isopound
