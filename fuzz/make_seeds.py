@@ -90,7 +90,7 @@ def dictionary():
     syntax = ["---", "...", ": ", "- ", "[", "]", "{", "}", ", ", "&a ", "*a", "~", '"', "'", "|\n",
               ">\n", "? ", "!!str ", "%YAML 1.2", "#", "\n  ", "\n    ", "1e308", "-0", "nan",
               ".inf", "true", "false"]
-    esc = lambda t: t.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+    esc = lambda t: t.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\x0A")
     with open(os.path.join(ROOT, "fuzz", "dict", "model.dict"), "w") as d:
         d.write("# libFuzzer dictionary for the model and study readers: their keys (the readers'\n"
                 "# string literals), the units of units.cpp and YAML syntax. fuzz/make_seeds.py.\n")
