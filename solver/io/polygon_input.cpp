@@ -2,6 +2,11 @@
 // file of `isopound geometry overlap`. Validation is ConvexPolygon's; messages gain file:line:key.
 #include "solver/io/polygon_input.h"
 
+#ifdef ISOPOUND_FUZZ_PLANTED_BUG
+#include <cstring>
+#include <memory>
+#endif
+
 namespace isopound {
 
 ConvexPolygon read_polygon(const InputNode& node) {
@@ -35,6 +40,16 @@ std::vector<PolygonPair> load_polygon_pairs_file(const std::string& path) {
     item.expect_keys({"name", "a", "b"});
     std::string name;
     item.read_string("name", name);
+#ifdef ISOPOUND_FUZZ_PLANTED_BUG
+    // Planted for the fuzzers' self-test only (fuzz/CMakeLists.txt): a name of 8, 16, ...
+    // characters reads one byte past a heap copy of it.
+    if (!name.empty() && name.size() % 8 == 0) {
+      const std::unique_ptr<char[]> copy(new char[name.size()]);
+      std::memcpy(copy.get(), name.data(), name.size());
+      const volatile char past_the_end = copy[name.size()];
+      (void)past_the_end;
+    }
+#endif
     pairs.push_back({name, read_polygon(item.required("a")), read_polygon(item.required("b"))});
   }
   if (pairs.empty()) list.fail("no pairs: give at least one {a: ..., b: ...}");

@@ -8,15 +8,13 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <mutex>
 #include <numbers>
 #include <optional>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 namespace isopound {
 namespace {
@@ -134,14 +132,18 @@ struct KeyLedger {
     std::vector<std::string> choices;
   };
   std::vector<Map> maps;
+  std::unordered_map<std::string, std::size_t> index;  // path -> maps[i]: a lookup is O(1)
   std::vector<DefaultUsed> defaults;
   std::vector<std::string> warnings;
 
   Map& at(const std::string& path, const YAML::Node& node) {
-    for (Map& m : maps)
-      if (m.path == path) return m;
-    maps.push_back(Map{node, path, {}, {}});
-    return maps.back();
+    const auto [it, added] = index.try_emplace(path, maps.size());
+    if (added) maps.push_back(Map{node, path, {}, {}});
+    return maps[it->second];
+  }
+  Map* find(const std::string& path) {
+    const auto it = index.find(path);
+    return it == index.end() ? nullptr : &maps[it->second];
   }
 };
 
@@ -197,8 +199,7 @@ void InputNode::note_choice(const std::string& text) const {
   const std::string parent = dot == std::string::npos ? "" : path_.substr(0, dot);
   const std::string key = dot == std::string::npos ? path_ : path_.substr(dot + 1);
   if (key.find('[') != std::string::npos) return;  // a list item is not a key of a map
-  for (KeyLedger::Map& m : ledger_->maps)
-    if (m.path == parent) m.choices.push_back(key + ": " + text);
+  if (KeyLedger::Map* m = ledger_->find(parent)) m->choices.push_back(key + ": " + text);
 }
 
 void InputNode::note_default(std::string_view key, std::string value) const {
@@ -536,86 +537,6 @@ void InputNode::fail_unknown_choice(const std::string& text,
   std::string noun = dot == std::string::npos ? path_ : path_.substr(dot + 1);
   if (noun.empty()) noun = "value";
   fail("unknown " + noun + " '" + text + "'; allowed: " + join(names));
-}
-
-namespace {
-
-// A NUL byte, or many control characters, in the first 4 kB: not a text file.
-void refuse_binary(const std::string& text, const std::string& path, std::string_view what) {
-  const std::size_t n = std::min<std::size_t>(text.size(), 4096);
-  std::size_t control = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c == 0)
-      throw InputError(path, 0, 0, "",
-                       "is a binary file (a NUL byte at byte " + std::to_string(i + 1) + "), not " +
-                           std::string(what) + " (YAML text)");
-    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f') ++control;
-  }
-  if (control > 8 && control * 20 > n)
-    throw InputError(path, 0, 0, "",
-                     "is a binary file (" + std::to_string(control) +
-                         " control characters in its first " + std::to_string(n) + " bytes), not " +
-                         std::string(what) + " (YAML text)");
-}
-
-// The 1-based line and column of the first tab in a line's leading white space.
-std::optional<std::pair<int, int>> first_indenting_tab(const std::string& text) {
-  int line = 1;
-  bool leading = true;
-  int column = 0;
-  for (char c : text) {
-    ++column;
-    if (c == '\n') {
-      ++line;
-      column = 0;
-      leading = true;
-      continue;
-    }
-    if (!leading) continue;
-    if (c == '\t') return std::pair{line, column};
-    if (c != ' ') leading = false;
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
-std::string read_input_file(const std::string& path, std::string_view expected) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path, 0, 0, "", "file not found");
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path, 0, 0, "", "is a directory, expected " + std::string(expected));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, "", "cannot open the file");
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError(path, 0, 0, "", "cannot read the file");
-  return text;
-}
-
-YAML::Node parse_single_document(const std::string& text, const std::string& path,
-                                 std::string_view what) {
-  const auto line = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.line + 1; };
-  const auto column = [](const YAML::Mark& m) { return m.is_null() ? 0 : m.column + 1; };
-  refuse_binary(text, path, what);
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(text);
-  } catch (const YAML::Exception& e) {
-    // YAML indents with spaces only; yaml-cpp's own message does not say a tab was the cause.
-    if (const auto tab = first_indenting_tab(text))
-      throw InputError(path, tab->first, tab->second, "",
-                       "a tab character in the indentation: YAML indents with spaces only "
-                       "(replace the tab by spaces)");
-    throw InputError(path, line(e.mark), column(e.mark), "", "YAML syntax error: " + e.msg);
-  }
-  if (documents.size() > 1) {
-    const YAML::Mark second =
-        documents[1].IsDefined() ? documents[1].Mark() : YAML::Mark::null_mark();
-    throw InputError(path, line(second), column(second), "",
-                     "more than one YAML document ('---'); " + std::string(what) + " holds one");
-  }
-  return documents.empty() ? YAML::Node() : documents.front();
 }
 
 }  // namespace isopound

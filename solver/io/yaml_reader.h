@@ -37,11 +37,11 @@ class InputError : public std::runtime_error {
   std::string detail_;
 };
 
-// Reads a whole input file; a missing, unreadable or directory path is an InputError (line 0).
-// `expected` names what the file should be, for the message ("a YAML model file").
+// Reads a whole input file; a missing, unreadable or directory path, or one over InputLimits
+// (yaml_document.h: read no further), is an InputError. `expected` names it ("a YAML model file").
 std::string read_input_file(const std::string& path, std::string_view expected);
-// Parses text holding one YAML document (none gives a null node). A syntax error, or a second
-// document ("---"), is an InputError at its line; `what` names the file's kind for the message.
+// Parses text holding one YAML document (none gives a null node). A syntax error, a second document
+// ("---") or a passed InputLimits is an InputError at its line; `what` names the file's kind.
 YAML::Node parse_single_document(const std::string& text, const std::string& path,
                                  std::string_view what);
 
