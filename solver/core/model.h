@@ -41,6 +41,10 @@ struct StructureInfo {
   bool has_base = false;              // level_dofs[0] is an isolated base slab
   std::vector<double> story_heights;  // story s links level s-1 (or ground) and level s
   int isolator_element = -1;          // index into Model::elements, or -1
+  // Per story: index into Model::elements of its hysteretic law, or -1 (a linear spring in K).
+  std::vector<int> story_elements;
+  // A linear story whose peak drift ratio exceeds this is flagged (outputs only; 0: never).
+  double elastic_limit_drift_ratio = 0.0;
 };
 
 // A derived response in plan, for outputs only: two components, each a linear combination of DOF
