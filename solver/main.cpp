@@ -18,12 +18,12 @@
 #include "solver/io/polygon_input.h"
 #include "solver/io/report.h"
 #include "solver/io/report3d.h"
+#include "solver/io/report_modes2d.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
 #include "solver/structures/pushover2d.h"
-#include "solver/io/report_modes2d.h"
 #include "solver/study/ensemble.h"   // run --ensemble N
 #include "solver/study/study_cli.h"  // study commands (sweep, export)
 
@@ -273,8 +273,8 @@ int main(int argc, char** argv) {
         throw std::invalid_argument(std::string("--target-drift: ") + e.what());
       }
       if (!(options.target_drift_ratio > 0 && options.target_drift_ratio < 1))
-        throw std::invalid_argument("--target-drift must be in (0, 100 %), got '" +
-                                    target_drift + "'");
+        throw std::invalid_argument("--target-drift must be in (0, 100 %), got '" + target_drift +
+                                    "'");
       options.pattern = pattern == "uniform" ? Pushover2DOptions::Pattern::kUniform
                                              : Pushover2DOptions::Pattern::kFirstMode;
       options.steps = pushover_steps;

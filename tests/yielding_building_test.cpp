@@ -35,7 +35,8 @@ building:
 ground_motion:
   extra_time: 4 s
   pulse: {amplitude: )" +
-         amplitude + R"(, period: 1.0 s, gamma: 2.5, phase: 90 deg, t_peak: 2 s, duration: 5 s, dt: 5 ms}
+         amplitude +
+         R"(, period: 1.0 s, gamma: 2.5, phase: 90 deg, t_peak: 2 s, duration: 5 s, dt: 5 ms}
 )";
 }
 
@@ -72,8 +73,10 @@ TEST(YieldingBuilding, BilinearWithAHugeYieldDriftIsTheElasticModel) {
   expect_same_peaks(e.drift, b.drift, 1e-9, "drift");
   expect_same_peaks(e.story_shear, b.story_shear, 1e-9, "story shear");
   expect_same_peaks(e.base_shear, b.base_shear, 1e-9, "base shear");
-  const nlohmann::json s = summary_json(load_text(thesis_model(
-      ", hysteresis: {model: bilinear, yield_shear: 60000 MN, post_yield_ratio: 5 %}")), bilinear);
+  const nlohmann::json s = summary_json(
+      load_text(thesis_model(
+          ", hysteresis: {model: bilinear, yield_shear: 60000 MN, post_yield_ratio: 5 %}")),
+      bilinear);
   EXPECT_FALSE(s["structures"][0]["stories"][0]["yielded"].get<bool>());
   EXPECT_TRUE(s["structures"][0]["stories"][0]["first_yield_time_s"].is_null());
 }
@@ -98,9 +101,9 @@ TEST(YieldingBuilding, EnergyBalanceAndDamageMeasuresWithBoucWenStoreys) {
   const nlohmann::json& en = s["energy"];
   const double stories = en["story_hysteretic_J"].get<double>();
   EXPECT_GT(stories, 0.0);
-  EXPECT_NEAR(en["isolator_hysteretic_J"].get<double>() + en["impact_dissipated_J"].get<double>() +
-                  stories,
-              en["hysteretic_J"].get<double>(), 1e-9 * en["input_J"].get<double>());
+  EXPECT_NEAR(
+      en["isolator_hysteretic_J"].get<double>() + en["impact_dissipated_J"].get<double>() + stories,
+      en["hysteretic_J"].get<double>(), 1e-9 * en["input_J"].get<double>());
   // The study outputs read the same measures.
   const auto study = [&](const char* text) {
     return evaluate_output(resolve_output(parse_output_selector(text), job.model), r,
@@ -156,8 +159,8 @@ TEST(YieldingBuilding, AnElasticStoreyBeyondItsLimitIsFlagged) {
   const ModelConfig quiet = load_text(thesis_model("", "", "0.2 m/s"));
   const JobResult calm = run_job(quiet);
   ASSERT_LT(calm.analysis.drift_ratio[0].value, 0.01);
-  EXPECT_FALSE(summary_json(quiet, calm)["structures"][0]["stories"][0].contains(
-      "elastic_limit_exceeded"));
+  EXPECT_FALSE(
+      summary_json(quiet, calm)["structures"][0]["stories"][0].contains("elastic_limit_exceeded"));
 }
 
 struct BadHysteresis {

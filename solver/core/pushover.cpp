@@ -72,8 +72,8 @@ std::vector<PushoverStep> run_pushover(Model& model, const PushoverOptions& o) {
                   std::abs(dlambda) <= 1e-12 * std::max(std::abs(lambda), 1.0);
     }
     if (!converged)
-      throw std::runtime_error("pushover: Newton did not converge at step " +
-                               std::to_string(step) + " of " + std::to_string(o.steps));
+      throw std::runtime_error("pushover: Newton did not converge at step " + std::to_string(step) +
+                               " of " + std::to_string(o.steps));
     linearise(model, u, lambda, o.pattern, tangent, residual);
     for (auto& e : model.elements) e->commit();
     curve.push_back({o.control.dot(u), lambda, u});

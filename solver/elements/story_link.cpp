@@ -6,8 +6,8 @@
 
 namespace isopound {
 
-StoryLink::StoryLink(std::string label, int lower, int upper,
-                     std::unique_ptr<UniaxialMaterial> law, double yield_drift)
+StoryLink::StoryLink(std::string label, int lower, int upper, std::unique_ptr<UniaxialMaterial> law,
+                     double yield_drift)
     : UniaxialLink(std::move(label), lower, upper, std::move(law)), yield_drift_(yield_drift) {
   if (!(yield_drift > 0)) throw std::invalid_argument("story link: yield drift must be > 0");
 }

@@ -54,12 +54,11 @@ StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
                                                   {"peak_oriented", Model::kPeakOriented}});
   const std::string name = node.required("model").string();
   const auto refuse = [&](const char* key) {
-    if (const auto n = node.find(key))
-      n->fail("not used by hysteresis model '" + name + "'");
+    if (const auto n = node.find(key)) n->fail("not used by hysteresis model '" + name + "'");
   };
   if (h.model == Model::kElastic) {
-    for (const char* key : {"yield_drift_ratio", "yield_shear", "yield_shear_coefficient",
-                            "post_yield_ratio"})
+    for (const char* key :
+         {"yield_drift_ratio", "yield_shear", "yield_shear_coefficient", "post_yield_ratio"})
       refuse(key);
     for (const char* key : kBoucWenKeys) refuse(key);
     for (const char* key : kPeakKeys) refuse(key);
@@ -423,8 +422,8 @@ NeighbourConfig read_neighbour(const InputNode& node) {
 }
 
 BuildingConfig read_building(const InputNode& node) {
-  node.expect_keys({"name", "isolated", "base", "floors", "isolator", "damping", "walls",
-                    "p_delta", "elastic_limit_drift_ratio"});
+  node.expect_keys({"name", "isolated", "base", "floors", "isolator", "damping", "walls", "p_delta",
+                    "elastic_limit_drift_ratio"});
   BuildingConfig b;
   if (const auto name = node.find("name")) {
     b.name = name->string();

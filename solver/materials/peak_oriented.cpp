@@ -23,7 +23,9 @@ struct Line {
 struct Piece {
   double value, slope;
 };
-Piece piece(const Line& l, double x) { return {l.at(x), l.slope}; }
+Piece piece(const Line& l, double x) {
+  return {l.at(x), l.slope};
+}
 Piece min_of(Piece a, Piece b) {
   if (a.value < b.value) return a;
   if (b.value < a.value) return b;

@@ -63,18 +63,18 @@ class PeakOrientedMaterial final : public UniaxialMaterial {
 
  private:
   struct Side {
-    double yield_force;      // F_y of this side (deteriorates), N
-    double hardening;        // K_s, N/m
-    double capping_ref;      // F_ref, N
-    double target;           // d_t, magnitude, m
-    double zero_point;       // d_0 (signed) where the current reloading towards it began, m
+    double yield_force;  // F_y of this side (deteriorates), N
+    double hardening;    // K_s, N/m
+    double capping_ref;  // F_ref, N
+    double target;       // d_t, magnitude, m
+    double zero_point;   // d_0 (signed) where the current reloading towards it began, m
   };
   struct State {
     double d = 0.0, force = 0.0, tangent = 0.0;
     double unloading_stiffness = 0.0;
-    double work = 0.0;              // int F dd along the path, J
+    double work = 0.0;                // int F dd along the path, J
     double energy_at_crossing = 0.0;  // sum of E_j of the finished excursions, J
-    Side side[2];                   // [0]: positive, [1]: negative
+    Side side[2];                     // [0]: positive, [1]: negative
   };
   // Force magnitude on the loading branch of side s from (x_c, f_c) to x (x_c <= x), with the
   // exact integral of f over [x_c, x] and the slope at x.
@@ -83,10 +83,10 @@ class PeakOrientedMaterial final : public UniaxialMaterial {
   void deteriorate(State& s, int side, double excursion_energy) const;
 
   PeakOrientedParameters p_;
-  double yield_force_;           // F_y of the initial backbone, N
-  double residual_force_;        // F_r, N
-  double capping_slope_;         // K_c, N/m
-  double reference_energy_;      // E_t = lambda F_y d_y, J (0: no deterioration)
+  double yield_force_;       // F_y of the initial backbone, N
+  double residual_force_;    // F_r, N
+  double capping_slope_;     // K_c, N/m
+  double reference_energy_;  // E_t = lambda F_y d_y, J (0: no deterioration)
   State trial_, committed_;
 };
 

@@ -68,7 +68,7 @@ struct FloorConfig {
   double mass = 0.0;       // kg, lumped at the floor
   double stiffness = 0.0;  // N/m, of the story below this floor
   double height = 0.0;     // m, of the story below this floor
-  StoryHysteresisConfig hysteresis;  // of the story below this floor
+  StoryHysteresisConfig hysteresis{};  // of the story below this floor ({} for {m, k, h})
 };
 
 struct SuperstructureDamping {

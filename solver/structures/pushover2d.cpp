@@ -58,8 +58,7 @@ Pushover2DResult run_pushover2d(const ModelConfig& config, const Pushover2DOptio
       const Story& st = stories[k];
       const double drift = s.u[st.upper] - (st.lower >= 0 ? s.u[st.lower] : 0.0);
       double shear = 0.0;
-      for (std::size_t level = k + (info.has_base ? 1 : 0); level < info.level_dofs.size();
-           ++level)
+      for (std::size_t level = k + (info.has_base ? 1 : 0); level < info.level_dofs.size(); ++level)
         shear += s.lambda * o.pattern[info.level_dofs[level]];
       row.insert(row.end(), {drift, drift / st.height, shear});
       if (r.first_yield_row < 0 && yield_drift[k] > 0 &&

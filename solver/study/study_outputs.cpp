@@ -19,9 +19,13 @@ namespace {
 
 constexpr std::string_view kLevelQuantities[] = {"displacement", "velocity",
                                                  "absolute_acceleration", "residual_displacement"};
-constexpr std::string_view kStoryQuantities[] = {
-    "drift",          "drift_ratio",          "shear",            "ductility",
-    "residual_drift", "residual_drift_ratio", "hysteretic_energy"};
+constexpr std::string_view kStoryQuantities[] = {"drift",
+                                                 "drift_ratio",
+                                                 "shear",
+                                                 "ductility",
+                                                 "residual_drift",
+                                                 "residual_drift_ratio",
+                                                 "hysteretic_energy"};
 // Quantities of kStoryQuantities that only a yielding storey (a StoryLink) has.
 constexpr int kStoryDuctility = 3, kStoryResidualDrift = 4, kStoryResidualDriftRatio = 5,
               kStoryHystereticEnergy = 6;
@@ -184,8 +188,8 @@ void resolve_story3d(const OutputSelector& s, const Model& model, const Structur
     fail_selector(s, "storey shear of 3D buildings is not recorded (peaks of a 3D storey: " +
                          joined(kStoryQuantities3D) + ")");
   if (index_in(kStoryQuantities3D, q) < 0)
-    fail_selector(s, "'" + q + "' is a peak of 2D storeys; a 3D storey has " +
-                         joined(kStoryQuantities3D));
+    fail_selector(
+        s, "'" + q + "' is a peak of 2D storeys; a 3D storey has " + joined(kStoryQuantities3D));
   r.probe_component = q == "drift_x" ? 0 : q == "drift_y" ? 1 : q == "drift_ratio" ? 3 : 2;
   const int count = static_cast<int>(b.level_dofs.size()) - (b.has_base ? 1 : 0);
   for (const int k : selected_stories(s, count)) {
@@ -393,8 +397,8 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
         std::vector<int> yielding;
         for (const int k : r.indices) {
           const int e = k < static_cast<int>(b.story_elements.size()) ? b.story_elements[k] : -1;
-          const auto* link = e >= 0 ? dynamic_cast<const StoryLink*>(model.elements[e].get())
-                                    : nullptr;
+          const auto* link =
+              e >= 0 ? dynamic_cast<const StoryLink*>(model.elements[e].get()) : nullptr;
           if (!link) continue;
           yielding.push_back(k);
           r.story_links.push_back(e);
