@@ -29,6 +29,7 @@
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
 #include "solver/study/cli_contract.h"
+#include "solver/structures/pushover2d.h"
 #include "solver/study/ensemble.h"   // run --ensemble N
 #include "solver/study/study_cli.h"  // study commands (sweep, export)
 
@@ -274,6 +275,23 @@ int main(int argc, char** argv) {
       ->required();
   overlap->add_flag("--exact", exact, "Use exact rational arithmetic (slower reference path)");
 
+  CLI::App* pushover = app.add_subcommand(
+      "pushover",
+      "Static pushover of a 2D building to a target roof drift: pushover.csv (capacity curve)");
+  pushover->add_option("model", model_path, "Model file (YAML)")->required();
+  pushover->add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
+  std::string target_drift = "2 %", pattern = "first_mode";
+  int pushover_steps = 200;
+  pushover->add_option("--target-drift", target_drift, "Roof drift ratio to reach, e.g. '2 %'")
+      ->capture_default_str();
+  pushover->add_option("--pattern", pattern, "Lateral load pattern")
+      ->check(CLI::IsMember({"first_mode", "uniform"}))
+      ->capture_default_str();
+  pushover->add_option("--steps", pushover_steps, "Displacement steps")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  pushover->add_flag("-q,--quiet", quiet, "Print nothing on success");
+
   const StudyCommands study_commands = add_study_commands(app);  // study commands (sweep, export)
 
   // Usage errors are bad input (exit 2) like any other; --help and --version exit 0.
@@ -319,6 +337,38 @@ int main(int argc, char** argv) {
     if (*run)
       return run_and_write(config, out_dir, quiet, compare_unobstructed,
                            ensemble.members > 0 ? &ensemble : nullptr);
+    if (*pushover) {
+      Pushover2DOptions options;
+      try {
+        options.target_drift_ratio = parse_quantity_as(target_drift, dim::kNone);
+      } catch (const UnitError& e) {
+        throw std::invalid_argument(std::string("--target-drift: ") + e.what());
+      }
+      if (!(options.target_drift_ratio > 0 && options.target_drift_ratio < 1))
+        throw std::invalid_argument("--target-drift must be in (0, 100 %), got '" + target_drift +
+                                    "'");
+      options.pattern = pattern == "uniform" ? Pushover2DOptions::Pattern::kUniform
+                                             : Pushover2DOptions::Pattern::kFirstMode;
+      options.steps = pushover_steps;
+      const Pushover2DResult result = run_pushover2d(config, options);
+      create_output_directory(out_dir);
+      const std::string csv = (fs::path(out_dir) / "pushover.csv").string();
+      write_pushover_csv(csv, result);
+      if (!quiet) {
+        const auto& last = result.rows.back();
+        std::printf("%s: roof %.2f cm (drift %.3f %%), base shear %.1f kN; wrote %s\n",
+                    model_path.c_str(), 100 * last[0], 100 * last[1], last[2] / 1e3, csv.c_str());
+        if (result.first_yield_row >= 0)
+          std::printf("  first yield at roof %.2f cm, base shear %.1f kN\n",
+                      100 * result.rows[result.first_yield_row][0],
+                      result.rows[result.first_yield_row][2] / 1e3);
+        if (result.capping_row >= 0)
+          std::printf("  capping (peak base shear) at roof %.2f cm, %.1f kN\n",
+                      100 * result.rows[result.capping_row][0],
+                      result.rows[result.capping_row][2] / 1e3);
+      }
+      return kOk;
+    }
     if (*modes) {
       if (!quiet) print_modes(config);
       return kOk;

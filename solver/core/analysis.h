@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "solver/core/analysis_config.h"
 #include "solver/core/model.h"
 #include "solver/core/peak.h"
 #include "solver/core/probe_record.h"
 #include "solver/excitation/ground_motion.h"
-#include "solver/structures/config.h"
 
 namespace isopound {
 

@@ -51,6 +51,10 @@ struct StructureInfo {
   // since its bearings may be linear springs inside K.
   std::vector<int> level_dofs_y;
   std::vector<int> upper_contact_elements;
+  // Per story: index into Model::elements of its hysteretic law, or -1 (a linear spring in K).
+  std::vector<int> story_elements;
+  // A linear story whose peak drift ratio exceeds this is flagged (outputs only; 0: never).
+  double elastic_limit_drift_ratio = 0.0;
 };
 
 // A derived response in plan, for outputs only: two components, each a linear combination of DOF

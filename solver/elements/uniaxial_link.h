@@ -12,7 +12,7 @@ namespace isopound {
 
 inline constexpr int kGround = -1;
 
-class UniaxialLink final : public Element {
+class UniaxialLink : public Element {
  public:
   // dof_i may be kGround. The link owns its material.
   UniaxialLink(std::string label, int dof_i, int dof_j, std::unique_ptr<UniaxialMaterial> law);

@@ -20,6 +20,7 @@
 #include "solver/structures/config3d.h"
 #include "solver/structures/rayleigh_modes.h"
 #include "solver/structures/site_plan.h"
+#include "solver/structures/story_hysteresis.h"
 
 namespace isopound {
 namespace {
@@ -41,16 +42,130 @@ bool written(const YAML::Node& map, std::string_view key) {
   return false;
 }
 
-std::vector<FloorConfig> read_floors(const InputNode& node) {
+// A storey's `hysteresis:` map (StoryHysteresisConfig). Keys of another model are refused.
+StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
+  using Model = StoryHysteresisConfig::Model;
+  using By = StoryHysteresisConfig::YieldBy;
+  static constexpr const char* kBoucWenKeys[] = {"n", "A", "beta", "gamma"};
+  static constexpr const char* kPeakKeys[] = {"capping_drift_ratio", "post_capping_ratio",
+                                              "residual_strength_ratio", "deterioration"};
+  node.expect_keys({"model", "yield_drift_ratio", "yield_shear", "yield_shear_coefficient",
+                    "post_yield_ratio", "n", "A", "beta", "gamma", "capping_drift_ratio",
+                    "post_capping_ratio", "residual_strength_ratio", "deterioration"});
+  StoryHysteresisConfig h;
+  h.model = node.required("model").choice<Model>({{"elastic", Model::kElastic},
+                                                  {"bilinear", Model::kBilinear},
+                                                  {"bouc_wen", Model::kBoucWen},
+                                                  {"peak_oriented", Model::kPeakOriented}});
+  const std::string name = node.required("model").string();
+  const auto refuse = [&](const char* key) {
+    if (const auto n = node.find(key)) n->fail("not used by hysteresis model '" + name + "'");
+  };
+  if (h.model == Model::kElastic) {
+    for (const char* key :
+         {"yield_drift_ratio", "yield_shear", "yield_shear_coefficient", "post_yield_ratio"})
+      refuse(key);
+    for (const char* key : kBoucWenKeys) refuse(key);
+    for (const char* key : kPeakKeys) refuse(key);
+    return h;
+  }
+  if (h.model != Model::kBoucWen)
+    for (const char* key : kBoucWenKeys) refuse(key);
+  if (h.model != Model::kPeakOriented)
+    for (const char* key : kPeakKeys) refuse(key);
+  // The yield point: exactly one of three keys.
+  int given = 0;
+  if (const auto r = node.find("yield_drift_ratio")) {
+    h.yield_by = By::kDriftRatio;
+    h.yield_value = r->number(Bound::kPositive);
+    ++given;
+  }
+  if (const auto v = node.find("yield_shear")) {
+    h.yield_by = By::kShear;
+    h.yield_value = v->quantity(dim::kForce, Bound::kPositive);
+    if (given++) v->fail("give one of yield_drift_ratio, yield_shear, yield_shear_coefficient");
+  }
+  if (const auto c = node.find("yield_shear_coefficient")) {
+    h.yield_by = By::kShearCoefficient;
+    h.yield_value = c->number(Bound::kPositive);
+    if (given++) c->fail("give one of yield_drift_ratio, yield_shear, yield_shear_coefficient");
+  }
+  if (!given)
+    node.fail_at_key("yield_drift_ratio",
+                     "missing: give yield_drift_ratio (d_y / h), yield_shear (a force) or "
+                     "yield_shear_coefficient (V_y / weight above)");
+  const auto ratio_below_one = [&](const char* key, double& out) {
+    if (const auto r = node.find(key)) {
+      out = r->number();
+      if (!(out >= 0.0 && out < 1.0)) r->fail("must be in [0, 1) (got '" + r->string() + "')");
+    } else {
+      node.note_default(key, "0");
+    }
+  };
+  ratio_below_one("post_yield_ratio", h.post_yield_ratio);
+  if (h.model == Model::kBoucWen) {
+    node.read_number("n", Bound::kPositive, h.n);
+    node.read_number("A", Bound::kPositive, h.A);
+    node.read_number("beta", Bound::kAny, h.beta);
+    node.read_number("gamma", Bound::kAny, h.gamma);
+    if (!(h.beta + h.gamma > 0.0)) {
+      const auto g = node.find("gamma");
+      (g ? *g : node).fail("beta + gamma must be > 0 for bouc_wen");
+    }
+  }
+  if (h.model == Model::kPeakOriented) {
+    h.capping_drift_ratio = node.required("capping_drift_ratio").number(Bound::kPositive);
+    h.post_capping_ratio = node.required("post_capping_ratio").number(Bound::kPositive);
+    if (const auto r = node.find("residual_strength_ratio")) {
+      h.residual_strength_ratio = r->number(Bound::kNonNegative);
+      if (h.residual_strength_ratio > 1.0)
+        r->fail("must be <= 1 (a fraction of the yield strength; got '" + r->string() + "')");
+    } else {
+      node.note_default("residual_strength_ratio", "0");
+    }
+    if (const auto l = node.find("deterioration")) {
+      h.deterioration = l->number(Bound::kPositive);
+    } else {
+      node.note_default("deterioration", "none");
+    }
+  }
+  return h;
+}
+
+// The capping drift of a peak_oriented storey must lie beyond its yield drift (known only once
+// every floor, hence the weight above, is read).
+void check_story_hysteresis(const BuildingConfig& b, const std::vector<InputNode>& nodes) {
+  for (std::size_t i = 0; i < b.floors.size(); ++i) {
+    const StoryHysteresisConfig& h = b.floors[i].hysteresis;
+    if (h.model != StoryHysteresisConfig::Model::kPeakOriented) continue;
+    const double d_y = story_yield_drift(b, static_cast<int>(i));
+    const double d_c = h.capping_drift_ratio * b.floors[i].height;
+    if (!(d_c > d_y)) {
+      char what[160];
+      std::snprintf(what, sizeof what,
+                    "the capping drift (%.4g m) must be beyond the yield drift (%.4g m)", d_c, d_y);
+      nodes[i].required("capping_drift_ratio").fail(what);
+    }
+  }
+}
+
+std::vector<FloorConfig> read_floors(const InputNode& node,
+                                     std::vector<InputNode>& hysteresis_nodes) {
   std::vector<FloorConfig> floors;
   if (node.is_sequence()) {
     for (const InputNode& item : node.elements()) {
-      item.expect_keys({"mass", "stiffness", "height"});
+      item.expect_keys({"mass", "stiffness", "height", "hysteresis"});
       if (!item.is_map()) item.fail("expected {mass, stiffness, height} of a floor");
       FloorConfig floor;
       floor.mass = item.required("mass").quantity(dim::kMass, Bound::kPositive);
       floor.stiffness = item.required("stiffness").quantity(dim::kStiffness, Bound::kPositive);
       floor.height = item.required("height").quantity(dim::kLength, Bound::kPositive);
+      if (const auto h = item.find("hysteresis")) {
+        floor.hysteresis = read_story_hysteresis(*h);
+        hysteresis_nodes.push_back(*h);
+      } else {
+        hysteresis_nodes.push_back(item);
+      }
       floors.push_back(floor);
     }
     if (floors.empty()) node.fail("no floors: give at least one {mass, stiffness, height}");
@@ -64,13 +179,16 @@ std::vector<FloorConfig> read_floors(const InputNode& node) {
         "{count, mass, roof_mass, stiffness, height}; got " +
         node.kind());
   // Short form: `count` equal floors, the top one (the roof) optionally lighter.
-  node.expect_keys({"count", "mass", "roof_mass", "stiffness", "height"});
+  node.expect_keys({"count", "mass", "roof_mass", "stiffness", "height", "hysteresis"});
   const int count = node.required("count").integer(1, kMaxFloors);
   FloorConfig floor;
   floor.mass = node.required("mass").quantity(dim::kMass, Bound::kPositive);
   floor.stiffness = node.required("stiffness").quantity(dim::kStiffness, Bound::kPositive);
   floor.height = node.required("height").quantity(dim::kLength, Bound::kPositive);
+  const auto h = node.find("hysteresis");
+  if (h) floor.hysteresis = read_story_hysteresis(*h);
   floors.assign(static_cast<std::size_t>(count), floor);
+  hysteresis_nodes.assign(static_cast<std::size_t>(count), h ? *h : node);
   node.read_quantity("roof_mass", dim::kMass, Bound::kPositive, floors.back().mass);
   return floors;
 }
@@ -305,7 +423,8 @@ NeighbourConfig read_neighbour(const InputNode& node) {
 }
 
 BuildingConfig read_building(const InputNode& node) {
-  node.expect_keys({"name", "isolated", "base", "floors", "isolator", "damping", "walls"});
+  node.expect_keys({"name", "isolated", "base", "floors", "isolator", "damping", "walls", "p_delta",
+                    "elastic_limit_drift_ratio"});
   BuildingConfig b;
   if (const auto name = node.find("name")) {
     b.name = name->string();
@@ -320,7 +439,13 @@ BuildingConfig read_building(const InputNode& node) {
     for (const char* key : {"base", "isolator"})
       if (const auto n = node.find(key)) n->fail(kFixedBaseOnly);
   }
-  b.floors = read_floors(node.required("floors"));
+  std::vector<InputNode> hysteresis_nodes;
+  b.floors = read_floors(node.required("floors"), hysteresis_nodes);
+  check_story_hysteresis(b, hysteresis_nodes);
+  // Not noted as defaults when absent: an elastic model's settings stay as they were.
+  if (const auto p = node.find("p_delta")) b.p_delta = p->boolean();
+  if (const auto l = node.find("elastic_limit_drift_ratio"))
+    b.elastic_limit_drift_ratio = l->number(Bound::kPositive);
   // Without an isolator section the thesis isolator is used, each value noted as a default.
   if (b.isolated) {
     const auto isolator = node.find("isolator");

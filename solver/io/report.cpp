@@ -18,6 +18,7 @@
 
 #include "solver/io/computed_defaults.h"
 #include "solver/io/report3d.h"
+#include "solver/io/report_damage2d.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 
@@ -285,6 +286,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
            {"drift_ratio", peak_json(r.drift_ratio[story_index], "-")},
            {"shear", peak_json(r.story_shear[story_index], "N")},
            {"shear_coefficient", weight > 0 ? r.story_shear[story_index].value / weight : 0.0}});
+      add_story_damage_json(stories.back(), model, r, s, k, story_index);  // report_damage2d
     }
     js["stories"] = stories;
     structures.push_back(js);
@@ -315,12 +317,14 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
   const EnergyBalance& en = r.energy;
   const double impacts = impact_energy(model);
   const std::optional<double> friction = friction_energy(model);
+  const double stories_hysteretic = story_hysteretic_energy(model);
   j["energy"] = {{"input_J", en.input},
                  {"kinetic_J", en.kinetic},
                  {"elastic_J", en.elastic},
                  {"viscous_J", en.viscous},
                  {"hysteretic_J", en.hysteretic},
-                 {"isolator_hysteretic_J", en.hysteretic - impacts - friction.value_or(0.0)},
+                 {"isolator_hysteretic_J",
+                  en.hysteretic - impacts - friction.value_or(0.0) - stories_hysteretic},
                  {"impact_dissipated_J", impacts},
                  {"balance_error_J", en.error},
                  {"relative_error", en.relative_error},
@@ -331,6 +335,14 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                   "isolator_hysteretic + impact_dissipated (+ friction_dissipated in 3D "
                   "pounding)"}};
   if (friction) j["energy"]["friction_dissipated_J"] = *friction;
+  if (has_yielding_stories(model)) {
+    j["energy"]["story_hysteretic_J"] = stories_hysteretic;
+    j["energy"]["story_note"] =
+        "story_hysteretic: the yielding storeys' work along their drift (trapezoidal between "
+        "steps) minus their recoverable energy; hysteretic = isolator_hysteretic + "
+        "impact_dissipated + story_hysteretic; residual drifts are at the end of the analysis "
+        "(record + extra_time)";
+  }
   if (unobstructed && !has_contacts(model)) {
     j[config.structures3d.empty() ? "unobstructed" : "unobstructed_3d"] = {
         {"note", kNothingToCompare}};
@@ -505,6 +517,7 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
             r.stories[story_index].label.c_str(), 100 * r.drift[story_index].value,
             100 * r.drift_ratio[story_index].value, r.story_shear[story_index].value / 1e3);
         out << line;
+        print_story_damage(out, model, r, s, k, story_index);  // report_damage2d
       }
     }
     for (std::size_t e = 0; e < model.elements.size(); ++e) {
@@ -530,6 +543,14 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                   (r.energy.hysteretic - impact_energy(model) - *friction) / 1e3,
                   impact_energy(model) / 1e3, *friction / 1e3, r.energy.viscous / 1e3,
                   r.energy.relative_error);
+  } else if (has_yielding_stories(model)) {
+    const double stories = story_hysteretic_energy(model);
+    std::snprintf(line, sizeof line,
+                  "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, storey hysteretic %.4g kJ, "
+                  "impact-dissipated %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
+                  r.energy.input / 1e3,
+                  (r.energy.hysteretic - impact_energy(model) - stories) / 1e3, stories / 1e3,
+                  impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
   } else {
     std::snprintf(line, sizeof line,
                   "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "

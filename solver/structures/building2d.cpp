@@ -7,10 +7,12 @@
 
 #include "solver/core/modes.h"
 #include "solver/elements/bearing_link.h"
+#include "solver/elements/story_link.h"
 #include "solver/elements/uniaxial_link.h"
 #include "solver/structures/bearing.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/rayleigh_modes.h"
+#include "solver/structures/story_hysteresis.h"
 
 namespace isopound {
 
@@ -85,15 +87,30 @@ void add_building(Model& model, const BuildingConfig& b) {
     info.level_dofs.push_back(dof);
     info.story_heights.push_back(b.floors[i].height);
     model.mass(dof, dof) = b.floors[i].mass;
-    const double k = b.floors[i].stiffness;
     const int below = i > 0 ? dof - 1 : base;  // -1: ground (fixed base)
-    model.stiffness(dof, dof) += k;
-    if (below >= 0) {
-      model.stiffness(below, below) += k;
-      model.stiffness(below, dof) -= k;
-      model.stiffness(dof, below) -= k;
+    // A linear term of the story in K: its elastic spring (unless the story yields) and, with
+    // P-Delta, the geometric stiffness -P/h of the weight above.
+    double k = 0.0;
+    if (b.floors[i].hysteresis.model == StoryHysteresisConfig::Model::kElastic) {
+      k = b.floors[i].stiffness;
+      info.story_elements.push_back(-1);
+    } else {
+      info.story_elements.push_back(static_cast<int>(model.elements.size()));
+      model.elements.push_back(std::make_unique<StoryLink>(
+          b.name + "/story " + std::to_string(i + 1) + "/hysteretic", below, dof,
+          make_story_material(b, i), story_yield_drift(b, i)));
+    }
+    if (b.p_delta) k -= weight_above_story(b, i) / b.floors[i].height;
+    if (k != 0.0) {
+      model.stiffness(dof, dof) += k;
+      if (below >= 0) {
+        model.stiffness(below, below) += k;
+        model.stiffness(below, dof) -= k;
+        model.stiffness(dof, below) -= k;
+      }
     }
   }
+  info.elastic_limit_drift_ratio = b.elastic_limit_drift_ratio;
 
   // Superstructure damping, relative to the base slab (or the ground if fixed).
   const Eigen::MatrixXd c_s = superstructure_damping(b);

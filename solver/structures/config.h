@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/core/analysis_config.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/excitation/ground_motion.h"
 #include "solver/materials/impact_law.h"
@@ -40,10 +41,34 @@ struct IsolatorConfig {
   bool smooth_friction = false;  // z: false = radial return (sharp), true = Bouc-Wen (n, beta...)
 };
 
+// The restoring-force law of a storey (`hysteresis:` of a floor): elastic (the linear spring
+// in K, as the thesis) or a hysteretic law of the drift (solver/structures/story_hysteresis.h).
+// k is always the storey's elastic stiffness; Rayleigh damping stays from the elastic K.
+struct StoryHysteresisConfig {
+  enum class Model { kElastic, kBilinear, kBoucWen, kPeakOriented };
+  Model model = Model::kElastic;
+  // The yield point, one of: d_y = ratio x storey height; V_y (N), d_y = V_y / k; or V_y as a
+  // fraction of the weight above the storey (g x the masses above), d_y = V_y / k.
+  enum class YieldBy { kDriftRatio, kShear, kShearCoefficient };
+  YieldBy yield_by = YieldBy::kDriftRatio;
+  double yield_value = 0.0;
+  double post_yield_ratio = 0.0;  // alpha: hardening stiffness / k, in [0, 1)
+  // bouc_wen: shape (the isolators' law, THEORY eq. 2.1-2.2).
+  double n = 2.0, A = 1.0, beta = 0.5, gamma = 0.5;
+  // peak_oriented (solver/materials/peak_oriented.h): capping drift = ratio x height (> d_y),
+  // post-capping slope -post_capping_ratio k, residual strength residual_strength_ratio F_y,
+  // cyclic deterioration lambda (E_t = lambda F_y d_y; 0 = none).
+  double capping_drift_ratio = 0.0;
+  double post_capping_ratio = 0.0;
+  double residual_strength_ratio = 0.0;
+  double deterioration = 0.0;
+};
+
 struct FloorConfig {
   double mass = 0.0;       // kg, lumped at the floor
   double stiffness = 0.0;  // N/m, of the story below this floor
   double height = 0.0;     // m, of the story below this floor
+  StoryHysteresisConfig hysteresis{};  // of the story below this floor ({} for {m, k, h})
 };
 
 struct SuperstructureDamping {
@@ -79,6 +104,11 @@ struct BuildingConfig {
   SuperstructureDamping damping;
   double isolation_damping_ratio = 0.05;  // xi_b: c_b = 2 xi_b m_tot omega_b
   std::vector<WallConfig> walls;          // moat walls (usually one entry, both sides)
+  // P-Delta: each storey gets the geometric stiffness -P/h, P = g x the masses above it.
+  bool p_delta = false;
+  // An elastic storey whose peak drift ratio exceeds this is reported as outside the elastic
+  // model's range (a console warning and a flag in summary.json).
+  double elastic_limit_drift_ratio = 0.01;
 };
 
 // A neighbouring building at a gap; floors at equal elevation pound slab to slab.
@@ -103,45 +133,6 @@ struct GroundMotionConfig {
   std::vector<GroundMotionConfig> components;
   double angle = 0.0;
   double pulse_transverse_ratio = 0.5;
-};
-
-struct AnalysisConfig {
-  enum class Stepping { kAdaptive, kFixed };
-  Stepping stepping = Stepping::kAdaptive;
-  // Fixed: the step. Adaptive: the largest step; 0 = min(record interval,
-  // T_min / steps_per_period) with T_min the shortest period of the initial linearised model
-  // among the modes max_step_rule counts. Steps always divide the record interval, so samples
-  // are never skipped.
-  double dt = 0.0;
-  double steps_per_period = 25.0;
-  // Which modes set T_min: every mode, or only those whose effective modal mass ratio along x
-  // or y, Gamma^2 / (iota^T M iota), is at least participation_threshold (THEORY-notes.md,
-  // "Largest step"). The model input defaults to kParticipating for 3D structures and keeps
-  // kAllModes for 2D buildings (their steps and results unchanged).
-  enum class MaxStepRule { kAllModes, kParticipating };
-  MaxStepRule max_step_rule = MaxStepRule::kAllModes;
-  double participation_threshold = 1e-5;
-  // Adaptive: local error tolerance (see THEORY-notes.md, "Time integration").
-  double tolerance = 1e-4;  // 1e-3 until issue 8: see bench/RESULTS.md, "Convergence battery"
-  int max_halvings = 16;    // smallest adaptive step = dt / 2^max_halvings
-  // During a contact the step is at most (contact period) / steps_per_contact, with the
-  // contact period pi sqrt(m_eff / k_tangent); before a contact, at most the time of impact.
-  // Both in fixed stepping too (the fixed dt is then an upper bound).
-  double steps_per_contact = 100.0;
-  bool locate_events = true;  // cut steps at contact onset / separation / phase change
-  // Stop the analysis at this time, s (0: at the record's end plus extra_time). For comparing
-  // runs over a window (e.g. up to shortly after the first impacts, THEORY §12).
-  double t_end = 0.0;
-  double newton_tolerance = 1e-9;  // relative residual, see newmark.h
-  int max_iterations = 25;
-  // Newton's linear solve eliminates the DOFs no element touches (newmark.h); false: the whole
-  // matrix every iteration. Not an input key: the results agree to round-off (tests compare).
-  bool block_elimination = true;
-};
-
-struct OutputConfig {
-  double interval = 0.0;  // s between rows of histories.csv; 0 = every record sample
-  bool histories = true;
 };
 
 // config3d.h (its bearing law, bearing.h, may include this file: no include cycle here).

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "solver/elements/polygon_contact.h"
+#include "solver/elements/story_link.h"
 #include "solver/io/report3d.h"
 
 namespace isopound {
@@ -18,7 +19,16 @@ namespace {
 
 constexpr std::string_view kLevelQuantities[] = {"displacement", "velocity",
                                                  "absolute_acceleration", "residual_displacement"};
-constexpr std::string_view kStoryQuantities[] = {"drift", "drift_ratio", "shear"};
+constexpr std::string_view kStoryQuantities[] = {"drift",
+                                                 "drift_ratio",
+                                                 "shear",
+                                                 "ductility",
+                                                 "residual_drift",
+                                                 "residual_drift_ratio",
+                                                 "hysteretic_energy"};
+// Quantities of kStoryQuantities that only a yielding storey (a StoryLink) has.
+constexpr int kStoryDuctility = 3, kStoryResidualDrift = 4, kStoryResidualDriftRatio = 5,
+              kStoryHystereticEnergy = 6;
 // 3D buildings: peaks at plan points (x, y, resultant) and of the diaphragm DOFs.
 constexpr std::string_view kLevelQuantities3D[] = {"displacement",
                                                    "absolute_acceleration",
@@ -73,6 +83,8 @@ bool matches(const std::string& pattern, const std::string& label) {
   return fnmatch(pattern.c_str(), short_label.c_str(), 0) == 0 ||
          fnmatch(pattern.c_str(), label.c_str(), 0) == 0;
 }
+
+constexpr int kStoryLinkEnergyOutput = 3;  // StoryLink's hysteretic_energy output
 
 [[noreturn]] void fail_selector(const OutputSelector& s, const std::string& what) {
   throw std::invalid_argument("peak '" + s.text + "': " + what);
@@ -175,6 +187,9 @@ void resolve_story3d(const OutputSelector& s, const Model& model, const Structur
   if (q == "shear")
     fail_selector(s, "storey shear of 3D buildings is not recorded (peaks of a 3D storey: " +
                          joined(kStoryQuantities3D) + ")");
+  if (index_in(kStoryQuantities3D, q) < 0)
+    fail_selector(
+        s, "'" + q + "' is a peak of 2D storeys; a 3D storey has " + joined(kStoryQuantities3D));
   r.probe_component = q == "drift_x" ? 0 : q == "drift_y" ? 1 : q == "drift_ratio" ? 3 : 2;
   const int count = static_cast<int>(b.level_dofs.size()) - (b.has_base ? 1 : 0);
   for (const int k : selected_stories(s, count)) {
@@ -319,7 +334,12 @@ std::string output_unit(const OutputSelector& s) {
       {"force_x", "N"},
       {"force_y", "N"},
       {"deformation_x", "m"},
-      {"deformation_y", "m"}};
+      {"deformation_y", "m"},
+      {"ductility", "-"},
+      {"residual_drift", "m"},
+      {"residual_drift_ratio", "-"},
+      {"hysteretic_energy", "J"},
+      {"yielded", "-"}};
   if (s.kind == OutputSelector::Kind::kEnergy)
     return s.quantity == "relative_error" || s.quantity == "max_relative_error" ? "-" : "J";
   for (const auto& [name, unit] : kUnits)
@@ -372,6 +392,23 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
              joined(kStoryQuantities));
       const int count = static_cast<int>(b.level_dofs.size()) - (b.has_base ? 1 : 0);
       for (const int k : selected_stories(s, count)) r.indices.push_back(k - 1);
+      if (r.quantity == kStoryDuctility || r.quantity == kStoryHystereticEnergy) {
+        // Yielding storeys only (an elastic storey has neither); `indices` keeps those.
+        std::vector<int> yielding;
+        for (const int k : r.indices) {
+          const int e = k < static_cast<int>(b.story_elements.size()) ? b.story_elements[k] : -1;
+          const auto* link =
+              e >= 0 ? dynamic_cast<const StoryLink*>(model.elements[e].get()) : nullptr;
+          if (!link) continue;
+          yielding.push_back(k);
+          r.story_links.push_back(e);
+          r.yield_drifts.push_back(link->yield_drift());
+        }
+        if (yielding.empty())
+          fail("'" + s.quantity +
+               "' belongs to yielding storeys (floors: hysteresis); the selected are elastic");
+        r.indices = yielding;
+      }
       return r;
     }
     case OutputSelector::Kind::kElement: {
@@ -456,6 +493,23 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
       if (r.kind == OutputSelector::Kind::kLevel && r.quantity == 3) {  // |u| at the end
         for (const int i : r.indices)
           value = std::max(value, std::abs(result.final_displacement[i]));
+        return value;
+      }
+      if (r.kind == OutputSelector::Kind::kStory && r.quantity >= kStoryDuctility) {
+        for (std::size_t j = 0; j < r.indices.size(); ++j) {
+          const int i = r.indices[j];
+          const Story& st = result.stories[i];
+          const double residual =
+              std::abs(result.final_displacement[st.upper] -
+                       (st.lower >= 0 ? result.final_displacement[st.lower] : 0.0));
+          double x = 0.0;
+          if (r.quantity == kStoryDuctility) x = result.drift[i].value / r.yield_drifts[j];
+          if (r.quantity == kStoryResidualDrift) x = residual;
+          if (r.quantity == kStoryResidualDriftRatio) x = residual / st.height;
+          if (r.quantity == kStoryHystereticEnergy)
+            x = result.element_outputs[r.story_links[j]][kStoryLinkEnergyOutput].value;
+          value = std::max(value, x);
+        }
         return value;
       }
       const std::vector<Peak>* families[] = {&result.displacement, &result.velocity,

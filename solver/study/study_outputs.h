@@ -6,7 +6,8 @@
 //       residual_displacement (|u| at the end; base.residual_displacement: the isolators')
 //       (floors: max over floors 1..N; levels: also the base slab)
 //   story<N> | stories  .  drift | drift_ratio | shear (N; story1.shear = base of the
-//       superstructure)
+//       superstructure) | residual_drift | residual_drift_ratio (|drift| at the end) |
+//       ductility | hysteretic_energy (J; peak over time) (these two: yielding storeys only)
 // 3D building (`structures:`; a plan point or column set may follow the level or story):
 //   <level>[.cm | .corners | .corner<K> | .points]  .  displacement | absolute_acceleration
 //       (resultant sqrt(x^2 + y^2) at each instant) | displacement_x | displacement_y |
@@ -74,6 +75,10 @@ struct ResolvedOutput {
   // them became 1 (NaN when none did).
   bool first_time = false;
   std::vector<PlanProbe> end_probes;
+  // 2D yielding storeys (ductility, hysteretic_energy): per story in `indices`, its StoryLink's
+  // element index and yield drift d_y (m).
+  std::vector<int> story_links;
+  std::vector<double> yield_drifts;
 };
 
 // Throws std::invalid_argument when the model has no such level, story, element or output.

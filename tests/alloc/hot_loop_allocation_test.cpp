@@ -93,3 +93,16 @@ TEST(HotLoop, TwoDWallsAllocateNothing) {
 
 }  // namespace
 }  // namespace isopound
+
+namespace isopound {
+namespace {
+
+// Yielding storeys (Bouc-Wen; peak-oriented with P-Delta) against moat walls (issue 23).
+TEST(HotLoop, YieldingStoreysAllocateNothing) {
+  ISOPOUND_REQUIRE_RECORDS();
+  expect_no_allocation("thesis-3storey-bw-yielding.yaml");
+  expect_no_allocation("thesis-3storey-peak-oriented-pdelta.yaml");
+}
+
+}  // namespace
+}  // namespace isopound

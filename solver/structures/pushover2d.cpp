@@ -1,0 +1,93 @@
+// Pushover of a 2D building: assembly, pattern, control, and the capacity-curve table.
+#include "solver/structures/pushover2d.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "solver/core/analysis.h"
+#include "solver/core/pushover.h"
+#include "solver/structures/building2d.h"
+#include "solver/structures/story_hysteresis.h"
+
+namespace isopound {
+
+Pushover2DResult run_pushover2d(const ModelConfig& config, const Pushover2DOptions& options) {
+  if (!config.structures3d.empty())
+    throw std::invalid_argument(
+        "pushover: 3D models are not supported yet (the hook: run_pushover with an angle's "
+        "control vector, solver/structures/pushover2d.h)");
+  BuildingConfig b = config.building;
+  b.walls.clear();  // the building alone
+  Model model = make_model(b);
+  const StructureInfo& info = model.structures[0];
+  const int n = model.size();
+  const int roof = info.level_dofs.back();
+  double height = 0.0;
+  for (const FloorConfig& f : b.floors) height += f.height;
+
+  PushoverOptions o;
+  o.control = Eigen::VectorXd::Zero(n);
+  o.control[roof] = 1.0;
+  o.pattern = options.pattern == Pushover2DOptions::Pattern::kUniform
+                  ? Eigen::VectorXd(model.mass * model.influence)
+                  : first_mode_pattern(model, o.control);
+  o.target = options.target_drift_ratio * height;
+  o.steps = options.steps;
+  const std::vector<PushoverStep> curve = run_pushover(model, o);
+
+  Pushover2DResult r;
+  r.columns = {"roof_displacement_m", "roof_drift_ratio", "base_shear_N"};
+  const std::vector<Story> stories = stories_of(model);
+  for (const Story& st : stories) {
+    const std::string name = st.label.substr(st.label.find('/') + 1);  // "story k"
+    const std::string key = "story" + name.substr(name.find(' ') + 1);
+    r.columns.push_back(key + "_drift_m");
+    r.columns.push_back(key + "_drift_ratio");
+    r.columns.push_back(key + "_shear_N");
+  }
+  std::vector<double> yield_drift(stories.size(), 0.0);
+  for (std::size_t k = 0; k < stories.size(); ++k)
+    if (b.floors[k].hysteresis.model != StoryHysteresisConfig::Model::kElastic)
+      yield_drift[k] = story_yield_drift(b, static_cast<int>(k));
+  double peak_shear = 0.0;
+  int peak_row = 0;
+  for (const PushoverStep& s : curve) {
+    std::vector<double> row = {s.control, s.control / height, s.lambda * o.pattern.sum()};
+    for (std::size_t k = 0; k < stories.size(); ++k) {
+      const Story& st = stories[k];
+      const double drift = s.u[st.upper] - (st.lower >= 0 ? s.u[st.lower] : 0.0);
+      double shear = 0.0;
+      for (std::size_t level = k + (info.has_base ? 1 : 0); level < info.level_dofs.size(); ++level)
+        shear += s.lambda * o.pattern[info.level_dofs[level]];
+      row.insert(row.end(), {drift, drift / st.height, shear});
+      if (r.first_yield_row < 0 && yield_drift[k] > 0 &&
+          std::abs(drift) >= yield_drift[k] * (1 - 1e-12))
+        r.first_yield_row = static_cast<int>(r.rows.size());
+    }
+    if (std::abs(row[2]) > peak_shear) {
+      peak_shear = std::abs(row[2]);
+      peak_row = static_cast<int>(r.rows.size());
+    }
+    r.rows.push_back(std::move(row));
+  }
+  if (peak_row + 1 < static_cast<int>(r.rows.size()) &&
+      std::abs(r.rows.back()[2]) < peak_shear * (1 - 1e-9))
+    r.capping_row = peak_row;
+  return r;
+}
+
+void write_pushover_csv(const std::string& path, const Pushover2DResult& r) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write " + path);
+  for (std::size_t c = 0; c < r.columns.size(); ++c)
+    std::fprintf(f, "%s%s", c ? "," : "", r.columns[c].c_str());
+  std::fputc('\n', f);
+  for (const auto& row : r.rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) std::fprintf(f, "%s%.10g", c ? "," : "", row[c]);
+    std::fputc('\n', f);
+  }
+  if (std::fclose(f) != 0) throw std::runtime_error("error writing " + path);
+}
+
+}  // namespace isopound
