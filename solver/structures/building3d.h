@@ -13,11 +13,25 @@ namespace isopound {
 
 // A building frame placed in the model's plan frame: p_W = position + R(rotation) p_B.
 Vec2 to_plan(const Building3DConfig& b, Vec2 p_B);
+// A diaphragm (plan, eccentricity) of the building placed in the model's plan frame.
+Diaphragm3DConfig diaphragm_in_plan(const Building3DConfig& b, const Diaphragm3DConfig& d_B);
 
 // Storey stiffness (3 x 3, DOFs at the plan origin) of the columns of one storey of height h;
 // positions and orientations in the plan frame.
 Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns_W, double height,
                                  ColumnCoupling coupling);
+
+// The same split for the model: `matrix` holds the elastic columns and the torsion of yielding
+// ones (their shear is an element, column_element.h); `initial` every column elastic (= the
+// storey_stiffness above), for damping and modes.
+struct StoreyStiffness {
+  Eigen::Matrix3d matrix, initial;
+};
+StoreyStiffness storey_stiffness_split(const std::vector<Column3DConfig>& columns_W,
+                                       double height, ColumnCoupling coupling);
+
+// P-Delta (p_delta_stiffness.cpp): storey s's geometric stiffness about the plan origin.
+Eigen::Matrix3d p_delta_stiffness(const Building3DConfig& building, std::size_t storey);
 
 // Mass matrix (3 x 3, DOFs at the plan origin) of a diaphragm whose plan and eccentricity are
 // in the plan frame.
