@@ -41,6 +41,9 @@ struct StructureInfo {
   bool has_base = false;              // level_dofs[0] is an isolated base slab
   std::vector<double> story_heights;  // story s links level s-1 (or ground) and level s
   int isolator_element = -1;          // index into Model::elements, or -1
+  // An elastic storey whose peak drift ratio exceeds this is outside the elastic model's range
+  // (reports flag it).
+  double elastic_limit_drift_ratio = 0.01;
 };
 
 // A derived response in plan, for outputs only: two components, each a linear combination of DOF

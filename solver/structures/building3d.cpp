@@ -338,6 +338,30 @@ void add_building3d(Model& model, const Building3DConfig& b) {
       model.probes.push_back(std::move(probe));
     }
   }
+  // Storey shears (yielding columns or P-Delta): V = -sum over the levels above of M a_abs, in x
+  // and y (the rows of M of those levels; theta's absolute acceleration is its relative one).
+  bool inelastic = b.p_delta;
+  for (const Storey3DConfig& storey : b.storeys)
+    for (const Column3DConfig& c : storey.columns) inelastic = inelastic || c.hysteresis.yields();
+  if (inelastic) {
+    for (std::size_t s = 0; s < b.storeys.size(); ++s) {
+      const int upper = 3 * (first_floor + static_cast<int>(s));  // building DOF of the level
+      PlanProbe probe;
+      probe.label = b.name + "/" + kStoreyShearPart + "/story " + std::to_string(s + 1);
+      probe.quantity = PlanProbe::Quantity::kAbsoluteAcceleration;
+      for (int j = upper; j < nb; ++j) {
+        double cx = 0.0, cy = 0.0;
+        for (int i = upper; i < nb; i += 3) {
+          cx -= a.mass(i, j);
+          cy -= a.mass(i + 1, j);
+        }
+        if (cx != 0.0) probe.x_terms.push_back({offset + j, cx});
+        if (cy != 0.0) probe.y_terms.push_back({offset + j, cy});
+      }
+      model.probes.push_back(std::move(probe));
+    }
+  }
+  info.elastic_limit_drift_ratio = b.elastic_limit_drift_ratio;
   model.structures.push_back(std::move(info));
 }
 

@@ -37,6 +37,10 @@ Eigen::Matrix3d p_delta_stiffness(const Building3DConfig& building, std::size_t 
 // in the plan frame.
 Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& diaphragm_W, EccentricPolarMoment rule);
 
+// The plan probes of storey shears (N, x and y) are labelled "<building>/" kStoreyShearPart
+// "/story <k>"; a building gets them when a column yields or with P-Delta.
+inline constexpr const char* kStoreyShearPart = "storey shear";
+
 // Adds one building: DOFs (u, v, theta) per level (base slab first if isolated), matrices,
 // bearings, damping and output probes (centre of mass and corners of each floor, every column's
 // drift). Throws std::invalid_argument on an inconsistent building.
