@@ -152,7 +152,7 @@ void ColumnLink::outputs(double* out) const {
   out[7] = z[0];
   out[8] = z[1];
   out[9] = yielded_ ? 1.0 : 0.0;
-  out[10] = work_commit_ - stored_energy();
+  out[10] = hysteretic_energy();
 }
 
 double ColumnLink::output(int i) const {

@@ -68,6 +68,8 @@ class ColumnLink final : public Element {
   Eigen::Vector2d deformation_of(const Eigen::VectorXd& u) const;
   // Column shear in the plan frame (force on the upper diaphragm's side, F = K d sign), N.
   Eigen::Vector2d shear_W() const;
+  // Energy dissipated so far (J): committed work minus the recoverable energy.
+  double hysteretic_energy() const { return work_commit_ - stored_energy(); }
 
  private:
   // Plan-frame tangent dF_W / dd_W, N/m.

@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "solver/elements/column_link.h"
 #include "solver/elements/polygon_contact.h"
 
 #include <cerrno>
@@ -73,6 +74,15 @@ std::optional<double> friction_energy(const Model& model) {
   std::optional<double> sum;
   for (const auto& el : model.elements)
     if (dynamic_cast<const PolygonContact*>(el.get())) sum = sum.value_or(0.0) + el->output(9);
+  return sum;
+}
+
+// Energy dissipated by yielding 3D columns (their final state); nullopt when the model has none.
+std::optional<double> column_energy(const Model& model) {
+  std::optional<double> sum;
+  for (const auto& el : model.elements)
+    if (const auto* c = dynamic_cast<const ColumnLink*>(el.get()))
+      sum = sum.value_or(0.0) + c->hysteretic_energy();
   return sum;
 }
 
@@ -216,12 +226,14 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
   const EnergyBalance& en = r.energy;
   const double impacts = impact_energy(model);
   const std::optional<double> friction = friction_energy(model);
+  const std::optional<double> columns = column_energy(model);
   j["energy"] = {{"input_J", en.input},
                  {"kinetic_J", en.kinetic},
                  {"elastic_J", en.elastic},
                  {"viscous_J", en.viscous},
                  {"hysteretic_J", en.hysteretic},
-                 {"isolator_hysteretic_J", en.hysteretic - impacts - friction.value_or(0.0)},
+                 {"isolator_hysteretic_J",
+                  en.hysteretic - impacts - friction.value_or(0.0) - columns.value_or(0.0)},
                  {"impact_dissipated_J", impacts},
                  {"balance_error_J", en.error},
                  {"relative_error", en.relative_error},
@@ -232,6 +244,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                   "isolator_hysteretic + impact_dissipated (+ friction_dissipated in 3D "
                   "pounding)"}};
   if (friction) j["energy"]["friction_dissipated_J"] = *friction;
+  if (columns) j["energy"]["column_hysteretic_J"] = *columns;
   if (unobstructed && !config.structures3d.empty()) {
     j["unobstructed_3d"] = unobstructed3d_json(job, *unobstructed);  // report3d.cpp
   } else if (unobstructed) {
@@ -421,17 +434,25 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                   "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
                   "friction %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
                   r.energy.input / 1e3,
-                  (r.energy.hysteretic - impact_energy(model) - *friction) / 1e3,
+                  (r.energy.hysteretic - impact_energy(model) - *friction -
+                   column_energy(model).value_or(0.0)) / 1e3,
                   impact_energy(model) / 1e3, *friction / 1e3, r.energy.viscous / 1e3,
                   r.energy.relative_error);
   } else {
     std::snprintf(line, sizeof line,
                   "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
                   "viscous %.4g kJ, balance error %.2e\n",
-                  r.energy.input / 1e3, (r.energy.hysteretic - impact_energy(model)) / 1e3,
+                  r.energy.input / 1e3,
+                  (r.energy.hysteretic - impact_energy(model) - column_energy(model).value_or(0.0)) /
+                      1e3,
                   impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
   }
   out << line;
+  if (const std::optional<double> columns = column_energy(model)) {
+    std::snprintf(line, sizeof line, "  column hysteretic %.4g kJ (of the hysteretic total)\n",
+                  *columns / 1e3);
+    out << line;
+  }
   std::snprintf(line, sizeof line,
                 "Steps: %ld accepted, %ld rejected, %ld Newton iterations, step %.3g..%.3g s, "
                 "%.1f ms\n",

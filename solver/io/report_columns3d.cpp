@@ -67,7 +67,7 @@ void add_column_yield_json(const JobResult& job, const StructureInfo& s, nlohman
         if (first_yield < 0 || y.time < first_yield) first_yield = y.time;
       }
       peak_ductility = std::max(peak_ductility, pk[output_index(el, "ductility")].value);
-      energy += pk[output_index(el, "hysteretic_energy")].value;
+      energy += el.output(output_index(el, "hysteretic_energy"));  // at the end
       columns.push_back(jc);
     }
     column_energy += energy;
