@@ -82,8 +82,8 @@ TEST(ColumnYield3D, DiagonalLoadYieldsAtTheCircle) {
     EXPECT_NEAR(f[2], s.p.x() * V.y() - s.p.y() * V.x(), 1e-9 * expected * s.p.norm());
     double out[11];
     column.outputs(out);
-    EXPECT_NEAR(out[1], r, 1e-12);                             // drift
-    EXPECT_NEAR(out[2], r / (std::sqrt(2.0) * s.d_y[0]), 1e-9);  // ductility: per axis
+    EXPECT_NEAR(out[1], r, 1e-12);                                  // drift
+    EXPECT_NEAR(out[2], r / (std::sqrt(2.0) * s.d_y[0]), 1e-9);     // ductility: per axis
     EXPECT_EQ(out[9], r / std::sqrt(2.0) >= s.d_y[0] ? 1.0 : 0.0);  // yielded, per axis
   }
 }
@@ -185,7 +185,8 @@ TEST(ColumnYield3D, ElasticLimitEqualsTheElasticModel) {
                   1e-9, "a");
   ASSERT_EQ(limit.analysis.probes.size(), elastic.analysis.probes.size());
   for (std::size_t p = 0; p < elastic.analysis.probes.size(); ++p)
-    EXPECT_NEAR(limit.analysis.probes[p].resultant.value, elastic.analysis.probes[p].resultant.value,
+    EXPECT_NEAR(limit.analysis.probes[p].resultant.value,
+                elastic.analysis.probes[p].resultant.value,
                 1e-9 * elastic.analysis.probes[p].resultant.value)
         << p;
   for (std::size_t e = 0; e < elastic.model.elements.size(); ++e)  // the bearings
@@ -344,7 +345,8 @@ TEST(ColumnYield3D, InputReadsTheLawsAndRefusesBadOnes) {
     std::string key;
     std::string what;
   };
-  const std::string law = "hysteresis: {model: bilinear, yield_drift_ratio: 0.5 %, post_yield_ratio: 5 %}";
+  const std::string law =
+      "hysteresis: {model: bilinear, yield_drift_ratio: 0.5 %, post_yield_ratio: 5 %}";
   const Bad cases[] = {
       {with("yield_drift_ratio: 0.5 %", "yield_drift_ratio: 0"), 5,
        "structures[0].columns.hysteresis.yield_drift_ratio", ""},

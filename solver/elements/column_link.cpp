@@ -9,9 +9,9 @@
 namespace isopound {
 
 namespace {
-constexpr const char* kNames[] = {"shear",   "drift", "ductility", "shear_x", "shear_y",
-                                  "drift_x", "drift_y", "z_1",     "z_2",     "yielded",
-                                  "hysteretic_energy"};
+constexpr const char* kNames[] = {"shear",   "drift",   "ductility",        "shear_x",
+                                  "shear_y", "drift_x", "drift_y",          "z_1",
+                                  "z_2",     "yielded", "hysteretic_energy"};
 constexpr const char* kUnits[] = {"N", "m", "-", "N", "N", "m", "m", "-", "-", "-", "J"};
 constexpr int kOutputs = 11;
 }  // namespace
@@ -61,8 +61,8 @@ Eigen::Vector2d ColumnLink::shear_W() const {
 }
 
 Eigen::Matrix2d ColumnLink::tangent_W() const {
-  const Eigen::Matrix2d k_L = g_.yield_shear.asDiagonal() * law_->tangent() *
-                              g_.yield_drift.cwiseInverse().asDiagonal();
+  const Eigen::Matrix2d k_L =
+      g_.yield_shear.asDiagonal() * law_->tangent() * g_.yield_drift.cwiseInverse().asDiagonal();
   return R_ * k_L * R_.transpose();
 }
 
@@ -73,7 +73,9 @@ void ColumnLink::scatter(const Eigen::Vector2d& F, Eigen::VectorXd& f) const {
     if (dof_[i] >= 0) f[dof_[i]] += sign_[i] * generalised[i % 3];
 }
 
-void ColumnLink::add_force(Eigen::VectorXd& f) const { scatter(shear_W(), f); }
+void ColumnLink::add_force(Eigen::VectorXd& f) const {
+  scatter(shear_W(), f);
+}
 
 void ColumnLink::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   scatter(tangent_W() * deformation_of(x), y);
@@ -129,13 +131,21 @@ void ColumnLink::commit() {
   if (law_->deformation().cwiseAbs().maxCoeff() >= 1.0) yielded_ = true;
 }
 
-void ColumnLink::revert() { law_->revert(); }
+void ColumnLink::revert() {
+  law_->revert();
+}
 
-int ColumnLink::output_count() const { return kOutputs; }
+int ColumnLink::output_count() const {
+  return kOutputs;
+}
 
-std::string ColumnLink::output_name(int i) const { return kNames[i]; }
+std::string ColumnLink::output_name(int i) const {
+  return kNames[i];
+}
 
-std::string ColumnLink::output_unit(int i) const { return kUnits[i]; }
+std::string ColumnLink::output_unit(int i) const {
+  return kUnits[i];
+}
 
 void ColumnLink::outputs(double* out) const {
   const Eigen::Vector2d x = law_->deformation(), z = law_->internal();

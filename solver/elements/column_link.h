@@ -21,10 +21,10 @@ namespace isopound {
 
 // The column's geometry and yield point, SI, in the model's plan frame.
 struct ColumnLinkGeometry {
-  Eigen::Vector2d p_O;           // plan point relative to both diaphragms' DOF origin, m
-  double orientation = 0.0;      // rad, section axis 1 from x
-  Eigen::Vector2d yield_drift;   // d_y,i per section axis, m (> 0)
-  Eigen::Vector2d yield_shear;   // V_y,i per section axis, N (> 0)
+  Eigen::Vector2d p_O;          // plan point relative to both diaphragms' DOF origin, m
+  double orientation = 0.0;     // rad, section axis 1 from x
+  Eigen::Vector2d yield_drift;  // d_y,i per section axis, m (> 0)
+  Eigen::Vector2d yield_shear;  // V_y,i per section axis, N (> 0)
 };
 
 // Outputs: "shear" |V| (N), "drift" |d| (m), "ductility" max_i |d_L,i| / d_y,i, "shear_x",
@@ -78,7 +78,7 @@ class ColumnLink final : public Element {
   void scatter(const Eigen::Vector2d& F_W, Eigen::VectorXd& f) const;
 
   std::string label_;
-  int dof_[6];    // upper ux, uy, theta, lower ux, uy, theta (-1: ground or absent)
+  int dof_[6];  // upper ux, uy, theta, lower ux, uy, theta (-1: ground or absent)
   double sign_[6];
   ColumnLinkGeometry g_;
   Eigen::Matrix2d R_;  // columns: section axes 1 and 2 in the plan frame

@@ -435,17 +435,18 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                   "friction %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
                   r.energy.input / 1e3,
                   (r.energy.hysteretic - impact_energy(model) - *friction -
-                   column_energy(model).value_or(0.0)) / 1e3,
+                   column_energy(model).value_or(0.0)) /
+                      1e3,
                   impact_energy(model) / 1e3, *friction / 1e3, r.energy.viscous / 1e3,
                   r.energy.relative_error);
   } else {
-    std::snprintf(line, sizeof line,
-                  "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
-                  "viscous %.4g kJ, balance error %.2e\n",
-                  r.energy.input / 1e3,
-                  (r.energy.hysteretic - impact_energy(model) - column_energy(model).value_or(0.0)) /
-                      1e3,
-                  impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
+    std::snprintf(
+        line, sizeof line,
+        "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
+        "viscous %.4g kJ, balance error %.2e\n",
+        r.energy.input / 1e3,
+        (r.energy.hysteretic - impact_energy(model) - column_energy(model).value_or(0.0)) / 1e3,
+        impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
   }
   out << line;
   if (const std::optional<double> columns = column_energy(model)) {

@@ -84,12 +84,13 @@ void add_column_yield_json(const JobResult& job, const StructureInfo& s, nlohman
       st["residual_drift_ratio"] = residual;
     }
     if (!columns.empty()) {
-      st["yielding"] = {{"columns", columns},
-                        {"column_count", columns.size()},
-                        {"yielded_columns", yielded},
-                        {"peak_ductility", peak_ductility},
-                        {"first_yield_time_s", first_yield >= 0 ? json(first_yield) : json(nullptr)},
-                        {"hysteretic_energy_J", energy}};
+      st["yielding"] = {
+          {"columns", columns},
+          {"column_count", columns.size()},
+          {"yielded_columns", yielded},
+          {"peak_ductility", peak_ductility},
+          {"first_yield_time_s", first_yield >= 0 ? json(first_yield) : json(nullptr)},
+          {"hysteretic_energy_J", energy}};
     } else if (st["envelope_over_columns"]["drift_ratio"]["value"].get<double>() > limit) {
       st["elastic_limit_exceeded"] = true;
       exceeded = true;

@@ -20,8 +20,8 @@ namespace isopound {
 //    with yielding columns "yielding": {"columns": [per column: shear, drift, ductility,
 //    shear_x, shear_y, hysteretic_energy, first_yield_time_s or null], "peak_ductility",
 //    "yielded_columns", "column_count", "first_yield_time_s", "hysteretic_energy_J"}; per
-//    building "column_hysteretic_energy_J" (at the end; the part of the energy balance's hysteretic term
-//    dissipated by the columns).
+//    building "column_hysteretic_energy_J" (at the end; the part of the energy balance's hysteretic
+//    term dissipated by the columns).
 void add_column_yield_json(const JobResult& job, const StructureInfo& structure,
                            nlohmann::json& building);
 

@@ -171,7 +171,6 @@ Diaphragm3DConfig diaphragm_in_plan(const Building3DConfig& b, const Diaphragm3D
   return w;
 }
 
-
 Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, double h,
                                  ColumnCoupling coupling) {
   return storey_stiffness_split(columns, h, coupling).initial;

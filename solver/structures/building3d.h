@@ -27,8 +27,8 @@ Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns_W, d
 struct StoreyStiffness {
   Eigen::Matrix3d matrix, initial;
 };
-StoreyStiffness storey_stiffness_split(const std::vector<Column3DConfig>& columns_W,
-                                       double height, ColumnCoupling coupling);
+StoreyStiffness storey_stiffness_split(const std::vector<Column3DConfig>& columns_W, double height,
+                                       ColumnCoupling coupling);
 
 // P-Delta (p_delta_stiffness.cpp): storey s's geometric stiffness about the plan origin.
 Eigen::Matrix3d p_delta_stiffness(const Building3DConfig& building, std::size_t storey);

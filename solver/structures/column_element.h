@@ -26,8 +26,8 @@ std::string column_element_label(const std::string& building, int storey, const 
 // The column (position and orientation in the plan frame, relative to the DOFs' origin) between
 // the upper diaphragm and the lower one (DiaphragmDofs{}: the ground). Throws
 // std::invalid_argument for a column without a yielding law.
-std::unique_ptr<Element> make_column_element(const std::string& label, const Column3DConfig& column_W,
-                                             double height, DiaphragmDofs upper,
-                                             DiaphragmDofs lower);
+std::unique_ptr<Element> make_column_element(const std::string& label,
+                                             const Column3DConfig& column_W, double height,
+                                             DiaphragmDofs upper, DiaphragmDofs lower);
 
 }  // namespace isopound

@@ -35,8 +35,8 @@ struct ColumnHysteresisConfig {
   // Exactly one of the two is > 0: d_y = yield_drift_ratio h in both axes, or
   // V_y = 2 M_y / h (double curvature) in both axes and d_y,i = V_y / k_i.
   double yield_drift_ratio = 0.0;
-  double yield_moment = 0.0;     // N m
-  double post_yield_ratio = 0.0;  // alpha in [0, 1)
+  double yield_moment = 0.0;                         // N m
+  double post_yield_ratio = 0.0;                     // alpha in [0, 1)
   double n = 2.0, A = 1.0, beta = 0.5, gamma = 0.5;  // Bouc-Wen only
   bool yields() const { return model != Model::kElastic; }
 };
@@ -48,9 +48,9 @@ struct Column3DConfig {
   double I11 = 0.0;   // m^4, about axis 1 (resists motion along axis 2): k_2 = 12 E I11 / h^3
   double I22 = 0.0;   // m^4, about axis 2: k_1 = 12 E I22 / h^3
   double J = 0.0;     // m^4, torsion constant: k_theta = G J / h
-  double orientation = 0.0;  // rad
-  double E = 0.0;            // Pa
-  double G = 0.0;            // Pa
+  double orientation = 0.0;           // rad
+  double E = 0.0;                     // Pa
+  double G = 0.0;                     // Pa
   ColumnHysteresisConfig hysteresis;  // model kElastic: elastic in the stiffness matrix
 };
 

@@ -31,9 +31,9 @@ constexpr std::string_view kLevelQuantities3D[] = {"displacement",
                                                    "u",
                                                    "v",
                                                    "theta"};
-constexpr std::string_view kStoryQuantities3D[] = {"drift",     "drift_x",   "drift_y",
-                                                   "drift_ratio", "ductility", "yielded",
-                                                   "hysteretic_energy", "residual_drift_ratio"};
+constexpr std::string_view kStoryQuantities3D[] = {
+    "drift",     "drift_x", "drift_y",           "drift_ratio",
+    "ductility", "yielded", "hysteretic_energy", "residual_drift_ratio"};
 // Of the yielding columns' elements (column_element.h): max of ductility, sum of the others.
 constexpr std::string_view kColumnOutputs[] = {"ductility", "yielded", "hysteretic_energy"};
 constexpr std::string_view kEnergyTerms[] = {"input",          "kinetic",           "elastic",
@@ -186,8 +186,9 @@ void resolve_story3d(const OutputSelector& s, const Model& model, const Structur
         if (model.probes[p].label == label) r.indices.push_back(static_cast<int>(p));
     }
     if (r.indices.empty())
-      fail_selector(s, "storey shear of a 3D building is recorded when its columns yield or "
-                       "with p_delta: true");
+      fail_selector(s,
+                    "storey shear of a 3D building is recorded when its columns yield or "
+                    "with p_delta: true");
     return;
   }
   if (index_in(kColumnOutputs, q) >= 0) {  // the storeys' yielding column elements
@@ -486,8 +487,8 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
           return x;
         };
         for (const PlanProbe& p : r.end_probes)
-          value = std::max(value, std::hypot(sum(p.x_terms), sum(p.y_terms)) /
-                                      (r.end_ratio ? p.length : 1.0));
+          value = std::max(
+              value, std::hypot(sum(p.x_terms), sum(p.y_terms)) / (r.end_ratio ? p.length : 1.0));
         return value;
       }
       if (r.probe_component >= 0) {
