@@ -163,9 +163,10 @@ void expect_relative(const std::vector<Peak>& a, const std::vector<Peak>& b, dou
   ASSERT_EQ(a.size(), b.size()) << what;
   double scale = 0.0;
   for (const Peak& p : b) scale = std::max(scale, p.value);
+  // Plus round-off of the family: the doubly symmetric building's rotations are exactly 0, and
+  // both models give noise of ~1e-16 (elastic) and ~1e-13 (columns as elements) of the scale.
   for (std::size_t i = 0; i < a.size(); ++i)
-    EXPECT_NEAR(a[i].value, b[i].value, tol * std::max(b[i].value, 1e-9 * scale))
-        << what << " " << i;
+    EXPECT_NEAR(a[i].value, b[i].value, tol * b[i].value + 1e-12 * scale) << what << " " << i;
 }
 
 // The thesis building (isolated, coupled Bouc-Wen bearings) with bilinear columns whose yield
@@ -183,7 +184,8 @@ TEST(ColumnYield3D, ElasticLimitEqualsTheElasticModel) {
   expect_relative(limit.analysis.velocity, elastic.analysis.velocity, 1e-9, "v");
   expect_relative(limit.analysis.absolute_acceleration, elastic.analysis.absolute_acceleration,
                   1e-9, "a");
-  ASSERT_EQ(limit.analysis.probes.size(), elastic.analysis.probes.size());
+  // The same probes, then the storey shears (recorded with yielding columns).
+  ASSERT_EQ(limit.analysis.probes.size(), elastic.analysis.probes.size() + 3);
   for (std::size_t p = 0; p < elastic.analysis.probes.size(); ++p)
     EXPECT_NEAR(limit.analysis.probes[p].resultant.value,
                 elastic.analysis.probes[p].resultant.value,
@@ -205,8 +207,11 @@ TEST(ColumnYield3D, ReducesToThe2DShearBuildingWithSummedBilinearStoreys) {
   const double ratio = 0.005, alpha = 0.05;
   set_hysteresis(b, bilinear(ratio, alpha));
   c.output.histories = false;
-  PulseParameters pulse;
-  pulse.amplitude = 0.8;  // m/s: the storeys yield
+  PulseParameters pulse;  // near the fixed-base period 0.31 s: the storeys yield
+  pulse.amplitude = 0.6;  // m/s
+  pulse.period = 0.4;     // s
+  pulse.t_peak = 1.0;
+  pulse.duration = 6.0;
   const GroundMotion motion = make_pulse(pulse);
   RunOptions o;
   o.analysis.stepping = AnalysisConfig::Stepping::kFixed;
@@ -255,7 +260,7 @@ TEST(ColumnYield3D, ReducesToThe2DShearBuildingWithSummedBilinearStoreys) {
 
 // Isolated on friction pendulum bearings, moat walls at 5 cm, yielding Bouc-Wen columns, a strong
 // pulse pair at an angle: the columns yield, the slab pounds the walls, and the energy balance
-// closes.
+// closes to 1e-6.
 TEST(ColumnYield3D, EnergyBalanceWithYieldingColumnsWallsAndFriction) {
   ModelConfig c = thesis_config();
   Building3DConfig& b = c.structures3d[0];
@@ -269,6 +274,9 @@ TEST(ColumnYield3D, EnergyBalanceWithYieldingColumnsWallsAndFriction) {
   b.walls.gap = {0.05, 0.05, 0.05, 0.05};
   c.ground_motion = GroundMotionConfig{};
   c.ground_motion.angle = 0.5;
+  // The balance's error is that of the trapezoidal integration of the powers over the steps
+  // (bench/RESULTS.md: about the tolerance with pounding): 1e-7 for < 1e-6.
+  c.analysis.tolerance = 1e-7;
   c.output.histories = false;
   const JobResult job = run_job(c);
   const EnergyBalance& e = job.analysis.energy;
@@ -357,11 +365,11 @@ TEST(ColumnYield3D, InputReadsTheLawsAndRefusesBadOnes) {
       {with("post_yield_ratio: 5 %}}", "post_yield_ratio: -5 %}}"), 5,
        "structures[0].columns.hysteresis.post_yield_ratio", ""},
       {with("post_yield_ratio: 5 %}}", "post_yield_ratio: 5 %, n: 2}}"), 5,
-       "structures[0].columns.hysteresis.n", "not"},
+       "structures[0].columns.hysteresis.n", "unknown key"},
       {with("post_yield_ratio: 2 %, n: 3}", "post_yield_ratio: 2 %, n: 3, yield_drift_ratio: 1 %}"),
        11, "structures[0].storeys[1].hysteresis.yield_moment", "not both"},
       {with("{model: elastic}", "{model: elastic, post_yield_ratio: 0}"), 14,
-       "structures[0].storeys[2].columns[0].hysteresis.post_yield_ratio", "not"},
+       "structures[0].storeys[2].columns[0].hysteresis.post_yield_ratio", "unknown key"},
       {with("yield_drift_ratio: 1 %, post_yield_ratio: 0", "post_yield_ratio: 0"), 15,
        "structures[0].storeys[2].columns[1].hysteresis.yield_drift_ratio", "yield_moment"},
       {with(law, "hysteresis: {model: plastic}"), 5, "structures[0].columns.hysteresis.model",

@@ -244,7 +244,11 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                   "isolator_hysteretic + impact_dissipated (+ friction_dissipated in 3D "
                   "pounding)"}};
   if (friction) j["energy"]["friction_dissipated_J"] = *friction;
-  if (columns) j["energy"]["column_hysteretic_J"] = *columns;
+  if (columns) {
+    j["energy"]["column_hysteretic_J"] = *columns;
+    j["energy"]["note"] = j["energy"]["note"].get<std::string>() +
+                          " + column_hysteretic (the yielding 3D columns' dissipation)";
+  }
   if (unobstructed && !config.structures3d.empty()) {
     j["unobstructed_3d"] = unobstructed3d_json(job, *unobstructed);  // report3d.cpp
   } else if (unobstructed) {
