@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "solver/core/analysis.h"
+#include "solver/core/modes.h"
 #include "solver/elements/column_link.h"
 #include "solver/elements/uniaxial_link.h"
 #include "solver/io/model_input.h"
@@ -274,6 +275,7 @@ TEST(ColumnYield3D, EnergyBalanceWithYieldingColumnsWallsAndFriction) {
   b.walls.gap = {0.05, 0.05, 0.05, 0.05};
   c.ground_motion = GroundMotionConfig{};
   c.ground_motion.angle = 0.5;
+  c.ground_motion.pulse.duration = 8.0;  // s: the pulse (2-6 s) and 2 s after it
   // The balance's error is that of the trapezoidal integration of the powers over the steps
   // (bench/RESULTS.md: about the tolerance with pounding): 1e-7 for < 1e-6.
   c.analysis.tolerance = 1e-7;
@@ -292,6 +294,51 @@ TEST(ColumnYield3D, EnergyBalanceWithYieldingColumnsWallsAndFriction) {
   EXPECT_GT(contacts, 0);
   EXPECT_GT(e.hysteretic, 0.0);
   EXPECT_LT(e.relative_error, 1e-6) << "max over time " << e.max_relative_error;
+}
+
+// P-Delta: the model's stiffness with p_delta minus without is the geometric stiffness of each
+// storey, -(g / h) times the masses above: in x and y -P/h, in torsion -(P/h) (I_p / m) with I_p
+// the polar moment about the plan origin (a centred 16.5 m square floor: m (a^2 + b^2) / 12;
+// eccentric by e: + m |e|^2, and x-theta, y-theta terms m e), placed between the two levels.
+// Then a one-storey building's translational frequency is sqrt((k - P/h) / m) exactly.
+TEST(ColumnYield3D, PDeltaGeometricStiffness) {
+  ModelConfig c = thesis_config();
+  Building3DConfig& b = c.structures3d[0];
+  b.isolated = false;
+  b.storeys.resize(2);
+  b.storeys[1].floor.eccentricity = {0.5, -0.3};
+  b.damping.type = Damping3DConfig::Type::kNone;
+  b.polar_moment_rule = EccentricPolarMoment::kThesis;
+  const Model without = build_model(c);
+  b.p_delta = true;
+  const Model with = build_model(c);
+  const Eigen::MatrixXd kg = with.stiffness - without.stiffness;
+  const double h = 3.2, m1 = 340e3, m2 = 340e3, L = 16.5, g = 9.81;
+  const Eigen::Vector2d e(0.5, -0.3);
+  // The masses about the plan origin: floor 1 centred, floor 2 eccentric.
+  Eigen::Matrix3d M1 = Eigen::Matrix3d::Zero(), M2 = Eigen::Matrix3d::Zero();
+  M1.diagonal() << m1, m1, m1 * L * L / 6.0;
+  M2.diagonal() << m2, m2, m2 * L * L / 6.0 + 2.0 * m2 * e.squaredNorm();  // thesis rule
+  M2(0, 2) = M2(2, 0) = -m2 * e.y();
+  M2(1, 2) = M2(2, 1) = m2 * e.x();
+  const Eigen::Matrix3d k1 = -(g / h) * (M1 + M2), k2 = -(g / h) * M2;
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(6, 6);
+  expected.topLeftCorner<3, 3>() = k1 + k2;
+  expected.bottomRightCorner<3, 3>() = k2;
+  expected.topRightCorner<3, 3>() = -k2;
+  expected.bottomLeftCorner<3, 3>() = -k2;
+  EXPECT_LT((kg - expected).norm(), 1e-9 * expected.norm()) << kg << "\n\n" << expected;
+  EXPECT_DOUBLE_EQ(kg(0, 0), -g * (m1 + 2 * m2) / h);  // -P1/h - P2/h at the lower level
+
+  // One storey: omega^2 = (k - P/h) / m in x.
+  b.storeys.resize(1);
+  b.storeys[0].floor.eccentricity = {0.0, 0.0};
+  const Model one = build_model(c);
+  const double k = one.stiffness(0, 0) + g * m1 / h;  // the columns' 16 x 12 E I / h^3
+  const double I = std::pow(0.45, 4) / 12.0;
+  EXPECT_NEAR(k, 16.0 * 12.0 * 30e9 * I / (h * h * h), 1e-9 * k);
+  const Modes modes = compute_modes(one.stiffness, one.mass, one.influence);
+  EXPECT_NEAR(modes.omega[0], std::sqrt((k - g * m1 / h) / m1), 1e-9 * modes.omega[0]);
 }
 
 ModelConfig load_text(const std::string& text) {
