@@ -53,7 +53,8 @@ struct StructureInfo {
   std::vector<int> upper_contact_elements;
   // Per story: index into Model::elements of its hysteretic law, or -1 (a linear spring in K).
   std::vector<int> story_elements;
-  // A linear story whose peak drift ratio exceeds this is flagged (outputs only; 0: never).
+  // An elastic storey whose peak drift ratio exceeds this is outside the elastic model's range:
+  // reports flag it (outputs only; 0: never). The model input sets it (default 1 %).
   double elastic_limit_drift_ratio = 0.0;
 };
 

@@ -60,10 +60,55 @@ std::vector<Vec2> read_plan(const InputNode& node) {
 struct ColumnProps {
   std::optional<double> b, h, I11, I22, J, E, G, nu;
   double orientation = 0.0;
+  ColumnHysteresisConfig hysteresis;  // a `hysteresis:` map replaces the default's whole
 };
 
-const std::vector<std::string_view> kColumnPropKeys = {"section",     "I11", "I22", "J",
-                                                       "orientation", "E",   "G",   "nu"};
+const std::vector<std::string_view> kColumnPropKeys = {
+    "section", "I11", "I22", "J", "orientation", "E", "G", "nu", "hysteresis"};
+
+constexpr Dimension kMoment{2, 1, -2};  // N m
+
+// hysteresis: {model: bilinear | bouc_wen | elastic, yield_drift_ratio | yield_moment,
+// post_yield_ratio, and for bouc_wen n, A, beta, gamma}: column_element.h. Keys the model does
+// not use are refused.
+ColumnHysteresisConfig read_column_hysteresis(const InputNode& node) {
+  using M = ColumnHysteresisConfig::Model;
+  ColumnHysteresisConfig c;
+  if (!node.is_map()) node.fail("expected a map {model: bilinear | bouc_wen | elastic, ...}");
+  c.model = node.required("model").choice<M>(
+      {{"bilinear", M::kBilinear}, {"bouc_wen", M::kBoucWen}, {"elastic", M::kElastic}});
+  if (c.model == M::kElastic) {
+    node.expect_keys({"model"});
+    return c;
+  }
+  if (c.model == M::kBilinear)
+    node.expect_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio"});
+  else
+    node.expect_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio", "n", "A",
+                      "beta", "gamma"});
+  const auto ratio = node.find("yield_drift_ratio");
+  const auto moment = node.find("yield_moment");
+  if (ratio && moment)
+    node.fail_at_key("yield_moment", "give either yield_drift_ratio or yield_moment, not both");
+  if (!ratio && !moment)
+    node.fail_at_key("yield_drift_ratio",
+                     "a yielding column needs yield_drift_ratio (d_y = ratio x storey height) or "
+                     "yield_moment (V_y = 2 M_y / h)");
+  if (ratio) c.yield_drift_ratio = ratio->number(Bound::kPositive);
+  if (moment) c.yield_moment = moment->quantity(kMoment, Bound::kPositive);
+  const InputNode alpha = node.required("post_yield_ratio");
+  c.post_yield_ratio = alpha.number(Bound::kNonNegative);
+  if (!(c.post_yield_ratio < 1.0)) alpha.fail("must be in [0, 1): post-yield / elastic stiffness");
+  if (c.model == M::kBoucWen) {
+    node.read_number("n", Bound::kPositive, c.n);
+    if (c.n < 1.0) node.fail_at_key("n", "must be >= 1");
+    node.read_number("A", Bound::kPositive, c.A);
+    node.read_number("beta", Bound::kAny, c.beta);
+    node.read_number("gamma", Bound::kAny, c.gamma);
+    if (!(c.beta + c.gamma > 0)) node.fail_at_key("beta", "beta + gamma must be > 0");
+  }
+  return c;
+}
 
 void read_column_props(const InputNode& node, ColumnProps& p) {
   if (const auto s = node.find("section")) {
@@ -82,6 +127,7 @@ void read_column_props(const InputNode& node, ColumnProps& p) {
     if (*p.nu >= 0.5) n->fail("Poisson's ratio must be in [0, 0.5)");
   }
   if (p.G && p.nu) node.fail_at_key("nu", "give either G or nu, not both");
+  if (const auto n = node.find("hysteresis")) p.hysteresis = read_column_hysteresis(*n);
 }
 
 // Rectangle b (along axis 1) x h (along axis 2): I11 = b h^3/12, I22 = h b^3/12 and Saint-Venant
@@ -89,6 +135,7 @@ void read_column_props(const InputNode& node, ColumnProps& p) {
 Column3DConfig make_column(const ColumnProps& p, const InputNode& where) {
   Column3DConfig c;
   c.orientation = p.orientation;
+  c.hysteresis = p.hysteresis;
   if (p.b) {
     const double b = *p.b, h = *p.h, a = std::max(b, h), s = std::min(b, h);
     c.I11 = b * h * h * h / 12.0;
@@ -284,7 +331,8 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
 Building3DConfig read_building3d(const InputNode& node) {
   node.expect_keys({"name", "position", "rotation", "isolated", "plan", "grid", "columns",
                     "storeys", "base", "eccentricity", "bearing", "bearings", "damping",
-                    "polar_moment_rule", "column_coupling", "walls", "adjacent"});
+                    "polar_moment_rule", "column_coupling", "walls", "adjacent", "p_delta",
+                    "elastic_limit_drift_ratio"});
   Building3DConfig b;
   if (const auto n = node.find("name")) {
     b.name = n->string();
@@ -293,6 +341,8 @@ Building3DConfig read_building3d(const InputNode& node) {
   if (const auto p = node.find("position")) b.position = read_point(*p);
   node.read_angle("rotation", b.rotation);
   node.read_boolean("isolated", b.isolated);
+  node.read_boolean("p_delta", b.p_delta);
+  node.read_number("elastic_limit_drift_ratio", Bound::kPositive, b.elastic_limit_drift_ratio);
   if (const auto r = node.find("polar_moment_rule"))
     b.polar_moment_rule = r->choice<EccentricPolarMoment>(
         {{"thesis", EccentricPolarMoment::kThesis}, {"centroid", EccentricPolarMoment::kCentroid}});
@@ -320,12 +370,12 @@ Building3DConfig read_building3d(const InputNode& node) {
   Vec2 eccentricity;
   if (const auto e = node.find("eccentricity")) eccentricity = read_point(*e);
 
-  const auto grid_columns = [&](const InputNode& where) {
+  const auto grid_columns = [&](const InputNode& where, const ColumnProps& props) {
     if (grid.empty())
       where.fail("no columns: give grid: {bays_x, bays_y} or a columns list in each storey");
     std::vector<Column3DConfig> cols;
     for (const auto& [label, p] : grid) {
-      Column3DConfig c = make_column(defaults, columns_node ? *columns_node : where);
+      Column3DConfig c = make_column(props, columns_node ? *columns_node : where);
       c.label = label;
       c.position = p;
       cols.push_back(c);
@@ -342,7 +392,12 @@ Building3DConfig read_building3d(const InputNode& node) {
     if (storeys.elements().empty()) storeys.fail("no storeys");
     if (storeys.elements().size() > kMaxStoreys) storeys.fail("too many storeys");
     for (const InputNode& item : storeys.elements()) {
-      item.expect_keys({"height", "mass", "eccentricity", "polar_moment", "plan", "columns"});
+      item.expect_keys(
+          {"height", "mass", "eccentricity", "polar_moment", "plan", "columns", "hysteresis"});
+      // The storey's columns' law (a column's own `hysteresis:` overrides it).
+      ColumnProps storey_defaults = defaults;
+      if (const auto n = item.find("hysteresis"))
+        storey_defaults.hysteresis = read_column_hysteresis(*n);
       Storey3DConfig s;
       s.height = item.required("height").quantity(dim::kLength, Bound::kPositive);
       s.floor.mass = item.required("mass").quantity(dim::kMass, Bound::kPositive);
@@ -357,7 +412,7 @@ Building3DConfig read_building3d(const InputNode& node) {
           keys.push_back("label");
           keys.push_back("at");
           c.expect_keys(keys);
-          ColumnProps p = defaults;
+          ColumnProps p = storey_defaults;
           read_column_props(c, p);
           Column3DConfig col = make_column(p, c);
           col.position = read_point(c.required("at"));
@@ -367,7 +422,7 @@ Building3DConfig read_building3d(const InputNode& node) {
         }
         if (s.columns.empty()) cols->fail("no columns");
       } else {
-        s.columns = grid_columns(item);
+        s.columns = grid_columns(item, storey_defaults);
       }
       b.storeys.push_back(s);
     }
@@ -380,7 +435,7 @@ Building3DConfig read_building3d(const InputNode& node) {
     s.floor.plan = plan;
     s.floor.eccentricity = eccentricity;
     check_plan(s.floor, node);
-    s.columns = grid_columns(storeys);
+    s.columns = grid_columns(storeys, defaults);
     b.storeys.assign(static_cast<std::size_t>(count), s);
     storeys.read_quantity("roof_mass", dim::kMass, Bound::kPositive, b.storeys.back().floor.mass);
   }

@@ -6,6 +6,7 @@
 
 #include <optional>
 
+#include "solver/elements/column_link.h"
 #include "solver/elements/polygon_contact.h"
 
 #include <cerrno>
@@ -152,6 +153,15 @@ std::optional<nlohmann::json> unobstructed_structure_json(const JobResult& job,
                            {"drift_amplification", ratio(r.drift[k].value, u.drift[f].value)}});
   }
   return json{{"name", s.name}, {"levels", levels}, {"stories", stories}};
+}
+
+// Energy dissipated by yielding 3D columns (their final state); nullopt when the model has none.
+std::optional<double> column_energy(const Model& model) {
+  std::optional<double> sum;
+  for (const auto& el : model.elements)
+    if (const auto* c = dynamic_cast<const ColumnLink*>(el.get()))
+      sum = sum.value_or(0.0) + c->hysteretic_energy();
+  return sum;
 }
 
 double structure_weight(const Model& model, const StructureInfo& s) {
@@ -318,13 +328,15 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
   const double impacts = impact_energy(model);
   const std::optional<double> friction = friction_energy(model);
   const double stories_hysteretic = story_hysteretic_energy(model);
+  const std::optional<double> columns = column_energy(model);
   j["energy"] = {{"input_J", en.input},
                  {"kinetic_J", en.kinetic},
                  {"elastic_J", en.elastic},
                  {"viscous_J", en.viscous},
                  {"hysteretic_J", en.hysteretic},
                  {"isolator_hysteretic_J",
-                  en.hysteretic - impacts - friction.value_or(0.0) - stories_hysteretic},
+                  en.hysteretic - impacts - friction.value_or(0.0) - stories_hysteretic -
+                      columns.value_or(0.0)},
                  {"impact_dissipated_J", impacts},
                  {"balance_error_J", en.error},
                  {"relative_error", en.relative_error},
@@ -342,6 +354,11 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
         "steps) minus their recoverable energy; hysteretic = isolator_hysteretic + "
         "impact_dissipated + story_hysteretic; residual drifts are at the end of the analysis "
         "(record + extra_time)";
+  }
+  if (columns) {
+    j["energy"]["column_hysteretic_J"] = *columns;
+    j["energy"]["note"] = j["energy"]["note"].get<std::string>() +
+                          " + column_hysteretic (the yielding 3D columns' dissipation)";
   }
   if (unobstructed && !has_contacts(model)) {
     j[config.structures3d.empty() ? "unobstructed" : "unobstructed_3d"] = {
@@ -540,7 +557,9 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                   "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
                   "friction %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
                   r.energy.input / 1e3,
-                  (r.energy.hysteretic - impact_energy(model) - *friction) / 1e3,
+                  (r.energy.hysteretic - impact_energy(model) - *friction -
+                   column_energy(model).value_or(0.0)) /
+                      1e3,
                   impact_energy(model) / 1e3, *friction / 1e3, r.energy.viscous / 1e3,
                   r.energy.relative_error);
   } else if (has_yielding_stories(model)) {
@@ -552,13 +571,20 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                   (r.energy.hysteretic - impact_energy(model) - stories) / 1e3, stories / 1e3,
                   impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
   } else {
-    std::snprintf(line, sizeof line,
-                  "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
-                  "viscous %.4g kJ, balance error %.2e\n",
-                  r.energy.input / 1e3, (r.energy.hysteretic - impact_energy(model)) / 1e3,
-                  impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
+    std::snprintf(
+        line, sizeof line,
+        "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
+        "viscous %.4g kJ, balance error %.2e\n",
+        r.energy.input / 1e3,
+        (r.energy.hysteretic - impact_energy(model) - column_energy(model).value_or(0.0)) / 1e3,
+        impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
   }
   out << line;
+  if (const std::optional<double> columns = column_energy(model)) {
+    std::snprintf(line, sizeof line, "  column hysteretic %.4g kJ (of the hysteretic total)\n",
+                  *columns / 1e3);
+    out << line;
+  }
   std::snprintf(line, sizeof line,
                 "Steps: %ld accepted, %ld rejected, %ld Newton iterations, step %.3g..%.3g s, "
                 "%.1f ms\n",

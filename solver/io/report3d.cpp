@@ -11,6 +11,7 @@
 #include "solver/core/modes.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/io/report.h"
+#include "solver/io/report_columns3d.h"
 #include "solver/structures/building3d.h"
 
 namespace isopound {
@@ -80,6 +81,7 @@ nlohmann::json summary3d_json(const JobResult& job) {
       const Label l = split(probe.label);
       if (l.building != s.name) continue;
       const ProbePeaks& pk = r.probes[p];
+      if (l.part == kStoreyShearPart) continue;  // report_columns3d.cpp
       if (levels.count(l.part)) {
         json& lev = levels[l.part];
         const bool acc = probe.quantity == PlanProbe::Quantity::kAbsoluteAcceleration;
@@ -131,6 +133,7 @@ nlohmann::json summary3d_json(const JobResult& job) {
       js.push_back(st);
     }
     jb["storeys"] = js;
+    add_column_yield_json(job, s, jb);  // report_columns3d.h
     json bearings = json::array();
     for (std::size_t e = 0; e < model.elements.size(); ++e) {
       const Element& el = *model.elements[e];
@@ -358,6 +361,7 @@ void print_summary3d(std::ostream& out, const JobResult& job) {
       }
       out << '\n';
     }
+    print_column_yield(out, b);
     double d = 0.0, f = 0.0;
     for (const auto& br : b["bearings"]) {
       if (br.contains("deformation")) d = std::max(d, br["deformation"]["value"].get<double>());

@@ -10,6 +10,7 @@
 #include "solver/core/modes.h"
 #include "solver/structures/bearing_element.h"
 #include "solver/structures/rayleigh_modes.h"
+#include "solver/structures/column_element.h"
 
 namespace isopound {
 
@@ -28,13 +29,6 @@ Vec2 rotate(double angle, Vec2 v) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 
-Diaphragm3DConfig diaphragm_in_plan(const Building3DConfig& b, const Diaphragm3DConfig& d) {
-  Diaphragm3DConfig w = d;
-  for (Vec2& p : w.plan) p = to_plan(b, p);
-  w.eccentricity = rotate(b.rotation, d.eccentricity);
-  return w;
-}
-
 std::vector<Column3DConfig> columns_in_plan(const Building3DConfig& b,
                                             const std::vector<Column3DConfig>& columns) {
   std::vector<Column3DConfig> w = columns;
@@ -47,7 +41,10 @@ std::vector<Column3DConfig> columns_in_plan(const Building3DConfig& b,
 
 // One building's levels (base slab if isolated, then floors), three DOFs each, in plan frame.
 struct Assembly {
-  Eigen::MatrixXd mass, stiffness, influence;  // over the building's DOFs
+  // Over the building's DOFs. stiffness: what the model's matrix holds (yielding columns' shear
+  // is in their elements, P-Delta included); initial_stiffness: every column elastic, no P-Delta
+  // (damping and modes).
+  Eigen::MatrixXd mass, stiffness, initial_stiffness, influence;
   std::vector<Dof> dofs;
   std::vector<Diaphragm3DConfig> levels_W;  // per level, plan frame
   std::vector<Vec2> bearing_positions_W;
@@ -55,6 +52,16 @@ struct Assembly {
   std::vector<double> bearing_masses;
   double total_mass = 0.0;
 };
+
+// A storey's 3 x 3 matrix k between levels upper and lower (< 0: the ground): [k, -k; -k, k].
+void add_storey(Eigen::MatrixXd& K, int upper, int lower, const Eigen::Matrix3d& k) {
+  K.block<3, 3>(upper, upper) += k;
+  if (lower >= 0) {
+    K.block<3, 3>(lower, lower) += k;
+    K.block<3, 3>(lower, upper) -= k;
+    K.block<3, 3>(upper, lower) -= k;
+  }
+}
 
 Assembly assemble(const Building3DConfig& b, bool with_base) {
   if (b.storeys.empty()) throw std::invalid_argument("building '" + b.name + "' has no storeys");
@@ -65,6 +72,7 @@ Assembly assemble(const Building3DConfig& b, bool with_base) {
   const int n = 3 * levels;
   a.mass.setZero(n, n);
   a.stiffness.setZero(n, n);
+  a.initial_stiffness.setZero(n, n);
   a.influence.setZero(n, 2);
   for (int l = 0; l < levels; ++l) {
     const Eigen::Matrix3d m = diaphragm_mass(a.levels_W[l], b.polar_moment_rule);
@@ -83,16 +91,13 @@ Assembly assemble(const Building3DConfig& b, bool with_base) {
     const Storey3DConfig& storey = b.storeys[s];
     if (!(storey.height > 0))
       throw std::invalid_argument("storey " + std::to_string(s + 1) + ": height must be > 0");
-    const Eigen::Matrix3d k =
-        storey_stiffness(columns_in_plan(b, storey.columns), storey.height, b.column_coupling);
+    const StoreyStiffness k = storey_stiffness_split(columns_in_plan(b, storey.columns),
+                                                     storey.height, b.column_coupling);
     const int upper = 3 * (first_floor + static_cast<int>(s));
     const int lower = upper - 3;  // < 0: the ground
-    a.stiffness.block<3, 3>(upper, upper) += k;
-    if (lower >= 0) {
-      a.stiffness.block<3, 3>(lower, lower) += k;
-      a.stiffness.block<3, 3>(lower, upper) -= k;
-      a.stiffness.block<3, 3>(upper, lower) -= k;
-    }
+    add_storey(a.stiffness, upper, lower, k.matrix);
+    add_storey(a.initial_stiffness, upper, lower, k.initial);
+    if (b.p_delta) add_storey(a.stiffness, upper, lower, p_delta_stiffness(b, s));
   }
   if (with_base) {
     if (b.bearings.empty()) {
@@ -161,9 +166,21 @@ Vec2 to_plan(const Building3DConfig& b, Vec2 p_B) {
   return b.position + rotate(b.rotation, p_B);
 }
 
+Diaphragm3DConfig diaphragm_in_plan(const Building3DConfig& b, const Diaphragm3DConfig& d) {
+  Diaphragm3DConfig w = d;
+  for (Vec2& p : w.plan) p = to_plan(b, p);
+  w.eccentricity = rotate(b.rotation, d.eccentricity);
+  return w;
+}
+
 Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, double h,
                                  ColumnCoupling coupling) {
-  Eigen::Matrix3d k = Eigen::Matrix3d::Zero();
+  return storey_stiffness_split(columns, h, coupling).initial;
+}
+
+StoreyStiffness storey_stiffness_split(const std::vector<Column3DConfig>& columns, double h,
+                                       ColumnCoupling coupling) {
+  StoreyStiffness k{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   for (const Column3DConfig& c : columns) {
     if (!(c.I11 > 0) || !(c.I22 > 0) || !(c.J > 0) || !(c.E > 0) || !(c.G > 0))
       throw std::invalid_argument("column " + c.label + ": section and moduli must be > 0");
@@ -173,10 +190,17 @@ Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, dou
     Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
     local(0, 0) = k1 * cr * cr + k2 * sr * sr;  // k^I
     local(1, 1) = k1 * sr * sr + k2 * cr * cr;  // k^II
-    if (coupling == ColumnCoupling::kFull) local(0, 1) = local(1, 0) = (k1 - k2) * sr * cr;
+    // A yielding column's law acts in its section axes: always the full rotated stiffness.
+    if (coupling == ColumnCoupling::kFull || c.hysteresis.yields())
+      local(0, 1) = local(1, 0) = (k1 - k2) * sr * cr;
     local(2, 2) = c.G * c.J / h;  // k^theta
     const Eigen::Matrix3d T = point_transform(c.position);
-    k += T.transpose() * local * T;
+    const Eigen::Matrix3d k_c = T.transpose() * local * T;
+    k.initial += k_c;
+    if (c.hysteresis.yields())
+      k.matrix(2, 2) += local(2, 2);  // T^T diag(0, 0, k_theta) T: torsion only
+    else
+      k.matrix += k_c;
   }
   return k;
 }
@@ -238,14 +262,14 @@ void add_building3d(Model& model, const Building3DConfig& b) {
   Eigen::MatrixXd C = Eigen::MatrixXd::Zero(nb, nb);
   const Damping3DConfig& d = b.damping;
   if (d.type == Damping3DConfig::Type::kRayleigh) {
-    Eigen::MatrixXd K = a.stiffness;
+    Eigen::MatrixXd K = a.initial_stiffness;
     if (b.isolated)
       add_bearing_springs(K, a, bearing_stiffnesses(b, a, d.initial_bearing_stiffness));
     C = rayleigh(K, a.mass, a.influence, d, "building '" + b.name + "'");
   } else if (d.type == Damping3DConfig::Type::kNonClassical) {
     const Assembly s = b.isolated ? assemble(b, false) : a;
     const Eigen::MatrixXd c_s =
-        rayleigh(s.stiffness, s.mass, s.influence, d,
+        rayleigh(s.initial_stiffness, s.mass, s.influence, d,
                  "the fixed-base superstructure of building '" + b.name + "'");
     if (b.isolated) {
       // Relative to the base slab: w_i = q_i - q_base, C = T^T C_s T.
@@ -274,6 +298,20 @@ void add_building3d(Model& model, const Building3DConfig& b) {
       model.elements.push_back(make_bearing_element(
           b.name + "/bearing " + a.bearing_labels[j], {offset, offset + 1, offset + 2},
           Eigen::Vector2d(p.x, p.y), b.bearing, a.bearing_masses[j]));
+    }
+  }
+
+  // Yielding columns: their shear as elements between the levels they join.
+  const int first_floor = b.isolated ? 1 : 0;
+  for (std::size_t s = 0; s < b.storeys.size(); ++s) {
+    const int upper = offset + 3 * (first_floor + static_cast<int>(s));
+    const int lower = s == 0 && !b.isolated ? -1 : upper - 3;
+    for (const Column3DConfig& c : columns_in_plan(b, b.storeys[s].columns)) {
+      if (!c.hysteresis.yields()) continue;
+      model.elements.push_back(make_column_element(
+          column_element_label(b.name, static_cast<int>(s), c.label), c, b.storeys[s].height,
+          {upper, upper + 1, upper + 2},
+          lower >= 0 ? DiaphragmDofs{lower, lower + 1, lower + 2} : DiaphragmDofs{}));
     }
   }
 
@@ -307,7 +345,6 @@ void add_building3d(Model& model, const Building3DConfig& b) {
         model.probes.push_back(std::move(probe));
       }
   }
-  const int first_floor = b.isolated ? 1 : 0;
   for (std::size_t s = 0; s < b.storeys.size(); ++s) {
     const int upper = offset + 3 * (first_floor + static_cast<int>(s));
     const int lower = s == 0 && !b.isolated ? -1 : upper - 3;
@@ -319,13 +356,37 @@ void add_building3d(Model& model, const Building3DConfig& b) {
       model.probes.push_back(std::move(probe));
     }
   }
+  // Storey shears (yielding columns or P-Delta): V = -sum over the levels above of M a_abs, in x
+  // and y (the rows of M of those levels; theta's absolute acceleration is its relative one).
+  bool inelastic = b.p_delta;
+  for (const Storey3DConfig& storey : b.storeys)
+    for (const Column3DConfig& c : storey.columns) inelastic = inelastic || c.hysteresis.yields();
+  if (inelastic) {
+    for (std::size_t s = 0; s < b.storeys.size(); ++s) {
+      const int upper = 3 * (first_floor + static_cast<int>(s));  // building DOF of the level
+      PlanProbe probe;
+      probe.label = b.name + "/" + kStoreyShearPart + "/story " + std::to_string(s + 1);
+      probe.quantity = PlanProbe::Quantity::kAbsoluteAcceleration;
+      for (int j = upper; j < nb; ++j) {
+        double cx = 0.0, cy = 0.0;
+        for (int i = upper; i < nb; i += 3) {
+          cx -= a.mass(i, j);
+          cy -= a.mass(i + 1, j);
+        }
+        if (cx != 0.0) probe.x_terms.push_back({offset + j, cx});
+        if (cy != 0.0) probe.y_terms.push_back({offset + j, cy});
+      }
+      model.probes.push_back(std::move(probe));
+    }
+  }
+  info.elastic_limit_drift_ratio = b.elastic_limit_drift_ratio;
   model.structures.push_back(std::move(info));
 }
 
 LinearModel3D linear_model3d(const Building3DConfig& b, bool initial, bool fixed_base) {
   const bool with_base = b.isolated && !fixed_base;
   const Assembly a = assemble(b, with_base);
-  LinearModel3D m{a.mass, a.stiffness, a.influence, a.dofs};
+  LinearModel3D m{a.mass, a.initial_stiffness, a.influence, a.dofs};
   if (with_base) add_bearing_springs(m.stiffness, a, bearing_stiffnesses(b, a, initial));
   return m;
 }

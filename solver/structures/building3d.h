@@ -13,6 +13,8 @@ namespace isopound {
 
 // A building frame placed in the model's plan frame: p_W = position + R(rotation) p_B.
 Vec2 to_plan(const Building3DConfig& b, Vec2 p_B);
+// A diaphragm (plan, eccentricity) of the building placed in the model's plan frame.
+Diaphragm3DConfig diaphragm_in_plan(const Building3DConfig& b, const Diaphragm3DConfig& d_B);
 
 // Storey stiffness (3 x 3, DOFs at the plan origin) of the columns of one storey of height h;
 // positions and orientations in the plan frame.
@@ -23,9 +25,25 @@ Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns_W, d
 // plan (THEORY eq. 5.9; `rule` says whether the eccentricity's m e^2 is added).
 double polar_moment_about_cm(const Diaphragm3DConfig& diaphragm, EccentricPolarMoment rule);
 
+// The same split for the model: `matrix` holds the elastic columns and the torsion of yielding
+// ones (their shear is an element, column_element.h); `initial` every column elastic (= the
+// storey_stiffness above), for damping and modes.
+struct StoreyStiffness {
+  Eigen::Matrix3d matrix, initial;
+};
+StoreyStiffness storey_stiffness_split(const std::vector<Column3DConfig>& columns_W, double height,
+                                       ColumnCoupling coupling);
+
+// P-Delta (p_delta_stiffness.cpp): storey s's geometric stiffness about the plan origin.
+Eigen::Matrix3d p_delta_stiffness(const Building3DConfig& building, std::size_t storey);
+
 // Mass matrix (3 x 3, DOFs at the plan origin) of a diaphragm whose plan and eccentricity are
 // in the plan frame.
 Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& diaphragm_W, EccentricPolarMoment rule);
+
+// The plan probes of storey shears (N, x and y) are labelled "<building>/" kStoreyShearPart
+// "/story <k>"; a building gets them when a column yields or with P-Delta.
+inline constexpr const char* kStoreyShearPart = "storey shear";
 
 // Adds one building: DOFs (u, v, theta) per level (base slab first if isolated), matrices,
 // bearings, damping and output probes (centre of mass and corners of each floor, every column's

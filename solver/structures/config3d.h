@@ -21,6 +21,26 @@ struct Diaphragm3DConfig {
   double polar_moment = 0.0;
 };
 
+// A yielding column's lateral law (issue 23): a biaxial law in the column's section axes
+// (1, 2), each axis normalised by its yield drift d_y,i and yield shear V_y,i = k_i d_y,i
+// (k_1 = 12 E I22 / h^3, k_2 = 12 E I11 / h^3), so the interaction is circular in
+// (V_1 / V_y,1, V_2 / V_y,2). Torsion (G J / h) stays elastic.
+struct ColumnHysteresisConfig {
+  enum class Model {
+    kElastic,   // no law: the column stays in the stiffness matrix (today's model)
+    kBilinear,  // biaxial bilinear, kinematic hardening, circular yield surface
+    kBoucWen,   // coupled Bouc-Wen (the bearings' law, THEORY eq. 5.27-5.29)
+  };
+  Model model = Model::kElastic;
+  // Exactly one of the two is > 0: d_y = yield_drift_ratio h in both axes, or
+  // V_y = 2 M_y / h (double curvature) in both axes and d_y,i = V_y / k_i.
+  double yield_drift_ratio = 0.0;
+  double yield_moment = 0.0;                         // N m
+  double post_yield_ratio = 0.0;                     // alpha in [0, 1)
+  double n = 2.0, A = 1.0, beta = 0.5, gamma = 0.5;  // Bouc-Wen only
+  bool yields() const { return model != Model::kElastic; }
+};
+
 // A column of one storey (THEORY eq. 5.1-5.2): principal axis 1 at `orientation` from x.
 struct Column3DConfig {
   std::string label;  // e.g. "A1" (grid: letter along x, number along y)
@@ -28,9 +48,10 @@ struct Column3DConfig {
   double I11 = 0.0;   // m^4, about axis 1 (resists motion along axis 2): k_2 = 12 E I11 / h^3
   double I22 = 0.0;   // m^4, about axis 2: k_1 = 12 E I22 / h^3
   double J = 0.0;     // m^4, torsion constant: k_theta = G J / h
-  double orientation = 0.0;  // rad
-  double E = 0.0;            // Pa
-  double G = 0.0;            // Pa
+  double orientation = 0.0;           // rad
+  double E = 0.0;                     // Pa
+  double G = 0.0;                     // Pa
+  ColumnHysteresisConfig hysteresis;  // model kElastic: elastic in the stiffness matrix
 };
 
 // One storey: its columns and the floor on top of it.
@@ -117,6 +138,11 @@ struct Building3DConfig {
   ColumnCoupling column_coupling = ColumnCoupling::kThesis;
   MoatWalls3DConfig walls;  // isolated only
   Adjacency3DConfig adjacent;
+  // Storey geometric stiffness from the gravity load above (building3d.h, p_delta_stiffness).
+  bool p_delta = false;
+  // An elastic storey whose peak drift ratio exceeds this is flagged: the elastic model is
+  // outside its range (summary elastic_limit_exceeded).
+  double elastic_limit_drift_ratio = 0.01;
 };
 
 }  // namespace isopound

@@ -13,6 +13,7 @@
 #include "solver/elements/polygon_contact.h"
 #include "solver/elements/story_link.h"
 #include "solver/io/report3d.h"
+#include "solver/structures/building3d.h"
 
 namespace isopound {
 namespace {
@@ -40,7 +41,11 @@ constexpr std::string_view kLevelQuantities3D[] = {"displacement",
                                                    "u",
                                                    "v",
                                                    "theta"};
-constexpr std::string_view kStoryQuantities3D[] = {"drift", "drift_x", "drift_y", "drift_ratio"};
+constexpr std::string_view kStoryQuantities3D[] = {
+    "drift",     "drift_x", "drift_y",           "drift_ratio",
+    "ductility", "yielded", "hysteretic_energy", "residual_drift_ratio"};
+// Of the yielding columns' elements (column_element.h): max of ductility, sum of the others.
+constexpr std::string_view kColumnOutputs[] = {"ductility", "yielded", "hysteretic_energy"};
 constexpr std::string_view kEnergyTerms[] = {"input",          "kinetic",           "elastic",
                                              "viscous",        "hysteretic",        "error",
                                              "relative_error", "max_relative_error"};
@@ -184,14 +189,47 @@ void resolve_level3d(const OutputSelector& s, const Model& model, const Structur
 void resolve_story3d(const OutputSelector& s, const Model& model, const StructureInfo& b,
                      ResolvedOutput& r) {
   const std::string& q = s.quantity;
-  if (q == "shear")
-    fail_selector(s, "storey shear of 3D buildings is not recorded (peaks of a 3D storey: " +
-                         joined(kStoryQuantities3D) + ")");
+  const int count = static_cast<int>(b.level_dofs.size()) - (b.has_base ? 1 : 0);
+  if (q == "shear") {  // the storey shear probes' resultant
+    r.probe_component = 2;
+    for (const int k : selected_stories(s, count)) {
+      const std::string label = b.name + "/" + kStoreyShearPart + "/story " + std::to_string(k);
+      for (std::size_t p = 0; p < model.probes.size(); ++p)
+        if (model.probes[p].label == label) r.indices.push_back(static_cast<int>(p));
+    }
+    if (r.indices.empty())
+      fail_selector(s,
+                    "storey shear of a 3D building is recorded when its columns yield or "
+                    "with p_delta: true");
+    return;
+  }
+  if (index_in(kColumnOutputs, q) >= 0) {  // the storeys' yielding column elements
+    r.kind = OutputSelector::Kind::kElement;
+    r.sum = q != "ductility";
+    for (const int k : selected_stories(s, count)) {
+      const std::string prefix = b.name + "/story " + std::to_string(k) + "/column ";
+      for (std::size_t e = 0; e < model.elements.size(); ++e) {
+        const Element& element = *model.elements[e];
+        if (!element.label().starts_with(prefix)) continue;
+        const std::string label = element.label().substr(prefix.size());
+        if (!s.point.empty() && fnmatch(s.point.c_str(), label.c_str(), 0) != 0) continue;
+        for (int o = 0; o < element.output_count(); ++o)
+          if (element.output_name(o) == q) {
+            r.indices.push_back(static_cast<int>(e));
+            r.element_outputs.push_back(o);
+          }
+      }
+    }
+    if (r.indices.empty())
+      fail_selector(s, "no yielding column (columns: {hysteresis: ...}) in the selected storeys");
+    return;
+  }
   if (index_in(kStoryQuantities3D, q) < 0)
     fail_selector(
         s, "'" + q + "' is a peak of 2D storeys; a 3D storey has " + joined(kStoryQuantities3D));
   r.probe_component = q == "drift_x" ? 0 : q == "drift_y" ? 1 : q == "drift_ratio" ? 3 : 2;
-  const int count = static_cast<int>(b.level_dofs.size()) - (b.has_base ? 1 : 0);
+  r.at_end = q == "residual_drift_ratio";
+  r.end_ratio = r.at_end;
   for (const int k : selected_stories(s, count)) {
     const std::string prefix = b.name + "/story " + std::to_string(k) + "/";
     std::vector<std::pair<std::string, int>> columns;  // label, probe
@@ -216,6 +254,7 @@ void resolve_story3d(const OutputSelector& s, const Model& model, const Structur
       if (!take) continue;
       found = true;
       r.indices.push_back(p);
+      if (r.at_end) r.end_probes.push_back(model.probes[p]);
     }
     if (!found) {
       std::string names;
@@ -279,7 +318,9 @@ OutputSelector parse_output_selector(std::string_view text) {
           numbered(s.point, "corner") < 0)
         fail("plan point '" + s.point + "': expected cm, corners, corner<K> or points");
     }
-  } else if (is_story_place(s.where)) {
+  } else if (is_story_place(s.where) || s.where == "columns") {
+    // columns.<quantity>: every storey's columns (stories.<quantity>).
+    if (s.where == "columns") s.where = "stories";
     s.kind = OutputSelector::Kind::kStory;
     if (index_in(kStoryQuantities, s.quantity) < 0 && index_in(kStoryQuantities3D, s.quantity) < 0)
       fail("peaks of a story are " + joined(kStoryQuantities) + "; of a 3D storey " +
@@ -479,7 +520,8 @@ double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
           return x;
         };
         for (const PlanProbe& p : r.end_probes)
-          value = std::max(value, std::hypot(sum(p.x_terms), sum(p.y_terms)));
+          value = std::max(
+              value, std::hypot(sum(p.x_terms), sum(p.y_terms)) / (r.end_ratio ? p.length : 1.0));
         return value;
       }
       if (r.probe_component >= 0) {

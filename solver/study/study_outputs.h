@@ -18,6 +18,10 @@
 //   <story>[.corners | .<column pattern>]  .  drift | drift_x | drift_y | drift_ratio (each
 //       column's drift, resultant / x / y, ratio = resultant / storey height); without a column
 //       set: the envelope over every column; corners: the grid's corner columns (A1, D1, A4, D4)
+//       | residual_drift_ratio (the largest column's at the end) | shear (storey shear
+//       resultant, N; recorded with yielding columns or p_delta) | ductility (max over the
+//       yielding columns) | yielded (number of yielded columns) | hysteretic_energy (J, summed)
+//   columns  .  the same over every storey (columns.yielded: yielded columns of the building)
 // Everywhere:
 //   energy  .  input | kinetic | elastic | viscous | hysteretic | error | relative_error |
 //       max_relative_error
@@ -71,6 +75,7 @@ struct ResolvedOutput {
   // from the probes' terms (kept here) and the final displacement.
   int probe_component = -1;
   bool at_end = false;
+  bool end_ratio = false;  // at_end: the resultant over the probe's length (a drift ratio)
   // first_impact_time: `element_outputs` are the in_contact outputs; the earliest time any of
   // them became 1 (NaN when none did).
   bool first_time = false;

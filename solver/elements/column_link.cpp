@@ -1,0 +1,174 @@
+// Yielding column between two diaphragms: kinematics d_W = T(p) (q_upper - q_lower), section
+// axes d_L = R^T d_W, per-axis normalisation x = d_L / d_y, shear V_L = V_y o F(x).
+#include "solver/elements/column_link.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace isopound {
+
+namespace {
+constexpr const char* kNames[] = {"shear",   "drift",   "ductility",        "shear_x",
+                                  "shear_y", "drift_x", "drift_y",          "z_1",
+                                  "z_2",     "yielded", "hysteretic_energy"};
+constexpr const char* kUnits[] = {"N", "m", "-", "N", "N", "m", "m", "-", "-", "-", "J"};
+constexpr int kOutputs = 11;
+}  // namespace
+
+ColumnLink::ColumnLink(std::string label, DiaphragmDofs upper, DiaphragmDofs lower,
+                       const ColumnLinkGeometry& geometry,
+                       std::unique_ptr<BiaxialMaterial> unit_law, double alpha)
+    : label_(std::move(label)),
+      dof_{upper.ux, upper.uy, upper.theta, lower.ux, lower.uy, lower.theta},
+      sign_{1.0, 1.0, 1.0, -1.0, -1.0, -1.0},
+      g_(geometry),
+      law_(std::move(unit_law)),
+      alpha_(alpha) {
+  if (!law_) throw std::invalid_argument("column '" + label_ + "': no law");
+  if (upper.ux < 0 || upper.uy < 0 || upper.theta < 0)
+    throw std::invalid_argument("column '" + label_ + "': the upper diaphragm needs u, v, theta");
+  if (!(g_.yield_drift.minCoeff() > 0) || !(g_.yield_shear.minCoeff() > 0))
+    throw std::invalid_argument("column '" + label_ + "': yield drift and shear must be > 0");
+  const double c = std::cos(g_.orientation), s = std::sin(g_.orientation);
+  R_ << c, -s, s, c;
+}
+
+Eigen::Vector2d ColumnLink::deformation_of(const Eigen::VectorXd& u) const {
+  Eigen::Vector2d d = Eigen::Vector2d::Zero();
+  for (int side = 0; side < 2; ++side) {
+    const int* dof = dof_ + 3 * side;
+    const double sign = sign_[3 * side];
+    if (dof[0] >= 0) d[0] += sign * u[dof[0]];
+    if (dof[1] >= 0) d[1] += sign * u[dof[1]];
+    if (dof[2] >= 0) {
+      const double theta = sign * u[dof[2]];
+      d[0] -= g_.p_O.y() * theta;
+      d[1] += g_.p_O.x() * theta;
+    }
+  }
+  return d;
+}
+
+void ColumnLink::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd&) {
+  // Both laws are rate independent: no rate.
+  const Eigen::Vector2d d_L = R_.transpose() * deformation_of(u);
+  law_->set_trial(d_L.cwiseQuotient(g_.yield_drift), Eigen::Vector2d::Zero());
+}
+
+Eigen::Vector2d ColumnLink::shear_W() const {
+  return R_ * g_.yield_shear.cwiseProduct(law_->force());
+}
+
+Eigen::Matrix2d ColumnLink::tangent_W() const {
+  const Eigen::Matrix2d k_L =
+      g_.yield_shear.asDiagonal() * law_->tangent() * g_.yield_drift.cwiseInverse().asDiagonal();
+  return R_ * k_L * R_.transpose();
+}
+
+void ColumnLink::scatter(const Eigen::Vector2d& F, Eigen::VectorXd& f) const {
+  const double m = g_.p_O.x() * F[1] - g_.p_O.y() * F[0];
+  const double generalised[3] = {F[0], F[1], m};
+  for (int i = 0; i < 6; ++i)
+    if (dof_[i] >= 0) f[dof_[i]] += sign_[i] * generalised[i % 3];
+}
+
+void ColumnLink::add_force(Eigen::VectorXd& f) const {
+  scatter(shear_W(), f);
+}
+
+void ColumnLink::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  scatter(tangent_W() * deformation_of(x), y);
+}
+
+void ColumnLink::add_tangent(Eigen::MatrixXd& K, double) const {
+  Eigen::Matrix<double, 2, 3> T;
+  T << 1.0, 0.0, -g_.p_O.y(), 0.0, 1.0, g_.p_O.x();
+  const Eigen::Matrix3d kt = T.transpose() * tangent_W() * T;
+  for (int a = 0; a < 6; ++a) {
+    if (dof_[a] < 0) continue;
+    for (int b = 0; b < 6; ++b)
+      if (dof_[b] >= 0) K(dof_[a], dof_[b]) += sign_[a] * sign_[b] * kt(a % 3, b % 3);
+  }
+}
+
+bool ColumnLink::add_dofs(std::vector<int>& dofs) const {
+  for (const int d : dof_)
+    if (d >= 0) dofs.push_back(d);
+  return true;
+}
+
+bool ColumnLink::symmetric_tangent() const {
+  // R diag(V_y) K diag(1/d_y) R^T is the law's K times a scalar, turned, when both axes have
+  // the same yield drift and shear; otherwise it is non-symmetric in general.
+  return law_->symmetric_tangent() && g_.yield_drift[0] == g_.yield_drift[1] &&
+         g_.yield_shear[0] == g_.yield_shear[1];
+}
+
+double ColumnLink::power(const Eigen::VectorXd& v) const {
+  return shear_W().dot(deformation_of(v));
+}
+
+double ColumnLink::stored_energy() const {
+  const Eigen::Vector2d w = g_.yield_shear.cwiseProduct(g_.yield_drift);
+  if (w[0] == w[1]) return w[0] * law_->stored_energy();
+  const Eigen::Vector2d x = law_->deformation(), z = law_->internal();
+  const double elastic = 0.5 * alpha_ * x.squaredNorm();
+  const double hysteretic = law_->stored_energy() - elastic;
+  const double z2 = z.squaredNorm();
+  double e = 0.5 * alpha_ * (w[0] * x[0] * x[0] + w[1] * x[1] * x[1]);
+  if (z2 > 0) e += hysteretic * (w[0] * z[0] * z[0] + w[1] * z[1] * z[1]) / z2;
+  return e;
+}
+
+void ColumnLink::commit() {
+  law_->commit();
+  const Eigen::Vector2d force = g_.yield_shear.cwiseProduct(law_->force());
+  const Eigen::Vector2d drift = g_.yield_drift.cwiseProduct(law_->deformation());
+  work_commit_ += 0.5 * (force_commit_ + force).dot(drift - drift_commit_);
+  force_commit_ = force;
+  drift_commit_ = drift;
+  if (law_->deformation().cwiseAbs().maxCoeff() >= 1.0) yielded_ = true;
+}
+
+void ColumnLink::revert() {
+  law_->revert();
+}
+
+int ColumnLink::output_count() const {
+  return kOutputs;
+}
+
+std::string ColumnLink::output_name(int i) const {
+  return kNames[i];
+}
+
+std::string ColumnLink::output_unit(int i) const {
+  return kUnits[i];
+}
+
+void ColumnLink::outputs(double* out) const {
+  const Eigen::Vector2d x = law_->deformation(), z = law_->internal();
+  const Eigen::Vector2d shear_L = g_.yield_shear.cwiseProduct(law_->force());
+  const Eigen::Vector2d drift_L = g_.yield_drift.cwiseProduct(x);
+  const Eigen::Vector2d shear = R_ * shear_L, drift = R_ * drift_L;
+  out[0] = shear_L.norm();
+  out[1] = drift_L.norm();
+  out[2] = x.cwiseAbs().maxCoeff();
+  out[3] = shear[0];
+  out[4] = shear[1];
+  out[5] = drift[0];
+  out[6] = drift[1];
+  out[7] = z[0];
+  out[8] = z[1];
+  out[9] = yielded_ ? 1.0 : 0.0;
+  out[10] = hysteretic_energy();
+}
+
+double ColumnLink::output(int i) const {
+  double values[kOutputs];
+  outputs(values);
+  return values[i];
+}
+
+}  // namespace isopound
