@@ -325,13 +325,13 @@ TEST(Pounding3D, BadSiteInputsNameLineAndKey) {
   };
   const Bad cases[] = {
       // Overlapping structures at rest (the neighbour's slab reaches into the building's).
-      {replace(both, "position: [20 m, 0 m]", "position: [9 m, 0 m]"), 12,
-       "structures[1].position", "overlap at rest"},
+      {replace(both, "position: [20 m, 0 m]", "position: [9 m, 0 m]"), 12, "structures[1].position",
+       "overlap at rest"},
       // A wall inside the slab: a negative gap.
       {replace(building, "gap: 20 cm", "gap: -20 cm"), 9, "structures[0].walls.gap", ""},
-      // A neighbour at a level mismatch (storeys of 3.0 m facing 3.2 m floors, 0.5 m apart): the
+      // A neighbour at a level mismatch (storeys of 3.0 m facing 3.2 m floors, 1.5 m apart): the
       // building's floor 1 is reported first (site_checks.h).
-      {replace(replace(both, "position: [20 m, 0 m]", "position: [11.5 m, 0 m]"),
+      {replace(replace(both, "position: [20 m, 0 m]", "position: [12.5 m, 0 m]"),
                "storeys: {count: 2, height: 3.2 m", "storeys: {count: 2, height: 3.0 m"),
        5, "structures[0].storeys", "floor 1 of 'building' at 3.200 m has no floor of 'n'"},
       // A non-convex slab.

@@ -10,8 +10,8 @@
 
 #include "geometry/pre/checks.h"
 #include "geometry/pre/properties.h"
-#include "solver/structures/site_plan.h"
 #include "post/figure.h"
+#include "solver/structures/site_plan.h"
 
 namespace isopound::pre {
 
