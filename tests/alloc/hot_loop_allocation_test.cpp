@@ -86,6 +86,11 @@ TEST(HotLoop, EccentricBuildingAllocatesNothing) {
   expect_no_allocation("3d-eccentric-v30.yaml");
 }
 
+TEST(HotLoop, YieldingColumnsAllocateNothing) {  // 48 coupled Bouc-Wen columns, walls
+  ISOPOUND_REQUIRE_RECORDS();
+  expect_no_allocation("3d-xy5-yielding.yaml");
+}
+
 TEST(HotLoop, TwoDWallsAllocateNothing) {
   ISOPOUND_REQUIRE_RECORDS();
   expect_no_allocation("chapter4-3storey-kelvin_voigt.yaml");
