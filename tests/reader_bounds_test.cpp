@@ -2,6 +2,7 @@
 // made `isopound check` allocate without end, every limit of InputLimits, and peak memory that
 // grows no faster than the stated multiple of the input size for each reader.
 #include <gtest/gtest.h>
+#include <malloc.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -110,7 +111,7 @@ TEST(ReaderBounds, LongLinesAndFilesAreRefusedNamingTheLine) {
     read_input_file(big.string(), "a YAML model file");
     ADD_FAILURE() << "no error for a file over the limit";
   } catch (const InputError& error) {
-    EXPECT_NE(error.detail().find("more than 16 MiB"), std::string::npos) << error.what();
+    EXPECT_NE(error.detail().find("more than 4 MiB"), std::string::npos) << error.what();
   }
   fs::remove(big);
   // A device that never ends is read no further than the limit.
@@ -160,6 +161,8 @@ Peak peak_of(const std::function<void()>& reader) {
     };
     long long added = -1;
     std::string error;
+    // Free heap pages inherited from the parent would take the read's allocations unseen.
+    malloc_trim(0);
     if (std::ofstream("/proc/self/clear_refs") << "5") {
       const long long before = status_kb("VmRSS:");
       try {
@@ -192,7 +195,7 @@ std::string model_of_size(std::size_t bytes) {
   std::string text =
       "building:\n  base: {mass: 340 t}\n"
       "  floors: {count: 3, mass: 340 t, stiffness: 600 MN/m, height: 3.2 m}\n"
-      "  isolator: {model: linear, Tb: 2.5 s, QW: 5 %}\nneighbours:\n";
+      "  isolator: {model: linear, Tb: 2.5 s}\nneighbours:\n";
   for (int k = 0; text.size() < bytes; ++k)
     text +=
         "  - {side: right, gap: 10 cm, impact: {law: linear, k: 2500 kN/mm},\n"
@@ -263,7 +266,7 @@ TEST(ReaderBounds, PeakMemoryGrowsLinearlyWithinTheStatedMultipleOfTheInput) {
   };
   constexpr long long kBaseBytes = 8ll << 20;  // allocator arenas, first pages of the libraries
   for (const Reader& reader : readers) {
-    for (const std::size_t size : {10'000u, 100'000u, 1'000'000u, 4'000'000u}) {
+    for (const std::size_t size : {10'000u, 100'000u, 1'000'000u, 3'000'000u}) {
       const std::string text = reader.input(size);
       const fs::path path = write_file("input.txt", text);
       const Peak peak = peak_of([&] { reader.read(path.string()); });

@@ -12,7 +12,7 @@ namespace isopound {
 // depth bounds every recursion, and aliases may add at most kMaxAliasExpansion times the nodes
 // written (so a reader that visits every node it reaches stays linear; an alias loop is refused).
 struct InputLimits {
-  static constexpr std::size_t kMaxFileBytes = 16u << 20;  // 16 MiB; the largest config is ~4 kB
+  static constexpr std::size_t kMaxFileBytes = 4u << 20;   // 4 MiB; the largest config is ~6 kB
   static constexpr std::size_t kMaxLineBytes = 64u << 10;  // 64 KiB in one line
   static constexpr int kMaxDepth = 64;                     // maps and lists inside each other
   static constexpr std::size_t kMaxNodes = 1'000'000;      // scalars, maps, lists, nulls
