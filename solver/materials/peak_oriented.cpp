@@ -119,6 +119,15 @@ double PeakOrientedMaterial::load(const State& s, int side, double x_c, double f
     if (has_reload) r = min_of(r, piece(reload, at));
     return r;
   };
+  // Fast path: the elastic line still below the bound at x. The bound minus the elastic line
+  // has slope K_s - K_u, -K_c - K_u, -K_u or K_rel - K_u on its pieces, all <= 0 when the
+  // reloading slope K_rel <= K_u: then it stayed below on all of [x_c, x] (one linear piece).
+  const Piece end = f(x);
+  if (end.slope == ku && end.value == elastic.at(x) && (!has_reload || reload.slope <= ku)) {
+    integral = 0.5 * (f_c + end.value) * (x - x_c);
+    slope = ku;
+    return end.value;
+  }
   // Breakpoints: every pairwise intersection of the lines inside (x_c, x).
   const std::array<Line, 6> lines{elastic, reload, plateau, hardening, capping, residual};
   std::array<double, 17> points;
@@ -143,7 +152,6 @@ double PeakOrientedMaterial::load(const State& s, int side, double x_c, double f
     integral += 0.5 * (f_prev + f_here) * (points[i] - points[i - 1]);
     f_prev = f_here;
   }
-  const Piece end = f(x);
   slope = end.slope;
   return end.value;
 }
