@@ -58,7 +58,7 @@ constexpr std::array<PlausibleRange, 35> kRanges{{
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 35> kUnchecked{{
+constexpr std::array<UncheckedKey, 36> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
@@ -88,6 +88,7 @@ constexpr std::array<UncheckedKey, 35> kUnchecked{{
     {"position", "plan coordinates (m): the site's own geometry, checked by the site checks"},
     {"rectangle", "plan size (m): the site's own geometry, checked by the site checks"},
     {"polygon", "plan vertices (m): the site's own geometry, checked by the site checks"},
+    {"at", "a bearing's plan position (m): checked against the slab by the site checks"},
     {"eccentricity", "centre-of-mass offset (m): checked against the slab by the site checks"},
     {"restitution", "coefficient of restitution, bounded by the reader"},
     {"angle", "an angle: its unit is required (a bare number is an error)"},
