@@ -22,7 +22,7 @@ ModelConfig config_file(const char* file) {
 
 // The stiffness at rest, element tangents included: the matrix the rule takes its modes from,
 // assembled here independently of max_step_period.
-Eigen::MatrixXd stiffness_at_rest(Model& model) {
+Eigen::MatrixXd stiffness_at_rest_here(Model& model) {
   Eigen::MatrixXd k = model.stiffness;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
   for (auto& e : model.elements) {
@@ -66,7 +66,7 @@ TEST(MaxStepRule, EccentricBuildingStepFollowsTheFirstParticipatingMode) {
   EXPECT_EQ(c.analysis.max_step_rule, Rule::kParticipating);
   EXPECT_DOUBLE_EQ(c.analysis.participation_threshold, 1e-5);
   Model model = build_model(c);
-  const Modes modes = compute_modes(stiffness_at_rest(model), model.mass, model.influence);
+  const Modes modes = compute_modes(stiffness_at_rest_here(model), model.mass, model.influence);
   const Eigen::VectorXd ratio = ratio_xy(model, modes);
   const int n = static_cast<int>(modes.period.size());
   // Periods descend with the index: the shortest mode is the last. It is torsional (its
@@ -162,7 +162,7 @@ TEST(MaxStepRule, TwoDimensionalBuildingKeepsEveryModeAndItsStep) {
   const ModelConfig c = config_file("thesis-3storey-bw.yaml");
   EXPECT_EQ(c.analysis.max_step_rule, Rule::kAllModes);  // 2D default: the rule of before
   Model model = build_model(c);
-  const Modes modes = compute_modes(stiffness_at_rest(model), model.mass, model.influence);
+  const Modes modes = compute_modes(stiffness_at_rest_here(model), model.mass, model.influence);
   const double all = max_step_period(model, Rule::kAllModes, 0.0);
   EXPECT_DOUBLE_EQ(all, modes.period.minCoeff());
   EXPECT_DOUBLE_EQ(shortest_period(model), all);

@@ -121,15 +121,20 @@ double shortest_period(Model& model) {
   return max_step_period(model, AnalysisConfig::MaxStepRule::kAllModes, 0.0);
 }
 
-double max_step_period(Model& model, AnalysisConfig::MaxStepRule rule, double threshold) {
-  const int n = model.size();
+Eigen::MatrixXd stiffness_at_rest(Model& model) {
   Eigen::MatrixXd k = model.stiffness;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
   for (auto& e : model.elements) {
     e->set_trial(zero, zero);
     e->add_tangent(k, 0.0);
     e->revert();
   }
+  return k;
+}
+
+double max_step_period(Model& model, AnalysisConfig::MaxStepRule rule, double threshold) {
+  const int n = model.size();
+  const Eigen::MatrixXd k = stiffness_at_rest(model);
   Modes modes;
   try {
     modes = compute_modes(k, model.mass, model.influence);

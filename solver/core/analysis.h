@@ -143,6 +143,10 @@ struct RunOptions {
 // Stories of every structure in the model, in order.
 std::vector<Story> stories_of(const Model& model);
 
+// The model's stiffness linearised at rest: K plus every element's tangent at u = v = 0 (each
+// element's trial state is reverted after).
+Eigen::MatrixXd stiffness_at_rest(Model& model);
+
 // Shortest undamped period of the model linearised at rest (element tangents at zero), s;
 // 0 if the model is a mechanism at rest.
 double shortest_period(Model& model);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/core/analysis.h"
 #include "solver/core/modes.h"
 
 namespace isopound {
@@ -27,15 +28,7 @@ void linearise(Model& model, const Eigen::VectorXd& u, double lambda, const Eige
 }  // namespace
 
 Eigen::VectorXd first_mode_pattern(Model& model, const Eigen::VectorXd& control) {
-  const int n = model.size();
-  Eigen::MatrixXd k = model.stiffness;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
-  for (auto& e : model.elements) {
-    e->set_trial(zero, zero);
-    e->add_tangent(k, 0.0);
-    e->revert();
-  }
-  const Modes modes = compute_modes(k, model.mass, model.influence);
+  const Modes modes = compute_modes(stiffness_at_rest(model), model.mass, model.influence);
   Eigen::VectorXd phi = modes.shape.col(0);
   if (control.dot(phi) < 0) phi = -phi;
   return model.mass * phi;
