@@ -371,7 +371,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"n_zero.yaml", 4, "building.isolator.n", "must be > 0"},
         BadModel{"empty_floors.yaml", 3, "building.floors", "no floors"},
         BadModel{"count_zero.yaml", 4, "building.floors.count",
-                 "must be between 1 and 1000 (got 0)"},
+                 "must be between 1 and 200 (got 0)"},
         BadModel{"floors_scalar.yaml", 3, "building.floors", "expected a list of floors"},
         BadModel{"zero_height.yaml", 6, "building.floors[2].height", "must be > 0"},
         BadModel{"duplicate_key.yaml", 7, "building.floors[0].mass",

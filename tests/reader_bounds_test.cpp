@@ -202,7 +202,7 @@ std::string model_of_size(std::size_t bytes) {
         "     building: {name: n" +
         std::to_string(k) +
         ", isolated: false, floors: {count: 2, mass: 300 t, stiffness: 500 MN/m, "
-        "height: 3 m}}}\n";
+        "height: 3.2 m}}}\n";
   return text;
 }
 std::string pairs_of_size(std::size_t bytes) {

@@ -16,9 +16,10 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr Dimension kLinearMass{-1, 1, 0};  // kg/m
+constexpr Dimension kMoment{2, 1, -2};      // N m
 
 // clang-format off
-constexpr std::array<PlausibleRange, 35> kRanges{{
+constexpr std::array<PlausibleRange, 43> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
@@ -45,6 +46,14 @@ constexpr std::array<PlausibleRange, 35> kRanges{{
   {"mu_static",    dim::kNone, 0, 2, 0, 1, "", 1, "a contact friction coefficient"},
   {"mu_kinetic",   dim::kNone, 0, 2, 0, 1, "", 1, "a contact friction coefficient"},
   {"QW",           dim::kNone, 0, 1, 0.005, 0.3, "%", 1e-2, "a bearing strength ratio Q/W"},
+  {"yield_drift_ratio", dim::kNone, 0, 0.2, 0.001, 0.03, "%", 1e-2, "a storey or column yield drift ratio"},
+  {"capping_drift_ratio", dim::kNone, 0, 0.5, 0.005, 0.1, "%", 1e-2, "a storey capping drift ratio"},
+  {"post_yield_ratio", dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a post-yield stiffness ratio"},
+  {"post_capping_ratio", dim::kNone, 0, 1, 0.005, 0.5, "%", 1e-2, "a post-capping slope ratio"},
+  {"residual_strength_ratio", dim::kNone, 0, 1, 0, 0.6, "%", 1e-2, "a residual strength ratio"},
+  {"yield_shear",  dim::kForce, 0, 1e11, 1e3, 1e9, "kN", 1e3, "a storey yield shear"},
+  {"yield_moment", kMoment, 0, 1e10, 1e3, 1e8, "kN m", 1e3, "a column yield moment"},
+  {"yield_shear_coefficient", dim::kNone, 0, 5, 0.02, 1, "%", 1e-2, "a storey yield shear / weight above"},
   {"ratio",        dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
   {"ratios",       dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
   {"isolation",    dim::kNone, 0, 1, 0, 0.5, "%", 1e-2, "an isolation damping ratio"},
@@ -58,7 +67,7 @@ constexpr std::array<PlausibleRange, 35> kRanges{{
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 36> kUnchecked{{
+constexpr std::array<UncheckedKey, 37> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
@@ -69,6 +78,7 @@ constexpr std::array<UncheckedKey, 36> kUnchecked{{
     {"beta", "Bouc-Wen shape parameter (dimensionless)"},
     {"gamma", "Bouc-Wen or pulse shape parameter (dimensionless)"},
     {"rate_parameter", "friction rate parameter, s/m: no common other unit"},
+    {"deterioration", "cyclic deterioration lambda = E_t / (F_y d_y): a pure number, no other unit"},
     {"e", "coefficient of restitution, bounded (0, 1] by the reader"},
     {"damping", "a damping ratio of a wall, bounded [0, 1) by the reader"},
     {"polar_moment", "kg m^2: depends on the plan; computed when absent"},
