@@ -8,8 +8,7 @@
 namespace isopound {
 
 namespace {
-constexpr int kHystereticEnergyOutput = 3;  // StoryLink outputs
-constexpr int kYieldedOutput = 4;
+constexpr int kYieldedOutput = 4;  // StoryLink outputs
 
 double residual_drift(const AnalysisResult& r, std::size_t story_index) {
   const Story& st = r.stories[story_index];
