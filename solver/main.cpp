@@ -9,6 +9,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <thread>
@@ -21,6 +22,7 @@
 #include "solver/io/overlap_report.h"
 #include "solver/io/plausibility.h"
 #include "solver/io/polygon_input.h"
+#include "solver/io/pushover_report.h"
 #include "solver/io/report.h"
 #include "solver/io/report3d.h"
 #include "solver/io/report_modes2d.h"
@@ -28,8 +30,9 @@
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 #include "solver/structures/job.h"
-#include "solver/study/cli_contract.h"
 #include "solver/structures/pushover2d.h"
+#include "solver/structures/pushover3d.h"
+#include "solver/study/cli_contract.h"
 #include "solver/study/ensemble.h"   // run --ensemble N
 #include "solver/study/study_cli.h"  // study commands (sweep, export)
 
@@ -277,16 +280,20 @@ int main(int argc, char** argv) {
 
   CLI::App* pushover = app.add_subcommand(
       "pushover",
-      "Static pushover of a 2D building to a target roof drift: pushover.csv (capacity curve)");
+      "Static pushover of a building (2D in x, 3D along --angle) to a target roof drift: "
+      "pushover.csv (capacity curve) and pushover.json");
   pushover->add_option("model", model_path, "Model file (YAML)")->required();
   pushover->add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
-  std::string target_drift = "2 %", pattern = "first_mode";
+  std::string target_drift = "2 %", pattern = "first_mode", push_angle;
   int pushover_steps = 200;
   pushover->add_option("--target-drift", target_drift, "Roof drift ratio to reach, e.g. '2 %'")
       ->capture_default_str();
   pushover->add_option("--pattern", pattern, "Lateral load pattern")
       ->check(CLI::IsMember({"first_mode", "uniform"}))
       ->capture_default_str();
+  pushover->add_option("--angle", push_angle,
+                       "3D: direction of the push in plan from x, counter-clockwise, with its "
+                       "unit, e.g. '30 deg' (default 0 deg)");
   pushover->add_option("--steps", pushover_steps, "Displacement steps")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
@@ -338,7 +345,7 @@ int main(int argc, char** argv) {
       return run_and_write(config, out_dir, quiet, compare_unobstructed,
                            ensemble.members > 0 ? &ensemble : nullptr);
     if (*pushover) {
-      Pushover2DOptions options;
+      BuildingPushoverOptions options;
       try {
         options.target_drift_ratio = parse_quantity_as(target_drift, dim::kNone);
       } catch (const UnitError& e) {
@@ -347,17 +354,37 @@ int main(int argc, char** argv) {
       if (!(options.target_drift_ratio > 0 && options.target_drift_ratio < 1))
         throw std::invalid_argument("--target-drift must be in (0, 100 %), got '" + target_drift +
                                     "'");
-      options.pattern = pattern == "uniform" ? Pushover2DOptions::Pattern::kUniform
-                                             : Pushover2DOptions::Pattern::kFirstMode;
+      options.pattern = pattern == "uniform" ? BuildingPushoverOptions::Pattern::kUniform
+                                             : BuildingPushoverOptions::Pattern::kFirstMode;
       options.steps = pushover_steps;
-      const Pushover2DResult result = run_pushover2d(config, options);
+      const bool plan = !config.structures3d.empty();
+      if (!push_angle.empty()) {
+        if (!plan)
+          throw std::invalid_argument("--angle is for 3D models: a 2D building is pushed in x");
+        try {
+          options.angle = parse_angle(push_angle);
+        } catch (const UnitError& e) {
+          throw std::invalid_argument(std::string("--angle: ") + e.what());
+        }
+      }
+      const BuildingPushoverResult result =
+          plan ? run_pushover3d(config, options) : run_pushover2d(config, options);
       create_output_directory(out_dir);
       const std::string csv = (fs::path(out_dir) / "pushover.csv").string();
       write_pushover_csv(csv, result);
+      write_pushover_json((fs::path(out_dir) / "pushover.json").string(), model_path, options,
+                          result);
       if (!quiet) {
         const auto& last = result.rows.back();
-        std::printf("%s: roof %.2f cm (drift %.3f %%), base shear %.1f kN; wrote %s\n",
-                    model_path.c_str(), 100 * last[0], 100 * last[1], last[2] / 1e3, csv.c_str());
+        char direction[64] = "";
+        if (plan)
+          std::snprintf(direction, sizeof direction, " pushed at %g deg",
+                        options.angle * 180 / std::numbers::pi);
+        std::printf(
+            "%s: building '%s'%s: roof %.2f cm (drift %.3f %%), base shear %.1f kN; "
+            "wrote %s\n",
+            model_path.c_str(), result.building.c_str(), direction, 100 * last[0], 100 * last[1],
+            last[2] / 1e3, csv.c_str());
         if (result.first_yield_row >= 0)
           std::printf("  first yield at roof %.2f cm, base shear %.1f kN\n",
                       100 * result.rows[result.first_yield_row][0],

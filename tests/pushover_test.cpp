@@ -31,10 +31,10 @@ TEST(Pushover, OneStoreyBilinearIsKUpToYieldThenAlphaK) {
   h.model = StoryHysteresisConfig::Model::kBilinear;
   h.yield_value = 0.005;  // d_y = 1.6 cm, V_y = 9.6 MN
   h.post_yield_ratio = 0.05;
-  Pushover2DOptions o;
+  BuildingPushoverOptions o;
   o.target_drift_ratio = 0.02;  // 6.4 cm = 4 d_y
   o.steps = 37;                 // steps that do not land on the yield point
-  const Pushover2DResult r = run_pushover2d(fixed_base(1, h), o);
+  const BuildingPushoverResult r = run_pushover2d(fixed_base(1, h), o);
   ASSERT_EQ(r.rows.size(), 38u);
   const double k = 600e6, dy = 0.016, vy = k * dy;
   for (const auto& row : r.rows) {
@@ -76,10 +76,10 @@ TEST(Pushover, PeakOrientedStoreyHasACappingPoint) {
   h.capping_drift_ratio = 0.02;
   h.post_capping_ratio = 0.1;
   h.residual_strength_ratio = 0.2;
-  Pushover2DOptions o;
+  BuildingPushoverOptions o;
   o.target_drift_ratio = 0.04;
   o.steps = 100;
-  const Pushover2DResult r = run_pushover2d(fixed_base(1, h), o);
+  const BuildingPushoverResult r = run_pushover2d(fixed_base(1, h), o);
   ASSERT_GE(r.capping_row, 0);
   EXPECT_NEAR(r.rows[r.capping_row][1], 0.02, 1e-12);
   const double k = 600e6, dy = 0.016, dc = 0.064;

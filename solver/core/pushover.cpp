@@ -34,6 +34,20 @@ Eigen::VectorXd first_mode_pattern(Model& model, const Eigen::VectorXd& control)
   return model.mass * phi;
 }
 
+Eigen::VectorXd dominant_mode_pattern(Model& model, const Eigen::VectorXd& iota,
+                                      const Eigen::VectorXd& control) {
+  const Modes modes = compute_modes(stiffness_at_rest(model), model.mass, iota);
+  Eigen::Index dominant = 0;
+  modes.effective_mass_ratio.maxCoeff(&dominant);
+  const double omega = modes.omega[dominant];
+  Eigen::VectorXd shape = Eigen::VectorXd::Zero(model.size());
+  for (Eigen::Index j = 0; j < modes.omega.size(); ++j)
+    if (std::abs(modes.omega[j] - omega) <= 1e-6 * omega)
+      shape += modes.shape.col(j) * modes.participation[j];
+  if (control.dot(shape) < 0) shape = -shape;
+  return model.mass * shape;
+}
+
 std::vector<PushoverStep> run_pushover(Model& model, const PushoverOptions& o) {
   const int n = model.size();
   if (o.pattern.size() != n || o.control.size() != n || o.steps < 1)

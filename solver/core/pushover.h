@@ -36,4 +36,13 @@ std::vector<PushoverStep> run_pushover(Model& model, const PushoverOptions& opti
 // with phi_1 scaled so that c^T phi_1 > 0; the uniform pattern is M iota.
 Eigen::VectorXd first_mode_pattern(Model& model, const Eigen::VectorXd& control);
 
+// For a push along a direction in plan (3D): M Phi_c Phi_c^T M iota, iota the DOFs' rigid-body
+// displacement for a unit ground displacement along it, Phi_c the mode with the largest effective
+// mass along iota (at rest) together with every mode of the same frequency (1e-6 relative): a
+// doubly symmetric building's pair of equal x and y modes then gives the load along the
+// direction itself, not along whatever pair the eigensolver returned. Signed so that the
+// control coordinate of Phi_c Phi_c^T M iota is positive.
+Eigen::VectorXd dominant_mode_pattern(Model& model, const Eigen::VectorXd& iota,
+                                      const Eigen::VectorXd& control);
+
 }  // namespace isopound

@@ -9,8 +9,8 @@
 
 #include "solver/core/modes.h"
 #include "solver/structures/bearing_element.h"
-#include "solver/structures/rayleigh_modes.h"
 #include "solver/structures/column_element.h"
+#include "solver/structures/rayleigh_modes.h"
 
 namespace isopound {
 
@@ -27,16 +27,6 @@ Eigen::Matrix3d point_transform(Vec2 p) {
 Vec2 rotate(double angle, Vec2 v) {
   const double c = std::cos(angle), s = std::sin(angle);
   return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
-
-std::vector<Column3DConfig> columns_in_plan(const Building3DConfig& b,
-                                            const std::vector<Column3DConfig>& columns) {
-  std::vector<Column3DConfig> w = columns;
-  for (Column3DConfig& c : w) {
-    c.position = to_plan(b, c.position);
-    c.orientation += b.rotation;
-  }
-  return w;
 }
 
 // One building's levels (base slab if isolated, then floors), three DOFs each, in plan frame.
@@ -171,6 +161,21 @@ Diaphragm3DConfig diaphragm_in_plan(const Building3DConfig& b, const Diaphragm3D
   for (Vec2& p : w.plan) p = to_plan(b, p);
   w.eccentricity = rotate(b.rotation, d.eccentricity);
   return w;
+}
+
+std::vector<Column3DConfig> columns_in_plan(const Building3DConfig& b,
+                                            const std::vector<Column3DConfig>& columns) {
+  std::vector<Column3DConfig> w = columns;
+  for (Column3DConfig& c : w) {
+    c.position = to_plan(b, c.position);
+    c.orientation += b.rotation;
+  }
+  return w;
+}
+
+Vec2 centre_of_mass(const Diaphragm3DConfig& d) {
+  const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
+  return area_properties(plan).p_WC + d.eccentricity;
 }
 
 Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, double h,
@@ -326,8 +331,7 @@ void add_building3d(Model& model, const Building3DConfig& b) {
   };
   for (std::size_t l = 0; l < a.levels_W.size(); ++l) {
     const Diaphragm3DConfig& lev = a.levels_W[l];
-    const ConvexPolygon plan(std::span<const Vec2>(lev.plan.data(), lev.plan.size()));
-    const Vec2 cm = area_properties(plan).p_WC + lev.eccentricity;
+    const Vec2 cm = centre_of_mass(lev);
     const int dof = offset + 3 * static_cast<int>(l);
     const std::string level =
         b.name + "/" +

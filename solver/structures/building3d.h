@@ -15,6 +15,11 @@ namespace isopound {
 Vec2 to_plan(const Building3DConfig& b, Vec2 p_B);
 // A diaphragm (plan, eccentricity) of the building placed in the model's plan frame.
 Diaphragm3DConfig diaphragm_in_plan(const Building3DConfig& b, const Diaphragm3DConfig& d_B);
+// Columns of the building placed in the plan frame (position and orientation).
+std::vector<Column3DConfig> columns_in_plan(const Building3DConfig& b,
+                                            const std::vector<Column3DConfig>& columns_B);
+// Centre of mass (centroid + eccentricity) of a diaphragm, in the frame of its plan.
+Vec2 centre_of_mass(const Diaphragm3DConfig& diaphragm);
 
 // Storey stiffness (3 x 3, DOFs at the plan origin) of the columns of one storey of height h;
 // positions and orientations in the plan frame.

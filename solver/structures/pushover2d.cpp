@@ -2,7 +2,6 @@
 #include "solver/structures/pushover2d.h"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "solver/core/analysis.h"
@@ -12,11 +11,13 @@
 
 namespace isopound {
 
-Pushover2DResult run_pushover2d(const ModelConfig& config, const Pushover2DOptions& options) {
+BuildingPushoverResult run_pushover2d(const ModelConfig& config,
+                                      const BuildingPushoverOptions& options) {
   if (!config.structures3d.empty())
+    throw std::invalid_argument("pushover: run_pushover2d is for 2D models (3D: pushover3d.h)");
+  if (options.angle != 0.0)
     throw std::invalid_argument(
-        "pushover: 3D models are not supported yet (the hook: run_pushover with an angle's "
-        "control vector, solver/structures/pushover2d.h)");
+        "pushover: --angle is for 3D models (a 2D building is pushed in x)");
   BuildingConfig b = config.building;
   b.walls.clear();  // the building alone
   Model model = make_model(b);
@@ -29,14 +30,17 @@ Pushover2DResult run_pushover2d(const ModelConfig& config, const Pushover2DOptio
   PushoverOptions o;
   o.control = Eigen::VectorXd::Zero(n);
   o.control[roof] = 1.0;
-  o.pattern = options.pattern == Pushover2DOptions::Pattern::kUniform
+  o.pattern = options.pattern == BuildingPushoverOptions::Pattern::kUniform
                   ? Eigen::VectorXd(model.mass * model.influence)
                   : first_mode_pattern(model, o.control);
   o.target = options.target_drift_ratio * height;
   o.steps = options.steps;
   const std::vector<PushoverStep> curve = run_pushover(model, o);
 
-  Pushover2DResult r;
+  BuildingPushoverResult r;
+  r.building = b.name;
+  r.dimension = 2;
+  r.height = height;
   r.columns = {"roof_displacement_m", "roof_drift_ratio", "base_shear_N"};
   const std::vector<Story> stories = stories_of(model);
   for (const Story& st : stories) {
@@ -50,8 +54,6 @@ Pushover2DResult run_pushover2d(const ModelConfig& config, const Pushover2DOptio
   for (std::size_t k = 0; k < stories.size(); ++k)
     if (b.floors[k].hysteresis.model != StoryHysteresisConfig::Model::kElastic)
       yield_drift[k] = story_yield_drift(b, static_cast<int>(k));
-  double peak_shear = 0.0;
-  int peak_row = 0;
   for (const PushoverStep& s : curve) {
     std::vector<double> row = {s.control, s.control / height, s.lambda * o.pattern.sum()};
     for (std::size_t k = 0; k < stories.size(); ++k) {
@@ -65,29 +67,10 @@ Pushover2DResult run_pushover2d(const ModelConfig& config, const Pushover2DOptio
           std::abs(drift) >= yield_drift[k] * (1 - 1e-12))
         r.first_yield_row = static_cast<int>(r.rows.size());
     }
-    if (std::abs(row[2]) > peak_shear) {
-      peak_shear = std::abs(row[2]);
-      peak_row = static_cast<int>(r.rows.size());
-    }
     r.rows.push_back(std::move(row));
   }
-  if (peak_row + 1 < static_cast<int>(r.rows.size()) &&
-      std::abs(r.rows.back()[2]) < peak_shear * (1 - 1e-9))
-    r.capping_row = peak_row;
+  mark_capping_point(r);
   return r;
-}
-
-void write_pushover_csv(const std::string& path, const Pushover2DResult& r) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write " + path);
-  for (std::size_t c = 0; c < r.columns.size(); ++c)
-    std::fprintf(f, "%s%s", c ? "," : "", r.columns[c].c_str());
-  std::fputc('\n', f);
-  for (const auto& row : r.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) std::fprintf(f, "%s%.10g", c ? "," : "", row[c]);
-    std::fputc('\n', f);
-  }
-  if (std::fclose(f) != 0) throw std::runtime_error("error writing " + path);
 }
 
 }  // namespace isopound
