@@ -3,16 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <map>
 #include <numbers>
 #include <set>
 #include <sstream>
 
-#include "solver/study/study_outputs.h"
-#include "solver/study/study_spec.h"
-#include "solver/study/study_store.h"
+#include "solver/study/study_table.h"
 
 namespace isopound::post {
 namespace {
@@ -26,7 +23,7 @@ std::string join(const std::vector<std::string>& v) {
   return s.empty() ? "(none)" : s;
 }
 
-std::string cell_text(const Cell& c) {
+std::string cell_text(const StudyTableCell& c) {
   if (!c.numeric) return c.text;
   std::ostringstream o;
   o << c.number;
@@ -65,16 +62,22 @@ DisplayUnit display_unit_of(const std::string& quantity) {
   return {"SI", 1.0};
 }
 
-DisplayUnit unit_from_study(const StudyStore& store, const std::string& column) {
-  const std::string file = store.meta("study_file");
-  if (file.empty() || !std::filesystem::exists(file)) return {"SI", 1.0};
+// The display unit of an output column from its selector's quantity; SI when it is unknown.
+DisplayUnit unit_from_study(const StudyTable& table, const std::string& column) {
+  const auto it = std::find(table.outputs.begin(), table.outputs.end(), column);
+  if (it == table.outputs.end()) return {"SI", 1.0};
+  return display_unit_of(table.output_quantities[it - table.outputs.begin()]);
+}
+
+// The study's table; a missing file or one that is not a study database is the user's mistake
+// (PolarStudyError), a database that opens but cannot be read is not.
+StudyTable read_table(const std::string& db_path) {
   try {
-    const Study study = load_study_file(file);
-    for (const OutputSpec& o : study.outputs)
-      if (o.column == column) return display_unit_of(parse_output_selector(o.selector).quantity);
-  } catch (const std::exception&) {
+    return read_study_table(db_path);
+  } catch (const StudyTableError& e) {
+    if (e.reason() == StudyTableError::Reason::unreadable) throw;
+    throw PolarStudyError(e.what());
   }
-  return {"SI", 1.0};
 }
 
 }  // namespace
@@ -108,21 +111,13 @@ double unit_divisor(const std::string& unit) {
 }
 
 PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOptions& opt) {
-  if (!std::filesystem::exists(db_path))
-    throw PolarStudyError(db_path + ": study database not found");
-  std::optional<StudyStore> store;
-  try {
-    store.emplace(StudyStore::open(db_path, true));
-  } catch (const std::exception& e) {
-    throw PolarStudyError(db_path + ": not a study database: " + e.what());
-  }
-  const StoreLayout& layout = store->layout();
+  const StudyTable table = read_table(db_path);
   PolarStudyResult result;
 
   // The angle axis.
   int angle = -1;
-  for (std::size_t i = 0; i < layout.axes.size(); ++i)
-    if (opt.angle_axis.empty() ? is_angle_name(layout.axes[i]) : layout.axes[i] == opt.angle_axis)
+  for (std::size_t i = 0; i < table.axes.size(); ++i)
+    if (opt.angle_axis.empty() ? is_angle_name(table.axes[i]) : table.axes[i] == opt.angle_axis)
       angle = static_cast<int>(i);
   if (angle < 0)
     throw PolarStudyError(db_path + ": the study has no " +
@@ -130,32 +125,31 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
                                ? std::string("incidence-angle axis (an axis named angle, "
                                              "incidence or *angle)")
                                : "axis '" + opt.angle_axis + "'") +
-                          "; its axes are: " + join(layout.axes));
+                          "; its axes are: " + join(table.axes));
   // Ensemble statistics beside the quantity (a study run with `ensemble: N`). A table holding
   // only the statistics draws the ensemble mean as the quantity.
-  const EnsembleColumns ens = ensemble_columns(layout.outputs, opt.quantity);
-  const auto q = std::find(layout.outputs.begin(), layout.outputs.end(), opt.quantity);
-  if (q == layout.outputs.end() && ens.mean < 0)
+  const EnsembleColumns ens = ensemble_columns(table.outputs, opt.quantity);
+  const auto q = std::find(table.outputs.begin(), table.outputs.end(), opt.quantity);
+  if (q == table.outputs.end() && ens.mean < 0)
     throw PolarStudyError(db_path + ": quantity '" + opt.quantity +
-                          "' is not in the table; its quantities are: " + join(layout.outputs));
-  const std::size_t qi = q != layout.outputs.end()
-                             ? static_cast<std::size_t>(q - layout.outputs.begin())
+                          "' is not in the table; its quantities are: " + join(table.outputs));
+  const std::size_t qi = q != table.outputs.end()
+                             ? static_cast<std::size_t>(q - table.outputs.begin())
                              : static_cast<std::size_t>(ens.mean);
-  if (q == layout.outputs.end())
+  if (q == table.outputs.end())
     result.notes.push_back("'" + opt.quantity +
-                           "' itself is not in the table: its ensemble mean '" +
-                           layout.outputs[qi] + "' is drawn");
+                           "' itself is not in the table: its ensemble mean '" + table.outputs[qi] +
+                           "' is drawn");
   const auto axis_index = [&](const std::string& name, const char* what) {
-    const auto it = std::find(layout.axes.begin(), layout.axes.end(), name);
-    if (it == layout.axes.end())
+    const auto it = std::find(table.axes.begin(), table.axes.end(), name);
+    if (it == table.axes.end())
       throw PolarStudyError(db_path + ": " + what + " axis '" + name +
-                            "' is not in the study; its axes are: " + join(layout.axes));
-    return static_cast<int>(it - layout.axes.begin());
+                            "' is not in the study; its axes are: " + join(table.axes));
+    return static_cast<int>(it - table.axes.begin());
   };
   int per = -1;
   if (opt.per != "case") {
-    const bool has =
-        std::find(layout.axes.begin(), layout.axes.end(), opt.per) != layout.axes.end();
+    const bool has = std::find(table.axes.begin(), table.axes.end(), opt.per) != table.axes.end();
     if (has)
       per = axis_index(opt.per, "--per");
     else if (opt.per != "record")
@@ -166,7 +160,7 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
   for (const auto& [axis, label] : opt.where)
     filters.push_back({axis_index(axis, "--where"), label});
 
-  const DisplayUnit unit = opt.unit.empty() ? unit_from_study(*store, opt.quantity)
+  const DisplayUnit unit = opt.unit.empty() ? unit_from_study(table, opt.quantity)
                                             : DisplayUnit{opt.unit, unit_divisor(opt.unit)};
   // Rows that pass the filters, finished.
   bool degrees = false;
@@ -177,13 +171,13 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     double value;
     double lo, mean, hi;  // ensemble min, mean, max (NaN without them)
   };
-  const auto stat = [&](const RunRow& r, int column) {
+  const auto stat = [&](const StudyTableRow& r, int column) {
     return column >= 0 && static_cast<std::size_t>(column) < r.values.size()
                ? r.values[column] / unit.divisor
                : nan;
   };
   std::vector<Row> rows;
-  for (const RunRow& r : store->read_runs()) {
+  for (const StudyTableRow& r : table.rows) {
     if (r.status != "done" || r.values.size() <= qi || !std::isfinite(r.values[qi])) continue;
     bool keep = true;
     for (const auto& [axis, label] : filters)
@@ -257,7 +251,7 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
         break;
       }
     const bool band = ens.band();
-    const bool ens_mean = ens.mean >= 0 && q != layout.outputs.end();
+    const bool ens_mean = ens.mean >= 0 && q != table.outputs.end();
     PolarEnvelopeData& e = result.envelope;
     e.title = opt.quantity + " against incidence angle";
     e.quantity = qtitle;
@@ -327,7 +321,7 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
   } else {
     // Mean over the groups (records or cases) at each (radius, angle).
     const DisplayUnit runit = [&] {
-      std::string n = layout.axes[radial];
+      std::string n = table.axes[radial];
       return n.find("gap") != std::string::npos ? DisplayUnit{"cm", 0.01} : DisplayUnit{"SI", 1.0};
     }();
     std::vector<double> sum(angles.size() * radii.size(), 0.0);
@@ -339,14 +333,14 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
       ++n[k];
     }
     PolarContourData& c = result.contour;
-    c.title = opt.quantity + " against incidence angle and " + layout.axes[radial];
+    c.title = opt.quantity + " against incidence angle and " + table.axes[radial];
     if (groups.size() > 1) c.title += " (mean of " + std::to_string(groups.size()) + ")";
     if (ens.mean >= 0) c.title += ", ensemble mean";
-    c.radius_title = layout.axes[radial] + " [" + runit.unit + "]";
+    c.radius_title = table.axes[radial] + " [" + runit.unit + "]";
     c.value_title = qtitle;
     c.angle_deg = angles;
     for (double r : radii) c.radius.push_back(r / runit.divisor);
-    csv << "angle_deg," << layout.axes[radial] << "_" << runit.unit << "," << opt.quantity << "_"
+    csv << "angle_deg," << table.axes[radial] << "_" << runit.unit << "," << opt.quantity << "_"
         << unit.unit << "\n";
     for (std::size_t i = 0; i < radii.size(); ++i)
       for (std::size_t a = 0; a < angles.size(); ++a) {

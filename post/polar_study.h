@@ -1,5 +1,6 @@
-// A study's results (SQLite, solver/study/study_store.h) arranged for polar figures: a quantity's
-// peak against the incidence-angle axis per record or case, and on an angle x gap grid.
+// A study's results (read as a plain table, solver/study/study_table.h) arranged for polar
+// figures: a quantity's peak against the incidence-angle axis per record or case, and on an
+// angle x gap grid.
 // Angles are stored in SI (rad) like every numeric axis; values above 2 pi are taken as degrees.
 // Ensemble statistics of a quantity Q are output columns beside Q: Q_ens_min, Q_ens_mean,
 // Q_ens_max, Q_ens_std as `ensemble: N` studies write them (docs/studies.md); Q_min, Q.min,
