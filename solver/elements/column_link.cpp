@@ -30,6 +30,11 @@ ColumnLink::ColumnLink(std::string label, DiaphragmDofs upper, DiaphragmDofs low
     throw std::invalid_argument("column '" + label_ + "': the upper diaphragm needs u, v, theta");
   if (!(g_.yield_drift.minCoeff() > 0) || !(g_.yield_shear.minCoeff() > 0))
     throw std::invalid_argument("column '" + label_ + "': yield drift and shear must be > 0");
+  const bool lower_present = lower.ux >= 0 && lower.uy >= 0 && lower.theta >= 0;
+  if (!lower_present && (lower.ux >= 0 || lower.uy >= 0 || lower.theta >= 0))
+    throw std::invalid_argument("column '" + label_ + "': the lower diaphragm needs u, v, theta");
+  dof_count_ = lower_present ? 6 : 3;
+  coupled_ = dynamic_cast<CoupledBoucWenMaterial*>(law_.get());
   const double c = std::cos(g_.orientation), s = std::sin(g_.orientation);
   R_ << c, -s, s, c;
 }
@@ -69,8 +74,7 @@ Eigen::Matrix2d ColumnLink::tangent_W() const {
 void ColumnLink::scatter(const Eigen::Vector2d& F, Eigen::VectorXd& f) const {
   const double m = g_.p_O.x() * F[1] - g_.p_O.y() * F[0];
   const double generalised[3] = {F[0], F[1], m};
-  for (int i = 0; i < 6; ++i)
-    if (dof_[i] >= 0) f[dof_[i]] += sign_[i] * generalised[i % 3];
+  for (int i = 0; i < dof_count_; ++i) f[dof_[i]] += sign_[i] * generalised[i % 3];
 }
 
 void ColumnLink::add_force(Eigen::VectorXd& f) const {
@@ -81,15 +85,93 @@ void ColumnLink::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd
   scatter(tangent_W() * deformation_of(x), y);
 }
 
-void ColumnLink::add_tangent(Eigen::MatrixXd& K, double) const {
+Eigen::Matrix3d ColumnLink::diaphragm_tangent() const {
   Eigen::Matrix<double, 2, 3> T;
   T << 1.0, 0.0, -g_.p_O.y(), 0.0, 1.0, g_.p_O.x();
-  const Eigen::Matrix3d kt = T.transpose() * tangent_W() * T;
-  for (int a = 0; a < 6; ++a) {
-    if (dof_[a] < 0) continue;
-    for (int b = 0; b < 6; ++b)
-      if (dof_[b] >= 0) K(dof_[a], dof_[b]) += sign_[a] * sign_[b] * kt(a % 3, b % 3);
+  return T.transpose() * tangent_W() * T;
+}
+
+void ColumnLink::add_tangent(Eigen::MatrixXd& K, double) const {
+  const Eigen::Matrix3d kt = diaphragm_tangent();
+  for (int a = 0; a < dof_count_; ++a)
+    for (int b = 0; b < dof_count_; ++b)
+      K(dof_[a], dof_[b]) += sign_[a] * sign_[b] * kt(a % 3, b % 3);
+}
+
+const void* ColumnLink::batch_key() const {
+  static const char coupled_columns = 0, other_columns = 0;
+  return coupled_ ? &coupled_columns : &other_columns;
+}
+
+template <class Block>
+void ColumnLink::for_each_storey_run(Element* const* elements, int count, Block&& block) {
+  const auto same_dofs = [](const ColumnLink& a, const ColumnLink& b) {
+    bool same = true;
+    for (int k = 0; k < 6; ++k) same &= a.dof_[k] == b.dof_[k];
+    return same;
+  };
+  for (int i = 0; i < count;) {
+    const auto& first = static_cast<const ColumnLink&>(*elements[i]);
+    int j = i + 1;
+    while (j < count && same_dofs(first, static_cast<const ColumnLink&>(*elements[j]))) ++j;
+    block(first, elements + i, j - i);
+    i = j;
   }
+}
+
+void ColumnLink::set_trial_batch(Element* const* elements, int count, const Eigen::VectorXd& u,
+                                 const Eigen::VectorXd& v) {
+  if (!coupled_) {  // the key says: no column of this batch has the coupled law
+    for (int i = 0; i < count; ++i) elements[i]->set_trial(u, v);
+    return;
+  }
+  constexpr int kChunk = CoupledBoucWenMaterial::kTrialBatch;
+  CoupledBoucWenMaterial* laws[kChunk];
+  Eigen::Vector2d x[kChunk];
+  for (int begin = 0; begin < count; begin += kChunk) {
+    const int n = std::min(kChunk, count - begin);
+    for (int i = 0; i < n; ++i) {
+      const auto& column = static_cast<const ColumnLink&>(*elements[begin + i]);
+      laws[i] = column.coupled_;
+      const Eigen::Vector2d d_L = column.R_.transpose() * column.deformation_of(u);  // as set_trial
+      x[i] = d_L.cwiseQuotient(column.g_.yield_drift);
+    }
+    CoupledBoucWenMaterial::set_trials(laws, x, n);
+  }
+}
+
+void ColumnLink::add_force_batch(Element* const* elements, int count, Eigen::VectorXd& f) const {
+  for_each_storey_run(elements, count, [&](const ColumnLink& first, Element* const* run, int n) {
+    double sum[6];
+    for (int a = 0; a < first.dof_count_; ++a) sum[a] = f[first.dof_[a]];
+    for (int i = 0; i < n; ++i) {
+      const auto& column = static_cast<const ColumnLink&>(*run[i]);
+      const Eigen::Vector2d F = column.shear_W();
+      const double m = column.g_.p_O.x() * F[1] - column.g_.p_O.y() * F[0];
+      const double generalised[3] = {F[0], F[1], m};
+      for (int a = 0; a < first.dof_count_; ++a) sum[a] += column.sign_[a] * generalised[a % 3];
+    }
+    for (int a = 0; a < first.dof_count_; ++a) f[first.dof_[a]] = sum[a];
+  });
+}
+
+void ColumnLink::add_tangent_batch(Element* const* elements, int count, Eigen::MatrixXd& K,
+                                   double) const {
+  for_each_storey_run(elements, count, [&](const ColumnLink& first, Element* const* run, int n) {
+    const int m = first.dof_count_;
+    double sum[6][6];
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b) sum[a][b] = K(first.dof_[a], first.dof_[b]);
+    for (int i = 0; i < n; ++i) {
+      const auto& column = static_cast<const ColumnLink&>(*run[i]);
+      const Eigen::Matrix3d kt = column.diaphragm_tangent();
+      for (int a = 0; a < m; ++a)
+        for (int b = 0; b < m; ++b)
+          sum[a][b] += column.sign_[a] * column.sign_[b] * kt(a % 3, b % 3);
+    }
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b) K(first.dof_[a], first.dof_[b]) = sum[a][b];
+  });
 }
 
 bool ColumnLink::add_dofs(std::vector<int>& dofs) const {

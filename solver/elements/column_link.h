@@ -16,6 +16,7 @@
 #include "solver/core/element.h"
 #include "solver/elements/bearing_link.h"
 #include "solver/materials/biaxial_material.h"
+#include "solver/materials/bouc_wen_coupled.h"
 
 namespace isopound {
 
@@ -64,6 +65,17 @@ class ColumnLink final : public Element {
   void outputs(double* out) const override;
   const std::string& label() const override { return label_; }
 
+  // Columns form batches (Element::batch_key): one key for the coupled Bouc-Wen law (its trials
+  // taken together, CoupledBoucWenMaterial::set_trials), one for any other law; within a batch,
+  // each run of consecutive columns between the same two diaphragms (a storey) sums its forces
+  // and tangents in registers, in run order: the single calls' sums, bit for bit.
+  const void* batch_key() const override;
+  void set_trial_batch(Element* const* elements, int count, const Eigen::VectorXd& u,
+                       const Eigen::VectorXd& v) override;
+  void add_force_batch(Element* const* elements, int count, Eigen::VectorXd& f) const override;
+  void add_tangent_batch(Element* const* elements, int count, Eigen::MatrixXd& K,
+                         double velocity_factor) const override;
+
   // Plan-frame deformation d_W of the column for DOF values u, m.
   Eigen::Vector2d deformation_of(const Eigen::VectorXd& u) const;
   // Column shear in the plan frame (force on the upper diaphragm's side, F = K d sign), N.
@@ -76,6 +88,11 @@ class ColumnLink final : public Element {
   Eigen::Matrix2d tangent_W() const;
   // f += T^T F on the upper DOFs, -T^T F on the lower.
   void scatter(const Eigen::Vector2d& F_W, Eigen::VectorXd& f) const;
+  // T^T k_W T: the tangent on one diaphragm's (u, v, theta).
+  Eigen::Matrix3d diaphragm_tangent() const;
+  // block(first, run, n) for each run of consecutive columns with the same six DOFs.
+  template <class Block>
+  static void for_each_storey_run(Element* const* elements, int count, Block&& block);
 
   std::string label_;
   int dof_[6];  // upper ux, uy, theta, lower ux, uy, theta (-1: ground or absent)
@@ -83,6 +100,8 @@ class ColumnLink final : public Element {
   ColumnLinkGeometry g_;
   Eigen::Matrix2d R_;  // columns: section axes 1 and 2 in the plan frame
   std::unique_ptr<BiaxialMaterial> law_;
+  CoupledBoucWenMaterial* coupled_ = nullptr;  // law_ when it is the coupled Bouc-Wen law
+  int dof_count_ = 3;                          // 6 with a lower diaphragm, 3 on the ground
   double alpha_;
   // Committed work of the law, J, and the committed (local) force and deformation.
   double work_commit_ = 0.0;
