@@ -276,6 +276,45 @@ TEST(StudySweep, ResumeRefusesAChangedStudy) {
   fs::remove_all(dir);  // kept when an assertion failed above
 }
 
+// A case's implausible value (a bare base-slab mass: 340 kg) is warned of as `isopound run` warns,
+// located at the axis value that wrote it, once with its case count, kept in the database's meta
+// table; --strict refuses the study before any run.
+TEST(StudySweep, ImplausibleCaseValuesAreWarnedAtTheirAxisValueAndRefusedWithStrict) {
+  const fs::path dir = test::study_scratch("warned");
+  test::write_file(dir / "study.yaml",
+                   "model: " + test::thesis_model() +
+                       "\nset: {ground_motion.pulse: {duration: 2 s, dt: 0.01 s}}\n"
+                       "axes:\n"
+                       "  - {path: building.base.mass, values: [340 t, 340]}\n"
+                       "  - {path: building.isolator.uy, values: [1 cm, 2 cm]}\n"
+                       "outputs: [base.displacement]\n");
+  const std::string db = (dir / "s.db").string();
+  const auto r = run_isopound("sweep '" + (dir / "study.yaml").string() + "' --db '" + db + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::regex warning(
+      R"(isopound sweep: warning: [^\n]*study\.yaml:4:\d+: axes\[0\]\.values\[1\]: )"
+      R"(building\.base\.mass: '340' [^\n]*did you mean '340 t'\?[^\n]*\(case 2: [^\n]*; 2 cases\))");
+  EXPECT_TRUE(std::regex_search(r.output, warning)) << r.output;
+  std::size_t warnings = 0;
+  for (std::size_t at = r.output.find("warning:"); at != std::string::npos;
+       at = r.output.find("warning:", at + 1))
+    ++warnings;
+  EXPECT_EQ(warnings, 1u) << r.output;  // once, not per case
+  EXPECT_EQ(query_int(db,
+                      "SELECT COUNT(*) FROM meta WHERE key = 'warnings' AND "
+                      "value LIKE '%building.base.mass: ''340''%'"),
+            1);
+
+  const std::string strict_db = (dir / "strict.db").string();
+  const auto strict = run_isopound("sweep '" + (dir / "study.yaml").string() + "' --strict --db '" +
+                                   strict_db + "'");
+  EXPECT_EQ(strict.exit_code, 2) << strict.output;
+  EXPECT_NE(strict.output.find("isopound sweep: error: "), std::string::npos) << strict.output;
+  EXPECT_NE(strict.output.find("refused by --strict"), std::string::npos) << strict.output;
+  EXPECT_FALSE(fs::exists(strict_db));  // nothing run, no database
+  fs::remove_all(dir);
+}
+
 TEST(StudySweep, MalformedStudiesExitWithCode2BeforeAnyRun) {
   const fs::path data = test::source_dir() / "tests" / "data" / "bad_studies";
   const fs::path dir = test::study_scratch("bad");

@@ -295,6 +295,12 @@ void InputNode::fail(const std::string& what) const {
   fail_at(file_, mark(), path_, what);
 }
 
+InputError InputNode::error(const std::string& what) const {
+  const YAML::Mark m = mark();
+  if (!has_position(m)) return InputError(file_, 0, 0, path_, what);
+  return InputError(file_, m.line + 1, m.column + 1, path_, what);
+}
+
 void InputNode::fail_at_key(std::string_view key, const std::string& what) const {
   fail_at(file_, mark(), child_path(key), what);
 }

@@ -163,6 +163,8 @@ class InputNode {
   // --- errors ---
   std::string kind() const;  // for messages: "a map", "a list", "an empty value", "'text'"
   [[noreturn]] void fail(const std::string& what) const;
+  // The error fail(what) throws, not thrown (a warning located at this node).
+  InputError error(const std::string& what) const;
   // An error about the key `key` of this map (which may be absent), at this node's position.
   [[noreturn]] void fail_at_key(std::string_view key, const std::string& what) const;
 

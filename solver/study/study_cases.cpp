@@ -145,6 +145,33 @@ CaseInput CaseBuilder::input_of(std::int64_t case_id) const {
     throw InputError(study_.model_file, line_of(mark), column_of(mark), e.key(),
                      e.detail() + in_case());
   }
+  // Its plausibility warnings, read from the cloned tree (no positions), are located as its
+  // errors are: at the override that wrote the key, else at the key in the base model.
+  for (std::string& w : input.config.warnings) {
+    const std::string prefix = study_.model_file + ":";
+    if (w.rfind(prefix, 0) != 0) continue;
+    const std::size_t key_at = w.find(": ", prefix.size());  // after "line:col"
+    if (key_at == std::string::npos) continue;
+    const std::size_t what_at = w.find(": ", key_at + 2);
+    if (what_at == std::string::npos) continue;
+    const std::string key = w.substr(key_at + 2, what_at - key_at - 2);
+    const std::string what = w.substr(what_at + 2);
+    ParameterPath path;
+    try {
+      path = parse_parameter_path(key);
+    } catch (const std::invalid_argument&) {
+      continue;
+    }
+    const Override* writer = nullptr;
+    for (auto it = overrides.rbegin(); it != overrides.rend() && !writer; ++it)
+      if (is_prefix_of((*it)->path, path) || is_prefix_of(path, (*it)->path)) writer = *it;
+    if (writer) {
+      w = writer->where.error(key + ": " + what).what();
+    } else {
+      const YAML::Mark mark = locate(study_.model, path);
+      w = InputError(study_.model_file, line_of(mark), column_of(mark), key, what).what();
+    }
+  }
   input.config.output.histories = false;
   // A 3D model reads the same ground_motion subtree as a pair (two components).
   input.motion_key =
@@ -166,6 +193,7 @@ ValidatedStudy validate_study(const Study& study, int threads) {
   std::atomic<std::int64_t> first_error{std::numeric_limits<std::int64_t>::max()};
   struct Found {
     std::map<std::string, std::int64_t> motions;  // key -> lowest case using it
+    std::map<std::string, std::pair<std::int64_t, std::int64_t>> warnings;  // -> (case, count)
     std::int64_t error_case = std::numeric_limits<std::int64_t>::max();
     std::exception_ptr error;
   };
@@ -200,6 +228,11 @@ ValidatedStudy validate_study(const Study& study, int threads) {
         }
         mine.motions.emplace(input.motion_key,
                              c);  // cases come in increasing order: keeps the lowest
+        for (const std::string& w : input.config.warnings) {
+          auto& [first, n] = mine.warnings.try_emplace(w, c, 0).first->second;
+          first = std::min(first, c);
+          ++n;
+        }
         const std::string identity = builder.identity(c);
         identities[static_cast<std::size_t>(c)] = {fnv1a64(identity),
                                                    std::hash<std::string>{}(identity)};
@@ -240,6 +273,17 @@ ValidatedStudy validate_study(const Study& study, int threads) {
       const auto [it, inserted] = motions.emplace(key, c);
       if (!inserted) it->second = std::min(it->second, c);
     }
+  std::map<std::string, std::pair<std::int64_t, std::int64_t>> warnings;
+  for (const Found& f : found)
+    for (const auto& [text, seen] : f.warnings) {
+      auto& [first, n] = warnings.try_emplace(text, seen.first, 0).first->second;
+      first = std::min(first, seen.first);
+      n += seen.second;
+    }
+  for (const auto& [text, seen] : warnings)
+    out.warnings.push_back(text + " (case " + std::to_string(seen.first) + ": " +
+                           builder.describe(seen.first) + "; " + std::to_string(seen.second) +
+                           (seen.second == 1 ? " case)" : " cases)"));
   out.representative.resize(static_cast<std::size_t>(count));
   std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, std::int64_t, PairHash> first_with;
   for (std::int64_t c = 0; c < count; ++c) {

@@ -57,6 +57,9 @@ struct ValidatedStudy {
   std::vector<std::int64_t> representative;  // per case: the lowest case id with the same model
   std::map<std::string, std::shared_ptr<const PreparedMotion>> motions;  // by CaseInput::motion_key
   std::int64_t distinct_models = 0;
+  // The plausibility warnings of the cases' models (config.warnings), each once, with the first
+  // case that gives it and how many do: "<warning> (case 3: gap=0.15; 4 cases)".
+  std::vector<std::string> warnings;
 };
 
 // Builds every case's model (in `threads` threads), resolves the peaks on it and loads each

@@ -94,6 +94,8 @@ StudyCommands add_study_commands(CLI::App& app) {
                   "Continue an existing database: compute only its unfinished runs");
   sweep->add_flag("--overwrite", o.sweep.overwrite, "Delete an existing database and start again");
   sweep->add_flag("-q,--quiet", o.sweep.quiet, "No progress and no summary");
+  sweep->add_flag("--strict", o.sweep.strict,
+                  "A case's implausible value (a warning) is an error: nothing is run");
   sweep->add_flag("--dry-run", o.sweep.dry_run,
                   "Validate every case and describe the study; run nothing");
   sweep->add_option("--export", o.export_after,

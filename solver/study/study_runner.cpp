@@ -29,6 +29,12 @@
 namespace isopound {
 namespace {
 
+std::string join_lines(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += (text.empty() ? "" : "\n") + line;
+  return text;
+}
+
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
@@ -296,6 +302,18 @@ int run_sweep(const std::string& study_path, const SweepOptions& options,
     std::fprintf(stderr, "%s: checked in %.1f s%s\n", study_path.c_str(),
                  std::chrono::duration<double>(Clock::now() - checking).count(),
                  options.dry_run ? "; dry run: nothing is computed" : "");
+  // Implausible values of the cases (as `isopound run` warns of them): said before anything runs,
+  // kept in the database's meta table, refused with --strict.
+  if (root)
+    for (const std::string& w : validated.warnings)
+      std::fprintf(stderr, "isopound sweep: %s: %s\n", options.strict ? "error" : "warning",
+                   w.c_str());
+  if (options.strict && !validated.warnings.empty()) {
+    if (root)
+      std::fprintf(stderr, "isopound sweep: error: %zu implausible value(s) refused by --strict\n",
+                   validated.warnings.size());
+    return 2;
+  }
   if (options.dry_run) {
     if (root) describe(study, validated, stdout);
     return 0;
@@ -346,7 +364,8 @@ int run_sweep(const std::string& study_path, const SweepOptions& options,
             {"study_file", fs::absolute(study.file, abs_ec).lexically_normal().string()},
             {"study_name", study.name},
             {"study_hash", fingerprint},
-            {"distinct_models", std::to_string(validated.distinct_models)}};
+            {"distinct_models", std::to_string(validated.distinct_models)},
+            {"warnings", join_lines(validated.warnings)}};
         store.emplace(StudyStore::create(db_path, StoreLayout::of(study), meta, study.case_count(),
                                          [&](std::int64_t c) { return cells_of(study, c); }));
       }

@@ -21,6 +21,7 @@ struct SweepOptions {
   bool overwrite = false;  // delete an existing database first
   bool quiet = false;      // no progress, no summary
   bool dry_run = false;    // validate and describe the study, run nothing
+  bool strict = false;     // a case's plausibility warning is an error (exit 2, nothing run)
 };
 
 // One case computed from its validated inputs: histories off, ground motion from the cache.
