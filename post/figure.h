@@ -1,5 +1,5 @@
-// A figure as plain data: lines, filled convex polygons and text in pixel coordinates, drawn in
-// order. Origin at the bottom-left corner, x to the right, y up (VTK's context convention).
+// A figure as plain data: filled convex polygons, lines, markers and text in pixel coordinates,
+// drawn in that order. Origin at the bottom-left corner, x to the right, y up (VTK's convention).
 #pragma once
 
 #include <array>
@@ -29,6 +29,13 @@ struct FilledPolygon {
   Rgb colour;
 };
 
+// A plot marker: a filled convex polygon with an outline, drawn above every line.
+struct Marker {
+  std::vector<Point2> points;  // convex, in order round it
+  Rgb fill, edge;
+  double edge_width = 1.0;  // px; 0: no outline
+};
+
 enum class HAlign { kLeft, kCentre, kRight };
 enum class VAlign { kBottom, kCentre, kTop };
 
@@ -46,10 +53,11 @@ struct Text {
 struct Figure {
   int width = 900, height = 600;  // px
   Rgb background{255, 255, 255};
-  // Drawn in this order: polygons, then lines, then text.
+  // Drawn in this order: polygons, then lines, then markers, then text.
   std::vector<FilledPolygon> polygons;
   std::vector<Polyline> lines;
   std::vector<Text> texts;
+  std::vector<Marker> markers;  // drawn before the texts (listed last for brace-initialisers)
 };
 
 // Colours for series (distinct, print-friendly) and the colour map of contour plots.

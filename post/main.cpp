@@ -1,6 +1,6 @@
-// isopound-post: plots of a run, response spectra of records, polar figures of a study and
-// ParaView animations. Headless by default (a private Xvfb when there is no DISPLAY).
-// Exit codes: 0 success, 2 bad input (message names the file / key), 1 anything else.
+// isopound-post: plots of a run, response spectra of records, polar figures of a study, capacity
+// curves of a pushover and ParaView animations. Headless by default (a private Xvfb when there is
+// no DISPLAY). Exit codes: 0 success, 2 bad input (message names the file / key), 1 anything else.
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
@@ -14,8 +14,10 @@
 #include "post/animation.h"
 #include "post/animation3d.h"
 #include "post/headless.h"
+#include "post/plot_pushover.h"
 #include "post/plot_run.h"
 #include "post/polar_study.h"
+#include "post/pushover_data.h"
 #include "post/render_png.h"
 #include "post/run_data.h"
 #include "post/spectra.h"
@@ -319,10 +321,30 @@ int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<st
   return kOk;
 }
 
+// ---- pushover ---------------------------------------------------------------------------------
+
+// `out`: a .png file, or a directory to write pushover.png into (default: the pushover directory).
+int run_pushover(const std::string& dir, const std::string& out) {
+  PushoverData data;
+  try {
+    data = read_pushover(dir);
+  } catch (const PushoverDataError& e) {
+    throw BadInput(e.what());
+  }
+  fs::path png = out.empty() ? fs::path(dir) / "pushover.png" : fs::path(out);
+  if (!out.empty() && png.extension() != ".png" && png.extension() != ".PNG") png /= "pushover.png";
+  if (!png.parent_path().empty()) fs::create_directories(png.parent_path());
+  const PrivateDisplay display;
+  render_png(pushover_figure(data), png.string());
+  std::printf("Wrote %s\n", png.string().c_str());
+  return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"isopound-post: plots, response spectra, polar figures and animations"};
+  CLI::App app{
+      "isopound-post: plots, response spectra, polar figures, capacity curves and animations"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("isopound-post ") + kIsopoundVersion);
 
@@ -383,6 +405,15 @@ int main(int argc, char** argv) {
                     "the incidence-angle axis (default: found by name)");
   polar->add_option("-o,--output,--out", out, "output path without extension");
 
+  std::string pushover_dir;
+  auto* pushover = app.add_subcommand(
+      "pushover", "capacity curve of `isopound pushover` output (PNG), yield and capping marked");
+  pushover
+      ->add_option("pushover_dir", pushover_dir, "directory with pushover.csv and pushover.json")
+      ->required();
+  pushover->add_option("-o,--output,--out", out,
+                       "a .png file, or a directory for pushover.png (default: PUSHOVER_DIR)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -393,6 +424,7 @@ int main(int argc, char** argv) {
     if (*plot) return run_plot(run_dir, out, model);
     if (*animate) return run_animate(run_dir, out, model, ao, preview);
     if (*polar) return run_polar(db, po, where, out);
+    if (*pushover) return run_pushover(pushover_dir, out);
   } catch (const BadInput& e) {
     std::fprintf(stderr, "isopound-post: error: %s\n", e.what());
     return kBadInput;

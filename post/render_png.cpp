@@ -56,6 +56,24 @@ class FigureItem : public vtkContextItem {
       painter->GetPen()->SetWidth(static_cast<float>(line.width));
       painter->DrawPoly(xy.data(), static_cast<int>(line.points.size()));
     }
+    for (const Marker& m : f.markers) {
+      if (m.points.size() < 3) continue;
+      xy.clear();
+      for (const Point2& p : m.points) {
+        xy.push_back(static_cast<float>(p.x));
+        xy.push_back(static_cast<float>(p.y));
+      }
+      painter->GetBrush()->SetColor(m.fill.r, m.fill.g, m.fill.b, 255);
+      painter->GetPen()->SetLineType(vtkPen::NO_PEN);
+      painter->DrawPolygon(xy.data(), static_cast<int>(m.points.size()));
+      if (m.edge_width <= 0.0) continue;
+      xy.push_back(xy[0]);  // closed outline
+      xy.push_back(xy[1]);
+      painter->GetPen()->SetLineType(vtkPen::SOLID_LINE);
+      painter->GetPen()->SetColor(m.edge.r, m.edge.g, m.edge.b, 255);
+      painter->GetPen()->SetWidth(static_cast<float>(m.edge_width));
+      painter->DrawPoly(xy.data(), static_cast<int>(m.points.size() + 1));
+    }
     vtkTextProperty* tp = painter->GetTextProp();
     tp->SetFontFamily(VTK_FONT_FILE);
     for (const Text& t : f.texts) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace isopound::post {
 
@@ -17,6 +18,32 @@ double peak_of(const std::vector<double>& v) {
   double m = 0.0;
   for (double x : v) m = std::max(m, std::abs(x));
   return m;
+}
+
+std::vector<Point2> marker_outline(MarkerShape shape, Point2 at, double size) {
+  const double h = 0.5 * size;
+  switch (shape) {
+    case MarkerShape::kNone:
+      return {};
+    case MarkerShape::kSquare:
+      return {
+          {at.x - h, at.y - h}, {at.x + h, at.y - h}, {at.x + h, at.y + h}, {at.x - h, at.y + h}};
+    case MarkerShape::kDiamond:
+      return {{at.x, at.y - h}, {at.x + h, at.y}, {at.x, at.y + h}, {at.x - h, at.y}};
+    case MarkerShape::kTriangle:  // pointing up, centred on its centroid
+      return {{at.x - h, at.y - h / std::sqrt(3.0)},
+              {at.x + h, at.y - h / std::sqrt(3.0)},
+              {at.x, at.y + 2 * h / std::sqrt(3.0)}};
+    case MarkerShape::kCircle:
+      break;
+  }
+  std::vector<Point2> circle;
+  constexpr int kSides = 20;
+  for (int k = 0; k < kSides; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / kSides;
+    circle.push_back({at.x + h * std::cos(a), at.y + h * std::sin(a)});
+  }
+  return circle;
 }
 
 namespace {
@@ -60,6 +87,39 @@ void range_of(const Panel& panel, double& x_lo, double& x_hi, double& y_lo, doub
   y_hi += pad;
 }
 
+// A panel's data as drawn: fig.lines[line_begin, line_end) and fig.markers[marker_begin, end).
+struct DrawnData {
+  std::size_t line_begin = 0, line_end = 0, marker_begin = 0;
+};
+
+// How much of the data falls in the box [x0, x1] x [y0, y1] px: line samples every 2 px and
+// marker centres (weighted: a marker hidden by the legend is worse than a stretch of line).
+int data_in_box(const Figure& fig, const DrawnData& data, double x0, double y0, double x1,
+                double y1) {
+  const auto inside = [&](Point2 p) { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; };
+  int n = 0;
+  for (std::size_t k = data.line_begin; k < data.line_end; ++k) {
+    const std::vector<Point2>& pts = fig.lines[k].points;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+      const double len = std::hypot(pts[i + 1].x - pts[i].x, pts[i + 1].y - pts[i].y);
+      const int m = std::max(1, static_cast<int>(std::ceil(len / 2.0)));
+      for (int j = 0; j < m; ++j) {
+        const double f = static_cast<double>(j) / m;
+        n += inside(
+            {pts[i].x + f * (pts[i + 1].x - pts[i].x), pts[i].y + f * (pts[i + 1].y - pts[i].y)});
+      }
+    }
+    if (pts.size() == 1) n += inside(pts[0]);
+  }
+  for (std::size_t k = data.marker_begin; k < fig.markers.size(); ++k) {
+    Point2 c;
+    for (const Point2& p : fig.markers[k].points) c.x += p.x, c.y += p.y;
+    const double count = static_cast<double>(fig.markers[k].points.size());
+    n += 20 * inside({c.x / count, c.y / count});
+  }
+  return n;
+}
+
 void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Figure& fig,
                 PanelFrame& frame) {
   // Margins inside the panel cell for tick labels and titles.
@@ -99,6 +159,7 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
     const double py = frame.to_pixel(0, 0).y;
     fig.lines.push_back({{{L, py}, {R, py}}, {150, 150, 150}, 1.0});
   }
+  DrawnData drawn{fig.lines.size(), 0, fig.markers.size()};
   int index = 0;
   for (const Series& s : panel.series) {
     Polyline line;
@@ -108,9 +169,14 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
       if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
       line.points.push_back(frame.to_pixel(s.x[i], s.y[i]));
     }
-    fig.lines.push_back(std::move(line));
+    if (s.marker != MarkerShape::kNone)
+      for (const Point2& p : line.points)
+        fig.markers.push_back(
+            {marker_outline(s.marker, p, s.marker_size), line.colour, s.marker_edge, 1.0});
+    if (s.width > 0.0) fig.lines.push_back(std::move(line));
     ++index;
   }
+  drawn.line_end = fig.lines.size();
   fig.lines.push_back({{{L, B}, {R, B}, {R, T}, {L, T}, {L, B}}, kFrame, 1.0});
   fig.texts.push_back(
       {{(L + R) / 2, y0 + 4}, panel.x_title, 12, kBlack, HAlign::kCentre, VAlign::kBottom});
@@ -135,12 +201,25 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
       longest = std::max(longest, n);
     }
     const double width = std::min(std::max(150.0, 36.0 + 6.5 * longest), 0.5 * frame.width);
-    double y = T - 14;
+    const int entries =
+        static_cast<int>(std::count_if(panel.series.begin(), panel.series.end(),
+                                       [](const Series& s) { return !s.label.empty(); }));
+    const double top_y = T - 14, bottom_y = B + 14 + 16.0 * std::max(0, entries - 1);
+    double y = top_y;
+    if (panel.legend_at == Panel::LegendAt::kBottomRight) y = bottom_y;
+    if (panel.legend_at == Panel::LegendAt::kBest && entries > 0 &&
+        data_in_box(fig, drawn, R - width - 4, top_y - 16.0 * (entries - 1) - 8, R, top_y + 8) >
+            data_in_box(fig, drawn, R - width - 4, B + 6, R, bottom_y + 8))
+      y = bottom_y;
     index = 0;
     for (const Series& s : panel.series) {
       const Rgb c = s.colour.value_or(series_colour(index++));
       if (s.label.empty()) continue;
-      fig.lines.push_back({{{R - width, y}, {R - width + 24, y}}, c, 2.5});
+      if (s.width > 0.0) fig.lines.push_back({{{R - width, y}, {R - width + 24, y}}, c, 2.5});
+      if (s.marker != MarkerShape::kNone)
+        fig.markers.push_back(
+            {marker_outline(s.marker, {R - width + 12, y}, std::min(s.marker_size, 11.0)), c,
+             s.marker_edge, 1.0});
       fig.texts.push_back(
           {{R - width + 30, y}, s.label, 11, kBlack, HAlign::kLeft, VAlign::kCentre});
       y -= 16;

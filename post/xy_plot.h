@@ -10,11 +10,17 @@
 
 namespace isopound::post {
 
+// The shape drawn at every point of a series with markers.
+enum class MarkerShape { kNone, kCircle, kSquare, kDiamond, kTriangle };
+
 struct Series {
   std::string label;  // legend text ("" = not in the legend)
   std::vector<double> x, y;
-  std::optional<Rgb> colour;  // default: series_colour(index in the panel)
-  double width = 1.5;         // px
+  std::optional<Rgb> colour;  // default: series_colour(index in the panel); markers' fill too
+  double width = 1.5;         // px; 0: no line (markers only)
+  MarkerShape marker = MarkerShape::kNone;
+  double marker_size = 12.0;  // px across
+  Rgb marker_edge{0, 0, 0};   // the markers' outline
 };
 
 // A series in the default colour and width.
@@ -25,6 +31,21 @@ inline Series line_series(std::string label, std::vector<double> x, std::vector<
   s.y = std::move(y);
   return s;
 }
+
+// One point drawn as a marker (no line), e.g. a marked point of a curve.
+inline Series point_series(std::string label, double x, double y, MarkerShape shape, Rgb fill) {
+  Series s;
+  s.label = std::move(label);
+  s.x = {x};
+  s.y = {y};
+  s.colour = fill;
+  s.width = 0.0;
+  s.marker = shape;
+  return s;
+}
+
+// The outline of a marker of `shape`, `size` px across, centred on `at` (empty for kNone).
+std::vector<Point2> marker_outline(MarkerShape shape, Point2 at, double size);
 
 // Every value of v divided by divisor (a change of unit for a series).
 std::vector<double> scaled(const std::vector<double>& v, double divisor);
@@ -39,6 +60,9 @@ struct Panel {
   bool symmetric_y = false;  // y range symmetric about 0 (time histories)
   bool y_from_zero = false;  // y range includes 0 (spectra)
   bool equal_axes = false;   // one data unit is as long in x as in y (plans, orbits)
+  // Where the legend goes: top right, bottom right, or whichever of the two the data cross less.
+  enum class LegendAt { kTopRight, kBottomRight, kBest };
+  LegendAt legend_at = LegendAt::kTopRight;
 };
 
 // Where a panel's data lands on the figure (for tests and overlays).
