@@ -305,12 +305,17 @@ int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<st
     throw BadInput(e.what());
   }
   for (const std::string& n : r.notes) std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
-  const std::string stem = out.empty()
-                               ? (fs::path(db).parent_path() /
-                                  (fs::path(db).stem().string() + "-polar-" + opt.quantity +
-                                   (opt.contour_axis.empty() ? "" : "-" + opt.contour_axis)))
-                                     .string()
-                               : out;
+  // -o as for every command: the output directory (default: the database's), or a .png file
+  // (its .csv beside it).
+  const std::string name = fs::path(db).stem().string() + "-polar-" + opt.quantity +
+                           (opt.contour_axis.empty() ? "" : "-" + opt.contour_axis);
+  fs::path png = out.empty() ? fs::path(db).parent_path() / name : fs::path(out);
+  if (out.empty() || (png.extension() != ".png" && png.extension() != ".PNG")) {
+    if (!out.empty()) png /= name;
+  } else {
+    png.replace_extension();
+  }
+  const std::string stem = png.string();
   if (!fs::path(stem).parent_path().empty()) fs::create_directories(fs::path(stem).parent_path());
   write_text(stem + ".csv", r.csv);
   const PrivateDisplay display;
@@ -403,7 +408,9 @@ int main(int argc, char** argv) {
   polar->add_option("--unit", po.unit, "display unit of the quantity (cm, g, kN, %, ...)");
   polar->add_option("--angle-axis", po.angle_axis,
                     "the incidence-angle axis (default: found by name)");
-  polar->add_option("-o,--output,--out", out, "output path without extension");
+  polar->add_option("-o,--output,--out", out,
+                    "output directory (default: the database's), or a .png file (the .csv beside "
+                    "it)");
 
   std::string pushover_dir;
   auto* pushover = app.add_subcommand(

@@ -140,7 +140,7 @@ TEST(PostPolar, CommandWritesEnvelopeAndContourFromAStudy) {
   const auto dir = test::scratch_dir("polarcli");
   const std::string db = make_study(dir, true);
   auto r = test::run_post("polar " + db + " --quantity u_base --unit cm --where gap=0.1 -o " +
-                          (dir / "env").string());
+                          (dir / "env.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const test::Image img = test::read_png((dir / "env.png").string());
   EXPECT_EQ(img.width, 800);
@@ -160,8 +160,14 @@ TEST(PostPolar, CommandWritesEnvelopeAndContourFromAStudy) {
     }
   }
   EXPECT_EQ(rows, 24);
+  // -o a directory, as for every command: the default names inside it.
+  r = test::run_post("polar " + db + " --quantity u_base -o " + (dir / "figures").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string stem = std::filesystem::path(db).stem().string() + "-polar-u_base";
+  EXPECT_TRUE(std::filesystem::exists(dir / "figures" / (stem + ".png"))) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "figures" / (stem + ".csv"))) << r.output;
   r = test::run_post("polar " + db + " --quantity F_impact --unit kN --contour gap -o " +
-                     (dir / "con").string());
+                     (dir / "con.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_GT(test::read_png((dir / "con.png").string()).variance(), 50.0);
   // ISOPOUND_POST_EXAMPLES=DIR keeps the two figures (the README's synthetic polar examples).
@@ -310,8 +316,8 @@ TEST(PostPolar, EnsembleBandIsShadedBetweenMinAndMaxWithTheMeanLineOnIt) {
   EXPECT_EQ(two.csv.substr(0, two.csv.find('\n')),
             "angle_deg,A,A_min,A_mean,A_max,B,B_min,B_mean,B_max,mean");
   // The command draws it too (exit 0, a non-blank PNG).
-  const auto cli =
-      test::run_post("polar " + db + " --quantity u_base --unit cm -o " + (dir / "cli").string());
+  const auto cli = test::run_post("polar " + db + " --quantity u_base --unit cm -o " +
+                                  (dir / "cli.png").string());
   ASSERT_EQ(cli.exit_code, 0) << cli.output;
   EXPECT_GT(test::read_png((dir / "cli.png").string()).variance(), 50.0);
   // ISOPOUND_POST_EXAMPLES=DIR keeps the figure (the README's synthetic ensemble example).
