@@ -42,8 +42,8 @@ void read_table(PushoverData& d, const fs::path& path) {
   if (!std::getline(in, line)) throw PushoverDataError(path.string() + ":1: empty file");
   chomp(line);
   d.columns = split_csv(line);
-  for (const char* name : kRequired) d.column(name);  // throws naming the missing one
   d.values.assign(d.columns.size(), {});
+  for (const char* name : kRequired) d.column(name);  // throws naming the missing one
   int line_no = 1;
   while (std::getline(in, line)) {
     ++line_no;
