@@ -65,7 +65,7 @@ class PeakBands {
                                            _mm_cmpnge_pd(v, _mm_loadu_pd(low_.data() + k))));
     }
 #endif
-    for (; k < n; ++k) outside |= !(values[k] <= high_[k]) | !(values[k] >= low_[k]);
+    for (; k < n; ++k) outside |= int{!(values[k] <= high_[k])} | int{!(values[k] >= low_[k])};
     if (outside == 0) return;
     for (std::size_t k = 0; k < n; ++k) {
       update_peak(*peaks_[k], values[k], t);
