@@ -13,28 +13,6 @@
 namespace isopound::pre {
 namespace {
 
-Vec2 rotate(double angle, Vec2 v) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
-
-std::vector<Column3DConfig> columns_W(const Building3DConfig& b,
-                                      const std::vector<Column3DConfig>& columns) {
-  std::vector<Column3DConfig> w = columns;
-  for (Column3DConfig& c : w) {
-    c.position = to_plan(b, c.position);
-    c.orientation += b.rotation;
-  }
-  return w;
-}
-
-Diaphragm3DConfig diaphragm_W(const Building3DConfig& b, const Diaphragm3DConfig& d) {
-  Diaphragm3DConfig w = d;
-  for (Vec2& p : w.plan) p = to_plan(b, p);
-  w.eccentricity = rotate(b.rotation, d.eccentricity);
-  return w;
-}
-
 // Centre of mass and radius of gyration about it of a sum of 3 x 3 diaphragm mass matrices.
 void mass_centre(const Eigen::Matrix3d& m, Vec2& p_WM, double& l_s) {
   // M = T^T diag(m, m, J) T with T = [[1, 0, -y], [0, 1, x], [0, 0, 1]]: M(0, 2) = -m y,
@@ -92,14 +70,14 @@ std::vector<StructureProperties> structure_properties(const ModelConfig& config)
     std::vector<std::string> names;
     std::vector<double> elevations;
     if (b.isolated) {
-      levels.push_back(diaphragm_W(b, b.base));
+      levels.push_back(diaphragm_in_plan(b, b.base));
       names.push_back("base");
       elevations.push_back(0.0);
     }
     double z = 0.0;
     for (std::size_t s = 0; s < b.storeys.size(); ++s) {
       z += b.storeys[s].height;
-      levels.push_back(diaphragm_W(b, b.storeys[s].floor));
+      levels.push_back(diaphragm_in_plan(b, b.storeys[s].floor));
       names.push_back("floor " + std::to_string(s + 1));
       elevations.push_back(z);
     }
@@ -120,7 +98,7 @@ std::vector<StructureProperties> structure_properties(const ModelConfig& config)
       // Bearings at K_post: the base block of the isolated linear model less storey 1's columns.
       const LinearModel3D lin = linear_model3d(b, false, false);
       const Eigen::Matrix3d k = lin.stiffness.topLeftCorner<3, 3>() -
-                                storey_stiffness(columns_W(b, b.storeys[0].columns),
+                                storey_stiffness(columns_in_plan(b, b.storeys[0].columns),
                                                  b.storeys[0].height, b.column_coupling);
       Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
       for (const Eigen::Matrix3d& mi : masses) m += mi;
@@ -130,7 +108,7 @@ std::vector<StructureProperties> structure_properties(const ModelConfig& config)
       p.storeys.push_back(s);
     }
     for (std::size_t s = 0; s < b.storeys.size(); ++s) {
-      const Eigen::Matrix3d k = storey_stiffness(columns_W(b, b.storeys[s].columns),
+      const Eigen::Matrix3d k = storey_stiffness(columns_in_plan(b, b.storeys[s].columns),
                                                  b.storeys[s].height, b.column_coupling);
       StoreyProperties sp = storey_properties(k, masses[first_floor + s]);
       sp.storey = static_cast<int>(s + 1);
