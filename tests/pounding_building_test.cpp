@@ -26,10 +26,16 @@
 #include "solver/excitation/ground_motion.h"
 #include "solver/materials/impact_law.h"
 #include "solver/structures/job.h"
+#include "tests/peak_comparison.h"
 #include "tests/test_support.h"
 
 namespace isopound {
 namespace {
+
+using test::compare;
+using test::Comparison;
+using test::NamedPeak;
+using test::relative_difference;
 
 // Thesis chapter-4 pounding set-up (THEORY section 4): k = 2500 kN/mm, e = 0.7, wall 500 t.
 constexpr double kGap = 0.10;        // m, moat gap on both sides of the base slab
@@ -156,11 +162,6 @@ int total_impacts(const Outcome& r, std::string_view tag) {
   return static_cast<int>(std::lround(n));
 }
 
-struct NamedPeak {
-  std::string name;
-  double value;
-};
-
 // The acceptance peaks of structure `s`: base displacement (isolated), each story drift, each
 // level's absolute acceleration; and, for the main building, each wall's peak impact force.
 std::vector<NamedPeak> peaks_of(const Outcome& r, int s = 0) {
@@ -177,32 +178,6 @@ std::vector<NamedPeak> peaks_of(const Outcome& r, int s = 0) {
     for (std::size_t e : contacts(r.model, "/wall "))
       p.push_back({r.model.elements[e]->label() + " force", contact_output(r, e, kForce)});
   return p;
-}
-
-// |a/ref - 1|; 0 when both are 0 (e.g. a wall never hit), infinite when only ref is 0.
-double relative_difference(double a, double ref) {
-  if (a == ref) return 0.0;
-  if (ref == 0.0) return std::numeric_limits<double>::infinity();
-  return std::abs(a / ref - 1.0);
-}
-
-struct Comparison {
-  double worst = 0.0;
-  std::string where = "-";
-};
-
-Comparison compare(const std::vector<NamedPeak>& run, const std::vector<NamedPeak>& ref) {
-  Comparison c;
-  EXPECT_EQ(run.size(), ref.size());
-  for (std::size_t i = 0; i < std::min(run.size(), ref.size()); ++i) {
-    EXPECT_EQ(run[i].name, ref[i].name);
-    const double d = relative_difference(run[i].value, ref[i].value);
-    if (d > c.worst || std::isnan(d)) {
-      c.worst = d;
-      c.where = run[i].name;
-    }
-  }
-  return c;
 }
 
 std::vector<std::string> law_names() {

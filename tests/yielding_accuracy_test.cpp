@@ -20,15 +20,15 @@
 #include "solver/core/analysis.h"
 #include "solver/io/model_input.h"
 #include "solver/structures/job.h"
+#include "tests/peak_comparison.h"
 #include "tests/test_support.h"
 
 namespace isopound {
 namespace {
 
-struct NamedPeak {
-  std::string name;
-  double value;
-};
+using test::compare;
+using test::Comparison;
+using test::NamedPeak;
 
 // The record (and extra_time) as `isopound run` loads them.
 struct Outcome {
@@ -62,24 +62,6 @@ std::vector<NamedPeak> peaks_of(const Outcome& r) {
       if (r.model.elements[e]->output_name(k) == "force")
         p.push_back({r.model.elements[e]->label() + " force", a.element_outputs[e][k].value});
   return p;
-}
-
-struct Comparison {
-  double worst = 0.0;
-  std::string where = "-";
-};
-
-Comparison compare(const std::vector<NamedPeak>& run, const std::vector<NamedPeak>& ref) {
-  Comparison c;
-  EXPECT_EQ(run.size(), ref.size());
-  for (std::size_t i = 0; i < std::min(run.size(), ref.size()); ++i) {
-    EXPECT_EQ(run[i].name, ref[i].name);
-    const double d = run[i].value == ref[i].value ? 0.0
-                     : ref[i].value == 0.0        ? std::numeric_limits<double>::infinity()
-                                                  : std::abs(run[i].value / ref[i].value - 1.0);
-    if (d > c.worst || std::isnan(d)) c = {d, run[i].name};
-  }
-  return c;
 }
 
 ModelConfig fixed_step(ModelConfig c, double dt) {
