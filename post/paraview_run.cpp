@@ -5,7 +5,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fcntl.h>
+
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 extern char** environ;
@@ -44,18 +47,35 @@ void run_pvpython(const std::filesystem::path& script, const std::vector<std::st
   for (std::string& e : env_text) env.push_back(e.data());
   env.push_back(nullptr);
 
+  // ParaView and FFmpeg are chatty (warnings on empty frames, a line per video frame): their
+  // output goes to a log, shown only when pvpython fails.
+  const std::string log = config + "/pvpython.log";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   pid_t pid = -1;
   const int spawned =
-      posix_spawn(&pid, pvpython.c_str(), nullptr, nullptr, argv.data(), env.data());
+      posix_spawn(&pid, pvpython.c_str(), &actions, nullptr, argv.data(), env.data());
+  posix_spawn_file_actions_destroy(&actions);
   int status = 0;
   if (spawned == 0) waitpid(pid, &status, 0);
+  std::string messages;
+  {
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    messages = text.str();
+    if (messages.size() > 4000) messages = "..." + messages.substr(messages.size() - 4000);
+  }
   std::error_code ignored;
   std::filesystem::remove_all(config, ignored);
   if (spawned != 0) throw ParaViewError("cannot start " + pvpython);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw ParaViewError("pvpython " + script.string() + " failed (exit status " +
                         std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
-                        "; its messages are above)");
+                        "); its messages:\n" + messages);
 }
 
 }  // namespace isopound::post

@@ -20,8 +20,8 @@ std::string find_pvpython();
 // Runs `pvpython --force-offscreen-rendering SCRIPT ARGS...` and waits. ParaView keeps settings
 // under the user's configuration folder: XDG_CONFIG_HOME points at a private temporary folder
 // for the run, so neither a user's settings change the picture nor the run the user's settings.
-// Needs an X display (PrivateDisplay). Throws ParaViewError when pvpython is missing or exits
-// non-zero (its output is on stderr).
+// Needs an X display (PrivateDisplay). pvpython's output is kept in a log, not shown. Throws
+// ParaViewError when pvpython is missing or exits non-zero (the message ends with the log).
 void run_pvpython(const std::filesystem::path& script, const std::vector<std::string>& args);
 
 }  // namespace isopound::post

@@ -80,12 +80,14 @@ def build(view):
     contact_kn.ResultArrayName = "F_N [kN]"
     contact_kn.Function = "normal_force/1000"
     contact_display = Show(contact_kn, view)
-    ColorBy(contact_display, ("CELLS", "F_N [kN]"))
     # Outlined thick: an overlap a few millimetres deep still shows at building scale.
     contact_display.Representation = "Surface With Edges"
     contact_display.EdgeColor = [0.8, 0.0, 0.0]
     contact_display.LineWidth = 4.0
+    # Coloured without ColorBy, which rescales to the (often empty) first frame and warns.
     force_lut = GetColorTransferFunction("F_N [kN]")
+    contact_display.ColorArrayName = ["CELLS", "F_N [kN]"]
+    contact_display.LookupTable = force_lut
     force_lut.AutomaticRescaleRangeMode = "Never"
     top = max(PEAK_NORMAL_FORCE / 1e3, 1e-3)  # kN
     # Warm colours only (yellow at zero to dark red at the peak): a contact never looks like a
