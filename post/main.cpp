@@ -26,6 +26,8 @@
 #include "post/render_png.h"
 #include "post/run_data.h"
 #include "post/spectra.h"
+#include "post/sweep_plot.h"
+#include "post/sweep_plot_figure.h"
 #include "post/vtu_writer.h"
 #include "post/xy_plot.h"
 #include "solver/core/constants.h"
@@ -421,6 +423,39 @@ int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<st
   return kOk;
 }
 
+// ---- sweep-plot -------------------------------------------------------------------------------
+
+// A peak against a swept axis; -o as for polar: a directory (default: the database's) or a .png.
+int run_sweep_plot(const std::string& db, SweepPlotOptions opt,
+                   const std::vector<std::string>& where, const std::string& out) {
+  for (const std::string& w : where) {
+    const auto eq = w.find('=');
+    if (eq == std::string::npos || eq == 0) throw BadInput("--where '" + w + "': write AXIS=VALUE");
+    opt.where.push_back({w.substr(0, eq), w.substr(eq + 1)});
+  }
+  SweepPlotData data;
+  try {
+    data = read_sweep_plot(db, opt);
+  } catch (const SweepPlotError& e) {
+    throw BadInput(e.what());
+  }
+  for (const std::string& n : data.notes)
+    std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
+  const std::string name = fs::path(db).stem().string() + "-sweep-" + opt.output + "-" + opt.x_axis;
+  fs::path png = out.empty() ? fs::path(db).parent_path() / name : fs::path(out);
+  if (png.extension() == ".png" || png.extension() == ".PNG")
+    png.replace_extension();
+  else if (!out.empty())
+    png /= name;
+  const std::string stem = png.string();
+  if (!png.parent_path().empty()) fs::create_directories(png.parent_path());
+  write_text(stem + ".csv", sweep_plot_csv(data));
+  const PrivateDisplay display;
+  render_png(sweep_plot_figure(data), stem + ".png");
+  std::printf("Wrote %s.png and %s.csv\n", stem.c_str(), stem.c_str());
+  return kOk;
+}
+
 // ---- pushover ---------------------------------------------------------------------------------
 
 // `out`: a .png file, or a directory to write pushover.png into (default: the pushover directory).
@@ -524,6 +559,22 @@ int main(int argc, char** argv) {
                     "output directory (default: the database's), or a .png file (the .csv beside "
                     "it)");
 
+  SweepPlotOptions so;
+  auto* sweep_plot = app.add_subcommand(
+      "sweep-plot", "a peak of a study against a swept axis, one curve per group (PNG, CSV)");
+  sweep_plot->add_option("study_db", db, "the study's SQLite database")->required();
+  sweep_plot->add_option("--x", so.x_axis, "the numeric swept axis along x (e.g. gap)")->required();
+  sweep_plot->add_option("--y", so.output, "an output (peak) column of the study")->required();
+  sweep_plot->add_option("--group", so.group_axis, "one curve per value of this axis");
+  sweep_plot->add_option("--where", where,
+                         "AXIS=VALUE: fixes an axis (repeatable; every other "
+                         "axis must be fixed, nothing is averaged)");
+  sweep_plot->add_option("--unit", so.unit, "display unit of the output (cm, g, kN, %, ...)");
+  sweep_plot->add_option("--x-unit", so.x_unit, "display unit of the x axis (cm, deg, ...)");
+  sweep_plot->add_option("-o,--output,--out", out,
+                         "output directory (default: the database's), or a .png file (the .csv "
+                         "beside it)");
+
   std::string pushover_dir;
   auto* pushover = app.add_subcommand(
       "pushover", "capacity curve of `isopound pushover` output (PNG), yield and capping marked");
@@ -543,6 +594,7 @@ int main(int argc, char** argv) {
     if (*plot) return run_plot(run_dir, out, model);
     if (*animate) return run_animate(run_dir, out, model, aa);
     if (*polar) return run_polar(db, po, where, out);
+    if (*sweep_plot) return run_sweep_plot(db, so, where, out);
     if (*pushover) return run_pushover(pushover_dir, out);
   } catch (const BadInput& e) {
     std::fprintf(stderr, "isopound-post: error: %s\n", e.what());
