@@ -79,7 +79,9 @@ Figure floor_spectra_figure(const FloorSpectra& f) {
     }
     panels.push_back(std::move(panel));
   }
-  const int columns = panels.size() < 3 ? static_cast<int>(panels.size()) : 3;
+  // Up to 3 panels side by side; 4 as 2 x 2; more in rows of 3.
+  const int columns =
+      panels.size() == 4 ? 2 : static_cast<int>(std::min<std::size_t>(panels.size(), 3));
   const int rows = static_cast<int>((panels.size() + columns - 1) / columns);
   char title[96];
   std::snprintf(title, sizeof title, "Floor response spectra, ξ = %g %% (history every %.4g s)",
