@@ -25,6 +25,12 @@ std::string seconds(double t) {
   return b;
 }
 
+std::string number(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", x);
+  return b;
+}
+
 // The largest interval <= limit that a user would type: 1, 2 or 5 times a power of ten.
 double round_down_125(double limit) {
   const double decade = std::pow(10.0, std::floor(std::log10(limit)));
@@ -46,7 +52,7 @@ std::vector<double> resolved_periods(const std::vector<double>& asked, double dt
     const double needed = round_down_125(shortest / o.samples_per_period);
     throw FloorSpectraError(
         "histories.csv is sampled every " + seconds(dt) + ", too coarse for the period " +
-        seconds(shortest) + ": the rule dt <= T/" + std::to_string(int(o.samples_per_period)) +
+        seconds(shortest) + ": the rule dt <= T/" + number(o.samples_per_period) +
         " allows T >= " + seconds(t_min) + ". Rerun with output.interval: " + seconds(needed) +
         " or less (0 = every record sample, when the record's dt is that small; analysis.dt too "
         "when the analysis interval is longer), or ask for periods >= " +
@@ -54,7 +60,7 @@ std::vector<double> resolved_periods(const std::vector<double>& asked, double dt
   }
   notes.push_back(std::to_string(dropped.size()) + " periods shorter than " + seconds(t_min) +
                   " dropped (history every " + seconds(dt) + ", dt <= T/" +
-                  std::to_string(int(o.samples_per_period)) + ")");
+                  number(o.samples_per_period) + ")");
   if (std::none_of(kept.begin(), kept.end(), [](double t) { return t > 0.0; }))
     throw FloorSpectraError("no period left after clipping: every period asked is shorter than " +
                             seconds(t_min) + "; rerun with a smaller output.interval");
