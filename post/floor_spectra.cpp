@@ -40,27 +40,33 @@ double round_down_125(double limit) {
 }
 
 // Keeps the periods the sampling resolves, or says why not (FloorSpectraError).
-std::vector<double> resolved_periods(const std::vector<double>& asked, double dt,
+std::vector<double> resolved_periods(const std::vector<double>& asked, const HistorySampling& h,
                                      const FloorSpectraOptions& o,
                                      std::vector<std::string>& notes) {
-  const double t_min = o.samples_per_period * dt;
+  const double dt = h.effective(), t_min = o.samples_per_period * dt;
   std::vector<double> kept, dropped;
   for (double t : asked) (t == 0.0 || t >= t_min * (1 - 1e-9) ? kept : dropped).push_back(t);
   if (dropped.empty()) return kept;
   const double shortest = *std::min_element(dropped.begin(), dropped.end());
+  // Which interval limits: the rows, or the solver's steps (rows inside a step are interpolated).
+  const bool steps = h.analysis_interval > h.row_interval;
+  const std::string sampled = steps ? "the solver's analysis interval is " + seconds(dt) +
+                                          " (rows every " + seconds(h.row_interval) +
+                                          " between its steps are interpolated)"
+                                    : "histories.csv has a row every " + seconds(dt);
   if (!o.clip_short_periods) {
-    const double needed = round_down_125(shortest / o.samples_per_period);
+    const std::string needed = seconds(round_down_125(shortest / o.samples_per_period));
     throw FloorSpectraError(
-        "histories.csv is sampled every " + seconds(dt) + ", too coarse for the period " +
-        seconds(shortest) + ": the rule dt <= T/" + number(o.samples_per_period) +
-        " allows T >= " + seconds(t_min) + ". Rerun with output.interval: " + seconds(needed) +
-        " or less (0 = every record sample, when the record's dt is that small; analysis.dt too "
-        "when the analysis interval is longer), or ask for periods >= " +
+        sampled + ", too coarse for the period " + seconds(shortest) + ": the rule dt <= T/" +
+        number(o.samples_per_period) + " allows T >= " + seconds(t_min) + ". Rerun with " +
+        (steps ? "analysis.dt: " + needed + " and " : std::string()) +
+        "output.interval: " + needed +
+        " or less (output.interval 0 = every record sample, when the record's dt is that "
+        "small), or ask for periods >= " +
         seconds(t_min) + " (--periods), or drop the short ones with --short-periods clip");
   }
   notes.push_back(std::to_string(dropped.size()) + " periods shorter than " + seconds(t_min) +
-                  " dropped (history every " + seconds(dt) + ", dt <= T/" +
-                  number(o.samples_per_period) + ")");
+                  " dropped: " + sampled + ", rule dt <= T/" + number(o.samples_per_period));
   if (std::none_of(kept.begin(), kept.end(), [](double t) { return t > 0.0; }))
     throw FloorSpectraError("no period left after clipping: every period asked is shorter than " +
                             seconds(t_min) + "; rerun with a smaller output.interval");
@@ -174,7 +180,7 @@ FloorSpectra floor_spectra(const RunData& run, const FloorSpectraOptions& option
   out.sampling = history_sampling(run);
   const double dt = out.sampling.row_interval;
   out.periods = resolved_periods(options.periods.empty() ? default_periods() : options.periods,
-                                 out.sampling.effective(), options, out.notes);
+                                 out.sampling, options, out.notes);
   const SpectrumOptions& o = options.spectrum;
 
   const int gx = run.find("", "ground_acceleration");

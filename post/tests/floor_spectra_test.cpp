@@ -227,6 +227,29 @@ TEST(PostFloorSpectra, CoarseHistoryIsRefusedOrClipped) {
   std::filesystem::remove_all(dir);
 }
 
+// (c') Rows every 1 ms from fixed 5 ms steps: the rows inside a step are interpolated, so the
+// solver's analysis interval (5 ms) sets the rule (T >= 0.05 s): 0.02 s is refused, naming
+// analysis.dt, though the rows alone would allow T >= 0.01 s.
+TEST(PostFloorSpectra, RowsDenserThanTheStepsDoNotRelaxTheRule) {
+  const auto dir = test::scratch_dir("floor-steps");
+  const auto run_dir = solve(
+      dir, building_2d("600 MN/m",
+                       "  pulse: {amplitude: 1.0 m/s, period: 2 s, t_peak: 3 s, duration: 6 s, "
+                       "dt: 0.005 s}\n",
+                       "{interval: 0.001 s}\nanalysis: {stepping: fixed, dt: 0.005 s}"));
+  const RunData run = read_run(run_dir);
+  const HistorySampling h = history_sampling(run);
+  EXPECT_DOUBLE_EQ(h.row_interval, 0.001);
+  EXPECT_DOUBLE_EQ(h.effective(), 0.005);
+  const auto refused = test::run_post("floor-spectra " + run_dir.string() + " --periods 0,0.02,1");
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("analysis.dt"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("output.interval"), std::string::npos) << refused.output;
+  const auto ok = test::run_post("floor-spectra " + run_dir.string() + " --periods 0,0.05,1");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  std::filesystem::remove_all(dir);
+}
+
 // (d) 3D: a symmetric building under a pair at angle 0 does not rotate, so every plan corner
 // has the centre of mass's spectra (to round-off: the corner's acceleration differs by
 // |p| a_theta); RotD100 >= max(x, y) (theta = 0 and 90 deg are among the 180 angles; cos 90 deg
