@@ -15,10 +15,12 @@
 
 #include "post/animation.h"
 #include "post/animation3d.h"
+#include "post/floor_spectra.h"
 #include "post/frame_timeline.h"
 #include "post/headless.h"
 #include "post/paraview_run.h"
 #include "post/paraview_view.h"
+#include "post/plot_floor_spectra.h"
 #include "post/plot_pushover.h"
 #include "post/plot_run.h"
 #include "post/polar_study.h"
@@ -475,6 +477,53 @@ int run_pushover(const std::string& dir, const std::string& out) {
   return kOk;
 }
 
+// ---- floor spectra ----------------------------------------------------------------------------
+
+struct FloorSpectraArgs {
+  std::string dir, out, model;
+  double damping = 5.0;  // %
+  std::vector<double> periods;
+  double samples_per_period = 10.0;
+  std::string short_periods = "refuse";  // refuse | clip
+  int oversample = 1;
+};
+
+// Spectra of every level's absolute acceleration (docs/floor-spectra.md); `out` a directory
+// (default: the run directory).
+int run_floor_spectra(const FloorSpectraArgs& a) {
+  if (!(a.damping >= 0.0 && a.damping < 100.0)) throw BadInput("--damping: must be in [0, 100) %");
+  if (a.oversample < 1) throw BadInput("--oversample: must be >= 1");
+  if (a.short_periods != "refuse" && a.short_periods != "clip")
+    throw BadInput("--short-periods: '" + a.short_periods + "' is not refuse or clip");
+  const RunData run = load_run(a.dir, a.model);
+  FloorSpectraOptions opt;
+  opt.periods = a.periods;
+  opt.spectrum.damping = a.damping / 100.0;
+  opt.spectrum.oversample = a.oversample;
+  opt.samples_per_period = a.samples_per_period;
+  opt.clip_short_periods = a.short_periods == "clip";
+  FloorSpectra f;
+  try {
+    f = floor_spectra(run, opt);
+  } catch (const FloorSpectraError& e) {
+    throw BadInput(e.what());
+  } catch (const std::invalid_argument& e) {
+    throw BadInput(e.what());
+  }
+  for (const std::string& n : f.notes) std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
+  const fs::path out_dir = a.out.empty() ? fs::path(a.dir) : fs::path(a.out);
+  fs::create_directories(out_dir);
+  write_text(out_dir / "floor-spectra.csv", floor_spectra_csv(f));
+  write_text(out_dir / "floor-spectra-places.csv", floor_spectra_places_csv(f));
+  const PrivateDisplay display;
+  render_png(floor_spectra_figure(f), (out_dir / "floor-spectra.png").string());
+  std::printf(
+      "Wrote %s/floor-spectra.csv, floor-spectra-places.csv and floor-spectra.png (%zu "
+      "places, %zu periods, history every %.4g s)\n",
+      out_dir.string().c_str(), f.places.size(), f.periods.size(), f.sampling.row_interval);
+  return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -584,6 +633,24 @@ int main(int argc, char** argv) {
   pushover->add_option("-o,--output,--out", out,
                        "a .png file, or a directory for pushover.png (default: PUSHOVER_DIR)");
 
+  FloorSpectraArgs fa;
+  auto* floor = app.add_subcommand(
+      "floor-spectra", "PSA and SD spectra of every level's absolute acceleration (CSV, PNG)");
+  floor->add_option("run_dir", fa.dir, "directory with histories.csv and summary.json")->required();
+  floor->add_option("--damping", fa.damping, "damping ratio in % (default 5)");
+  floor
+      ->add_option("--periods", fa.periods,
+                   "periods in s, e.g. 0,0.05,0.1,0.2 (default: spectra's)")
+      ->delimiter(',');
+  floor->add_option("--samples-per-period", fa.samples_per_period,
+                    "sampling rule: history interval <= T / this (default 10)");
+  floor->add_option("--short-periods", fa.short_periods,
+                    "periods the history is too coarse for: refuse (exit 2, default) | clip");
+  floor->add_option("--oversample", fa.oversample,
+                    "sub-steps per history row for the peak (exact either way; default 1)");
+  floor->add_option("-o,--output,--out", fa.out, "output directory (default: the run directory)");
+  floor->add_option("--model", fa.model, "model file (default: the one named in summary.json)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -596,6 +663,7 @@ int main(int argc, char** argv) {
     if (*polar) return run_polar(db, po, where, out);
     if (*sweep_plot) return run_sweep_plot(db, so, where, out);
     if (*pushover) return run_pushover(pushover_dir, out);
+    if (*floor) return run_floor_spectra(fa);
   } catch (const BadInput& e) {
     std::fprintf(stderr, "isopound-post: error: %s\n", e.what());
     return kBadInput;
