@@ -50,8 +50,9 @@ def threshold(source, name, low, high):
 
 def build(view):
     reader = PVDReader(registrationName="isopound animation", FileName=animation_file())
+    # One frame per time step of the .pvd. (Not UpdateAnimationUsingDataTimeSteps(): in the
+    # ParaView 5.11 GUI it blocks a --script; the time keeper has the reader's steps anyway.)
     scene = GetAnimationScene()
-    scene.UpdateAnimationUsingDataTimeSteps()
     scene.PlayMode = "Snap To TimeSteps"
 
     # The overlap of two bodies is under a millimetre deep: stretch it along the contact normal.
