@@ -64,6 +64,13 @@ void range_of(const Panel& panel, double& x_lo, double& x_hi, double& y_lo, doub
       y_lo = std::min(y_lo, s.y[i]);
       y_hi = std::max(y_hi, s.y[i]);
     }
+  for (const Mark& m : panel.marks) {
+    if (!std::isfinite(m.x) || !std::isfinite(m.y)) continue;
+    x_lo = std::min(x_lo, m.x);
+    x_hi = std::max(x_hi, m.x);
+    y_lo = std::min(y_lo, m.y);
+    y_hi = std::max(y_hi, m.y);
+  }
   if (!(x_lo <= x_hi)) x_lo = 0, x_hi = 1;
   if (!(y_lo <= y_hi)) y_lo = 0, y_hi = 1;
   if (panel.symmetric_y) {
@@ -177,6 +184,20 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
     ++index;
   }
   drawn.line_end = fig.lines.size();
+  for (const Mark& m : panel.marks) {
+    if (!std::isfinite(m.x) || !std::isfinite(m.y)) continue;
+    const Point2 p = frame.to_pixel(m.x, m.y);
+    fig.markers.push_back(
+        {marker_outline(MarkerShape::kDiamond, p, m.size), m.colour, kBlack, 1.0});
+    // Beside the marker, on the side with room (about 6.5 px per character at 11 pt).
+    const bool left = p.x + 10 + 6.5 * static_cast<double>(m.text.size()) > R;
+    fig.texts.push_back({{left ? p.x - m.size : p.x + m.size, p.y},
+                         m.text,
+                         11,
+                         kBlack,
+                         left ? HAlign::kRight : HAlign::kLeft,
+                         VAlign::kCentre});
+  }
   fig.lines.push_back({{{L, B}, {R, B}, {R, T}, {L, T}, {L, B}}, kFrame, 1.0});
   fig.texts.push_back(
       {{(L + R) / 2, y0 + 4}, panel.x_title, 12, kBlack, HAlign::kCentre, VAlign::kBottom});

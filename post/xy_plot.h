@@ -52,6 +52,15 @@ std::vector<double> scaled(const std::vector<double>& v, double divisor);
 // The largest |value| of v (0 for an empty series).
 double peak_of(const std::vector<double>& v);
 
+// A point marked on a panel with its own text beside it, e.g. a curve's true peak taken from
+// elsewhere than the drawn samples: a diamond of `colour` (black outline) and the text in black.
+struct Mark {
+  double x = 0.0, y = 0.0;  // data units of the panel
+  std::string text;         // drawn right of the marker (left of it near the right edge)
+  Rgb colour{0, 0, 0};
+  double size = 11.0;  // px across
+};
+
 struct Panel {
   std::string title;
   std::string x_title, y_title;  // with units, e.g. "time [s]"
@@ -63,6 +72,7 @@ struct Panel {
   // Where the legend goes: top right, bottom right, or whichever of the two the data cross less.
   enum class LegendAt { kTopRight, kBottomRight, kBest };
   LegendAt legend_at = LegendAt::kTopRight;
+  std::vector<Mark> marks{};  // inside the data range; drawn above the series
 };
 
 // Where a panel's data lands on the figure (for tests and overlays).
