@@ -27,6 +27,11 @@ Figure spectra_figure(const std::vector<Spectrum>& spectra, const SpectrumStatis
            true,
            false,
            true};
+  // Log-log, as spectra of a set are read (T = 0, the PGA, and SD(0) = 0 are not on it).
+  for (Panel* p : {&psa, &sd}) {
+    p->log_x = p->log_y = true;
+    p->legend_at = Panel::LegendAt::kBest;
+  }
   const auto add = [&](const std::string& label, const std::vector<double>& period,
                        const std::vector<double>& p, const std::vector<double>& d,
                        std::optional<Rgb> c, double w) {

@@ -1,6 +1,7 @@
 // The figure of `isopound-post spectra`: PSA [g] and SD [cm] against period, one curve per record
 // (each named in the legend), for a set the log-space median exp(mean ln) and the band
-// exp(mean ln ± σ_ln) (spectra.h), and RotD50/RotD100 of horizontal pairs.
+// exp(mean ln ± σ_ln) (spectra.h), and RotD50/RotD100 of horizontal pairs. Log-log axes: the
+// zero period (PGA) is in spectra.csv only.
 #pragma once
 
 #include <string>
