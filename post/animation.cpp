@@ -20,6 +20,7 @@ class FrameBuilder {
     mesh_.points.push_back({x, 0.0, z});
     displacement_.insert(displacement_.end(), {u, 0.0, 0.0});
     acceleration_.insert(acceleration_.end(), {a, 0.0, 0.0});
+    depth_offset_.insert(depth_offset_.end(), {0.0, 0.0, 0.0});
     return static_cast<int>(mesh_.points.size()) - 1;
   }
   void cell(int type, std::vector<int> pts, Block block, double drift = 0.0, double bearing = 0.0,
@@ -30,6 +31,7 @@ class FrameBuilder {
     bearing_.push_back(bearing);
     contact_.insert(contact_.end(), {contact_fx, 0.0, 0.0});
     penetration_.push_back(penetration);
+    normal_.push_back(std::abs(contact_fx));  // 2D contacts are normal only
   }
   // An axis-aligned rectangle in x-z as a quad.
   void rect(double x0, double x1, double z0, double z1, double u, double a, Block block,
@@ -37,22 +39,27 @@ class FrameBuilder {
     const int p0 = point(x0, z0, u, a), p1 = point(x1, z0, u, a), p2 = point(x1, z1, u, a),
               p3 = point(x0, z1, u, a);
     cell(9, {p0, p1, p2, p3}, block, 0.0, 0.0, contact_fx, penetration);
+    if (block == Block::kContact)  // the overlap's depth runs along x, about its middle
+      for (const int p : {p0, p1, p2, p3})
+        depth_offset_[3 * p] = mesh_.points[p][0] - 0.5 * (x0 + x1);
   }
   FrameMesh finish() {
     mesh_.point_data = {{"displacement", 3, std::move(displacement_)},
-                        {"absolute_acceleration", 3, std::move(acceleration_)}};
+                        {"absolute_acceleration", 3, std::move(acceleration_)},
+                        {"contact_depth_offset", 3, std::move(depth_offset_)}};
     mesh_.cell_data = {{"block", 1, std::move(block_)},
                        {"drift_ratio", 1, std::move(drift_)},
                        {"bearing_force", 1, std::move(bearing_)},
                        {"contact_force", 3, std::move(contact_)},
-                       {"penetration", 1, std::move(penetration_)}};
+                       {"penetration", 1, std::move(penetration_)},
+                       {"normal_force", 1, std::move(normal_)}};
     return std::move(mesh_);
   }
 
  private:
   FrameMesh mesh_;
-  std::vector<double> displacement_, acceleration_, block_, drift_, bearing_, contact_,
-      penetration_;
+  std::vector<double> displacement_, acceleration_, depth_offset_, block_, drift_, bearing_,
+      contact_, penetration_, normal_;
 };
 
 // Drawn x of a structure's centre line at rest.
@@ -73,19 +80,6 @@ const Level* level_named(const Structure& s, const std::string& level) {
 }
 
 }  // namespace
-
-std::vector<double> frame_times(const RunData& run, double fps, double start, double end) {
-  std::vector<double> times;
-  const double t0 = std::max(run.time().front(), start);
-  const double t1 = end < 0.0 ? run.time().back() : std::min(end, run.time().back());
-  // Frame k at t0 + k/fps (integer k, no accumulated sum), up to t1 within round-off.
-  for (long k = 0;; ++k) {
-    const double t = t0 + static_cast<double>(k) / fps;
-    if (t > t1 + 1e-9 * (1.0 + std::abs(t1))) break;
-    times.push_back(std::min(t, t1));
-  }
-  return times;
-}
 
 FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& o) {
   if (run.three_d) return animation_frame3d(run, t, o);

@@ -46,29 +46,26 @@ struct FrameMesh {
   std::vector<MeshCell> cells;
   std::vector<MeshArray> point_data;  // one value set per point
   std::vector<MeshArray> cell_data;   // one value set per cell
+  std::vector<MeshArray> field_data;  // whole-frame values (the writer adds TimeValue)
 };
 
 struct AnimationOptions {
   double scale = 1.0;           // displacement magnification
-  double fps = 25.0;            // frames per second of analysis time
-  double start = 0.0;           // s, first frame (clamped to the run)
-  double end = -1.0;            // s, last frame at or before it; < 0: the end of the run
   double slab_width = 12.0;     // m, drawn width of a floor slab
   double slab_thickness = 0.4;  // m
   double force_length = 3.0;    // m, 3D: drawn length of the largest contact force of the run
 };
 
-// Frame times: start, start + 1/fps, start + 2/fps, ... up to `end` or the last history row
-// (never beyond it).
-std::vector<double> frame_times(const RunData& run, double fps, double start = 0.0,
-                                double end = -1.0);
-
 // The frame at time t (histories interpolated linearly between rows); a 3D run's frame is
 // animation_frame3d's (animation3d.h). 2D arrays:
-//   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s^2)
+//   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s^2),
+//               contact_depth_offset (3, m: see below)
 //   cell data:  block, drift_ratio (columns), bearing_force (bearings, N), contact_force (3, N,
-//               on the body, contacts), penetration (contacts, m)
+//               on the body, contacts), penetration (contacts, m), normal_force (N, |F|)
 // Contact cells exist only in frames where that contact's force or penetration is > 0.
+// contact_depth_offset of a contact cell's point is its offset from the overlap's middle along
+// the contact normal (zero elsewhere): a viewer that moves every point by (X − 1) × this draws
+// the overlap X times deeper and nothing else changes (view.py's exaggeration).
 FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& options);
 
 // A picture of one frame (x-z view, equal axes, coloured by block, with the time and the scale):

@@ -29,10 +29,11 @@ class Builder3D {
  public:
   explicit Builder3D(double t) { mesh_.time = t; }
 
-  int point(P3 x, P3 displacement, P3 acceleration) {
+  int point(P3 x, P3 displacement, P3 acceleration, P3 depth_offset = {}) {
     mesh_.points.push_back(x);
     displacement_.insert(displacement_.end(), displacement.begin(), displacement.end());
     acceleration_.insert(acceleration_.end(), acceleration.begin(), acceleration.end());
+    depth_offset_.insert(depth_offset_.end(), depth_offset.begin(), depth_offset.end());
     return static_cast<int>(mesh_.points.size()) - 1;
   }
   void cell(int type, std::vector<int> points, const CellValues& v) {
@@ -49,7 +50,8 @@ class Builder3D {
   }
   FrameMesh finish() {
     mesh_.point_data = {{"displacement", 3, std::move(displacement_)},
-                        {"absolute_acceleration", 3, std::move(acceleration_)}};
+                        {"absolute_acceleration", 3, std::move(acceleration_)},
+                        {"contact_depth_offset", 3, std::move(depth_offset_)}};
     mesh_.cell_data = {{"block", 1, std::move(block_)},
                        {"structure", 1, std::move(structure_)},
                        {"drift_ratio", 1, std::move(drift_)},
@@ -64,8 +66,8 @@ class Builder3D {
 
  private:
   FrameMesh mesh_;
-  std::vector<double> displacement_, acceleration_, block_, structure_, drift_, bearing_, contact_,
-      normal_, tangential_, area_, penetration_;
+  std::vector<double> displacement_, acceleration_, depth_offset_, block_, structure_, drift_,
+      bearing_, contact_, normal_, tangential_, area_, penetration_;
 };
 
 // A body's DOFs at time t (zero for walls and other fixed bodies).
@@ -183,17 +185,19 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     v.penetration = e->indentation;
     // A point q of the overlap (true coordinates) is drawn where A's drawing puts it.
     const double z = run.site.bodies[ia].elevation + 0.02;  // just above A's top
-    const auto on_a = [&](Vec2 q) {
+    const auto on_a = [&](Vec2 q, bool overlap = false) {
       const Vec2 d = A.displacement(q), acc = A.acceleration(q);
+      // An overlap vertex's offset from the centroid along n (see animation.h).
+      const double along_n = overlap ? (q.x - e->x_C) * n.x + (q.y - e->y_C) * n.y : 0.0;
       return f.point({q.x + (S - 1.0) * d.x, q.y + (S - 1.0) * d.y, z}, {d.x, d.y, 0.0},
-                     {acc.x, acc.y, 0.0});
+                     {acc.x, acc.y, 0.0}, {along_n * n.x, along_n * n.y, 0.0});
     };
     const ConvexPolygon pa = run.site.bodies[ia].polygon().placed({A.u, A.v, A.theta});
     const ConvexPolygon pb = run.site.bodies[ib].polygon().placed({B.u, B.v, B.theta});
     const Overlap ov = overlap_of(pa, pb);
     if (ov.area > 0.0 && ov.vertex_count >= 3) {
       std::vector<int> ids;
-      for (int k = 0; k < ov.vertex_count; ++k) ids.push_back(on_a(ov.vertices[k]));
+      for (int k = 0; k < ov.vertex_count; ++k) ids.push_back(on_a(ov.vertices[k], true));
       f.cell(7, ids, v);
     } else {
       f.cell(1, {on_a({e->x_C, e->y_C})}, v);

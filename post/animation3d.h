@@ -13,7 +13,9 @@ namespace isopound::post {
 // coordinates: x, y plan (W), z up; a slab occupies [elevation − thickness, elevation], a wall
 // (the solver's site puts its base at 0) [−height, 0]: its top flush with the ground, the base
 // slab's level, as a moat wall retaining the soil around the isolation level.
-//   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s2)
+//   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s2),
+//               contact_depth_offset (3, m: overlap vertices' offset from the logged centroid
+//               along n_AB, see animation.h)
 //   cell data:  block (Block), structure (index in run.structures, -1 walls), drift_ratio
 //               (columns: |relative displacement of the column's ends| / storey height),
 //               bearing_force (bearings: resultant, N), contact_force (3, N, the force on B of

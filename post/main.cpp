@@ -4,16 +4,23 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <regex>
 
 #include "post/animation.h"
 #include "post/animation3d.h"
+#include "post/floor_spectra.h"
+#include "post/frame_timeline.h"
 #include "post/headless.h"
+#include "post/paraview_run.h"
+#include "post/paraview_view.h"
+#include "post/plot_floor_spectra.h"
 #include "post/plot_pushover.h"
 #include "post/plot_run.h"
 #include "post/plot_spectra.h"
@@ -22,6 +29,8 @@
 #include "post/render_png.h"
 #include "post/run_data.h"
 #include "post/spectra.h"
+#include "post/sweep_plot.h"
+#include "post/sweep_plot_figure.h"
 #include "post/vtu_writer.h"
 #include "post/xy_plot.h"
 #include "solver/core/constants.h"
@@ -202,44 +211,134 @@ int run_plot(const std::string& dir, const std::string& out, const std::string& 
   return kOk;
 }
 
+// Frames an earlier `animate` wrote into this directory: the files its animation.pvd lists that
+// are named as isopound names frames (a user's own files are never touched).
+void remove_old_frames(const fs::path& out_dir) {
+  std::ifstream pvd(out_dir / "animation.pvd");
+  const std::regex listed(R"re(file="(frame_[0-9]{6}\.vtu)")re");
+  std::string line;
+  std::smatch m;
+  while (std::getline(pvd, line))
+    if (std::regex_search(line, m, listed)) fs::remove(out_dir / m[1].str());
+}
+
+// --render: the animation through view.py in pvpython, headless: `png` (every frame as
+// OUT/png/frame.NNNN.png), `video` (OUT/animation.avi) or a .avi / .ogv / .png path.
+void render_with_paraview(const fs::path& out_dir, const std::string& render) {
+  std::vector<std::string> args;
+  fs::path target;
+  const std::string ext = fs::path(render).extension().string();
+  if (render == "png" || ext == ".png") {
+    target = render == "png" ? out_dir / "png" : fs::path(render).parent_path();
+    args = {"--png", target.string()};
+  } else if (render == "video" || ext == ".avi" || ext == ".ogv") {
+    target = render == "video" ? out_dir / "animation.avi" : fs::path(render);
+    args = {"--video", target.string()};
+  } else {
+    throw BadInput("--render '" + render + "': write png, video, or a .png, .avi or .ogv path");
+  }
+  if (!target.parent_path().empty()) fs::create_directories(target.parent_path());
+  std::fflush(stdout);
+  const PrivateDisplay display;
+  try {
+    run_pvpython(out_dir / "view.py", args);
+  } catch (const ParaViewError& e) {
+    throw std::runtime_error(std::string("--render: ") + e.what());
+  }
+  std::printf("Rendered with ParaView into %s\n", target.string().c_str());
+}
+
+struct AnimateArgs {
+  AnimationOptions frame;
+  TimelineOptions timeline;
+  double preview = -1.0;    // s, < 0: none
+  double exaggeration = 0;  // overlap depth drawn × this in view.py; 0: automatic
+  std::string render;       // "", png or a video file
+};
+
 int run_animate(const std::string& dir, const std::string& out, const std::string& model,
-                const AnimationOptions& opt, double preview) {
+                const AnimateArgs& a) {
+  const AnimationOptions& opt = a.frame;
+  const TimelineOptions& tl = a.timeline;
   if (!(opt.scale > 0.0) || !std::isfinite(opt.scale)) throw BadInput("--scale: must be > 0");
-  if (!(opt.fps > 0.0) || !std::isfinite(opt.fps)) throw BadInput("--fps: must be > 0");
+  if (!(tl.fps > 0.0) || !std::isfinite(tl.fps)) throw BadInput("--fps: must be > 0");
   if (!(opt.force_length > 0.0) || !std::isfinite(opt.force_length))
     throw BadInput("--force-length: must be > 0");
+  if (tl.frames_per_episode < kMinFramesPerEpisode)
+    throw BadInput("--impact-frames: must be >= " + std::to_string(kMinFramesPerEpisode));
+  if (tl.max_frames < 2) throw BadInput("--max-frames: must be >= 2");
+  if (a.exaggeration < 0.0 || (a.exaggeration > 0.0 && a.exaggeration < 1.0) ||
+      !std::isfinite(a.exaggeration))
+    throw BadInput("--exaggerate: must be >= 1 (0: automatic)");
   const RunData run = load_run(dir, model);
   const fs::path out_dir = out.empty() ? fs::path(dir) / "animation" : fs::path(out);
   fs::create_directories(out_dir);
-  if (preview > run.time().back())
-    throw BadInput("--preview " + std::to_string(preview) + " s: after the end of the run (" +
+  if (a.preview > run.time().back())
+    throw BadInput("--preview " + std::to_string(a.preview) + " s: after the end of the run (" +
                    std::to_string(run.time().back()) + " s)");
-  if (opt.start < 0.0 || (opt.end >= 0.0 && opt.end < opt.start) || opt.start > run.time().back())
+  if (tl.start < 0.0 || (tl.end >= 0.0 && tl.end < tl.start) || tl.start > run.time().back())
     throw BadInput("--start/--end: need 0 <= start <= end, start before the end of the run (" +
                    std::to_string(run.time().back()) + " s)");
-  const std::vector<double> times = frame_times(run, opt.fps, opt.start, opt.end);
+  Timeline line;
+  try {
+    line = frame_timeline(run, tl);
+  } catch (const TimelineError& e) {
+    throw BadInput(e.what());
+  }
+  remove_old_frames(out_dir);
   std::vector<std::string> files;
   std::fflush(stdout);
-  Progress progress("frames", times.size());
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  Progress progress("frames", line.times.size());
+  double extent = 0.0;  // the drawing's size, for the automatic exaggeration
+  for (std::size_t k = 0; k < line.times.size(); ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%06zu.vtu", k);
-    write_vtu(animation_frame(run, times[k], opt), (out_dir / name).string());
+    FrameMesh frame = animation_frame(run, line.times[k], opt);
+    frame.field_data.push_back({"slow_motion", 1, {line.slow_motion[k]}});
+    if (k == 0) {
+      std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+      for (const auto& p : frame.points)
+        for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
+      for (int i = 0; i < 3; ++i) extent = std::max(extent, hi[i] - lo[i]);
+    }
+    write_vtu(frame, (out_dir / name).string());
     files.push_back(name);
     progress.tick(k + 1);
   }
-  write_text(out_dir / "animation.pvd", pvd_text(times, files));
-  std::printf("Wrote %s/animation.pvd and %zu frames (%.4g s to %.4g s at %g frames/s, scale %g)\n",
-              out_dir.string().c_str(), files.size(), times.front(), times.back(), opt.fps,
-              opt.scale);
-  if (preview >= 0.0) {
+  write_text(out_dir / "animation.pvd", pvd_text(line.times, files));
+
+  ViewScriptOptions view;
+  view.absolute_dir = fs::absolute(out_dir).lexically_normal().string();
+  view.three_d = run.three_d;
+  view.scale = opt.scale;
+  view.fps = tl.fps;
+  view.force_length = opt.force_length;
+  view.peaks = contact_peaks(run);
+  // 2D frames draw gaps and overlaps × scale; 3D overlaps are drawn true.
+  view.exaggeration = a.exaggeration > 0.0 ? a.exaggeration
+                                           : automatic_exaggeration(
+                                                 view.peaks, run.three_d ? 1.0 : opt.scale, extent);
+  write_text(out_dir / "view.py", view_script(view));
+
+  std::printf("Wrote %s/animation.pvd and %zu frames (%.4g s to %.4g s, %g frames/s",
+              out_dir.string().c_str(), files.size(), line.times.front(), line.times.back(),
+              tl.fps);
+  if (tl.uniform)
+    std::printf(", uniform");
+  else
+    std::printf("; %zu contact episodes, %d frames each", line.episodes, line.frames_per_episode);
+  std::printf("; scale %g)\n", opt.scale);
+  std::printf("Wrote %s/view.py: open it with  paraview --script=%s/view.py\n",
+              out_dir.string().c_str(), out_dir.string().c_str());
+  if (a.preview >= 0.0) {
     std::fflush(stdout);
     const PrivateDisplay display;
-    const FrameMesh frame = animation_frame(run, preview, opt);
+    const FrameMesh frame = animation_frame(run, a.preview, opt);
     render_png(run.three_d ? frame_figure3d(frame, opt.scale) : frame_figure(frame, opt.scale),
                (out_dir / "preview.png").string());
-    std::printf("Wrote %s/preview.png (t = %g s)\n", out_dir.string().c_str(), preview);
+    std::printf("Wrote %s/preview.png (t = %g s)\n", out_dir.string().c_str(), a.preview);
   }
+  if (!a.render.empty()) render_with_paraview(out_dir, a.render);
   return kOk;
 }
 
@@ -280,6 +379,39 @@ int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<st
   return kOk;
 }
 
+// ---- sweep-plot -------------------------------------------------------------------------------
+
+// A peak against a swept axis; -o as for polar: a directory (default: the database's) or a .png.
+int run_sweep_plot(const std::string& db, SweepPlotOptions opt,
+                   const std::vector<std::string>& where, const std::string& out) {
+  for (const std::string& w : where) {
+    const auto eq = w.find('=');
+    if (eq == std::string::npos || eq == 0) throw BadInput("--where '" + w + "': write AXIS=VALUE");
+    opt.where.push_back({w.substr(0, eq), w.substr(eq + 1)});
+  }
+  SweepPlotData data;
+  try {
+    data = read_sweep_plot(db, opt);
+  } catch (const SweepPlotError& e) {
+    throw BadInput(e.what());
+  }
+  for (const std::string& n : data.notes)
+    std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
+  const std::string name = fs::path(db).stem().string() + "-sweep-" + opt.output + "-" + opt.x_axis;
+  fs::path png = out.empty() ? fs::path(db).parent_path() / name : fs::path(out);
+  if (png.extension() == ".png" || png.extension() == ".PNG")
+    png.replace_extension();
+  else if (!out.empty())
+    png /= name;
+  const std::string stem = png.string();
+  if (!png.parent_path().empty()) fs::create_directories(png.parent_path());
+  write_text(stem + ".csv", sweep_plot_csv(data));
+  const PrivateDisplay display;
+  render_png(sweep_plot_figure(data), stem + ".png");
+  std::printf("Wrote %s.png and %s.csv\n", stem.c_str(), stem.c_str());
+  return kOk;
+}
+
 // ---- pushover ---------------------------------------------------------------------------------
 
 // `out`: a .png file, or a directory to write pushover.png into (default: the pushover directory).
@@ -296,6 +428,53 @@ int run_pushover(const std::string& dir, const std::string& out) {
   const PrivateDisplay display;
   render_png(pushover_figure(data), png.string());
   std::printf("Wrote %s\n", png.string().c_str());
+  return kOk;
+}
+
+// ---- floor spectra ----------------------------------------------------------------------------
+
+struct FloorSpectraArgs {
+  std::string dir, out, model;
+  double damping = 5.0;  // %
+  std::vector<double> periods;
+  double samples_per_period = 10.0;
+  std::string short_periods = "refuse";  // refuse | clip
+  int oversample = 1;
+};
+
+// Spectra of every level's absolute acceleration (docs/floor-spectra.md); `out` a directory
+// (default: the run directory).
+int run_floor_spectra(const FloorSpectraArgs& a) {
+  if (!(a.damping >= 0.0 && a.damping < 100.0)) throw BadInput("--damping: must be in [0, 100) %");
+  if (a.oversample < 1) throw BadInput("--oversample: must be >= 1");
+  if (a.short_periods != "refuse" && a.short_periods != "clip")
+    throw BadInput("--short-periods: '" + a.short_periods + "' is not refuse or clip");
+  const RunData run = load_run(a.dir, a.model);
+  FloorSpectraOptions opt;
+  opt.periods = a.periods;
+  opt.spectrum.damping = a.damping / 100.0;
+  opt.spectrum.oversample = a.oversample;
+  opt.samples_per_period = a.samples_per_period;
+  opt.clip_short_periods = a.short_periods == "clip";
+  FloorSpectra f;
+  try {
+    f = floor_spectra(run, opt);
+  } catch (const FloorSpectraError& e) {
+    throw BadInput(e.what());
+  } catch (const std::invalid_argument& e) {
+    throw BadInput(e.what());
+  }
+  for (const std::string& n : f.notes) std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
+  const fs::path out_dir = a.out.empty() ? fs::path(a.dir) : fs::path(a.out);
+  fs::create_directories(out_dir);
+  write_text(out_dir / "floor-spectra.csv", floor_spectra_csv(f));
+  write_text(out_dir / "floor-spectra-places.csv", floor_spectra_places_csv(f));
+  const PrivateDisplay display;
+  render_png(floor_spectra_figure(f), (out_dir / "floor-spectra.png").string());
+  std::printf(
+      "Wrote %s/floor-spectra.csv, floor-spectra-places.csv and floor-spectra.png (%zu "
+      "places, %zu periods, history every %.4g s)\n",
+      out_dir.string().c_str(), f.places.size(), f.periods.size(), f.sampling.row_interval);
   return kOk;
 }
 
@@ -329,26 +508,43 @@ int main(int argc, char** argv) {
   plot->add_option("-o,--output,--out", out, "output directory (default: the run directory)");
   plot->add_option("--model", model, "model file (default: the one named in summary.json)");
 
-  AnimationOptions ao;
-  double preview = -1.0;
-  auto* animate = app.add_subcommand("animate", "ParaView animation of a run (.pvd + .vtu frames)");
+  AnimateArgs aa;
+  auto* animate = app.add_subcommand(
+      "animate", "ParaView animation of a run (.pvd + .vtu frames + view.py), slowed at impacts");
   animate->add_option("run_dir", run_dir, "directory with histories.csv and summary.json")
       ->required();
-  animate->add_option("--scale", ao.scale, "displacement magnification (default 1)");
-  animate->add_option("--fps", ao.fps, "frames per second of analysis time (default 25)");
+  animate->add_option("--scale", aa.frame.scale, "displacement magnification (default 1)");
+  animate->add_option("--fps", aa.timeline.fps,
+                      "regular frames per second of analysis time (default 25)");
+  animate->add_flag("--uniform", aa.timeline.uniform,
+                    "only the regular frames (no extra frames inside contact episodes)");
+  animate->add_option("--impact-frames", aa.timeline.frames_per_episode,
+                      "frames inside each contact episode, start and end included (default 12, "
+                      "at least 8)");
+  animate->add_option("--max-frames", aa.timeline.max_frames,
+                      "frame budget of the whole animation (default 1500)");
   animate->add_option("-o,--output,--out", out, "output directory (default: RUN_DIR/animation)");
-  animate->add_option("--start", ao.start, "time of the first frame, e.g. '2 s' (default 0)")
+  animate
+      ->add_option("--start", aa.timeline.start, "time of the first frame, e.g. '2 s' (default 0)")
       ->transform(quantity_of(dim::kTime, false));
   animate
-      ->add_option("--end", ao.end, "time of the last frame, e.g. '8 s' (default: end of the run)")
+      ->add_option("--end", aa.timeline.end,
+                   "time of the last frame, e.g. '8 s' (default: end of the run)")
       ->transform(quantity_of(dim::kTime, false));
-  animate->add_option("--preview", preview, "also write preview.png of the frame at this time (s)")
+  animate
+      ->add_option("--preview", aa.preview, "also write preview.png of the frame at this time (s)")
       ->transform(quantity_of(dim::kTime, false));
   animate->add_option("--model", model, "model file (default: the one named in summary.json)");
   animate
-      ->add_option("--force-length", ao.force_length,
-                   "3D: drawn length of the run's largest contact force, e.g. '3 m' (default 3 m)")
+      ->add_option("--force-length", aa.frame.force_length,
+                   "drawn length of the run's largest contact force, e.g. '3 m' (default 3 m)")
       ->transform(quantity_of(dim::kLength, true));
+  animate->add_option("--exaggerate", aa.exaggeration,
+                      "view.py draws contact overlaps this many times deeper (default: automatic, "
+                      "the deepest about 5 % of the drawing)");
+  animate->add_option("--render", aa.render,
+                      "also render through view.py with pvpython, headless: png | video | "
+                      "FILE.avi | FILE.ogv");
 
   std::string db;
   PolarStudyOptions po;
@@ -366,6 +562,22 @@ int main(int argc, char** argv) {
                     "output directory (default: the database's), or a .png file (the .csv beside "
                     "it)");
 
+  SweepPlotOptions so;
+  auto* sweep_plot = app.add_subcommand(
+      "sweep-plot", "a peak of a study against a swept axis, one curve per group (PNG, CSV)");
+  sweep_plot->add_option("study_db", db, "the study's SQLite database")->required();
+  sweep_plot->add_option("--x", so.x_axis, "the numeric swept axis along x (e.g. gap)")->required();
+  sweep_plot->add_option("--y", so.output, "an output (peak) column of the study")->required();
+  sweep_plot->add_option("--group", so.group_axis, "one curve per value of this axis");
+  sweep_plot->add_option("--where", where,
+                         "AXIS=VALUE: fixes an axis (repeatable; every other "
+                         "axis must be fixed, nothing is averaged)");
+  sweep_plot->add_option("--unit", so.unit, "display unit of the output (cm, g, kN, %, ...)");
+  sweep_plot->add_option("--x-unit", so.x_unit, "display unit of the x axis (cm, deg, ...)");
+  sweep_plot->add_option("-o,--output,--out", out,
+                         "output directory (default: the database's), or a .png file (the .csv "
+                         "beside it)");
+
   std::string pushover_dir;
   auto* pushover = app.add_subcommand(
       "pushover", "capacity curve of `isopound pushover` output (PNG), yield and capping marked");
@@ -375,6 +587,24 @@ int main(int argc, char** argv) {
   pushover->add_option("-o,--output,--out", out,
                        "a .png file, or a directory for pushover.png (default: PUSHOVER_DIR)");
 
+  FloorSpectraArgs fa;
+  auto* floor = app.add_subcommand(
+      "floor-spectra", "PSA and SD spectra of every level's absolute acceleration (CSV, PNG)");
+  floor->add_option("run_dir", fa.dir, "directory with histories.csv and summary.json")->required();
+  floor->add_option("--damping", fa.damping, "damping ratio in % (default 5)");
+  floor
+      ->add_option("--periods", fa.periods,
+                   "periods in s, e.g. 0,0.05,0.1,0.2 (default: spectra's)")
+      ->delimiter(',');
+  floor->add_option("--samples-per-period", fa.samples_per_period,
+                    "sampling rule: history interval <= T / this (default 10)");
+  floor->add_option("--short-periods", fa.short_periods,
+                    "periods the history is too coarse for: refuse (exit 2, default) | clip");
+  floor->add_option("--oversample", fa.oversample,
+                    "sub-steps per history row for the peak (exact either way; default 1)");
+  floor->add_option("-o,--output,--out", fa.out, "output directory (default: the run directory)");
+  floor->add_option("--model", fa.model, "model file (default: the one named in summary.json)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -383,9 +613,11 @@ int main(int argc, char** argv) {
   try {
     if (*spectra) return run_spectra(sa);
     if (*plot) return run_plot(run_dir, out, model);
-    if (*animate) return run_animate(run_dir, out, model, ao, preview);
+    if (*animate) return run_animate(run_dir, out, model, aa);
     if (*polar) return run_polar(db, po, where, out);
+    if (*sweep_plot) return run_sweep_plot(db, so, where, out);
     if (*pushover) return run_pushover(pushover_dir, out);
+    if (*floor) return run_floor_spectra(fa);
   } catch (const BadInput& e) {
     std::fprintf(stderr, "isopound-post: error: %s\n", e.what());
     return kBadInput;

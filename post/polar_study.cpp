@@ -36,7 +36,26 @@ bool is_angle_name(std::string n) {
          (n.size() >= 5 && n.compare(n.size() - 5, 5, "angle") == 0);
 }
 
-// Unit of a selector's quantity (SI) and how it is shown.
+// The display unit of an output column from its selector's quantity; SI when it is unknown.
+DisplayUnit unit_from_study(const StudyTable& table, const std::string& column) {
+  const auto it = std::find(table.outputs.begin(), table.outputs.end(), column);
+  if (it == table.outputs.end()) return {"SI", 1.0};
+  return display_unit_of(table.output_quantities[it - table.outputs.begin()]);
+}
+
+// The study's table; a missing file or one that is not a study database is the user's mistake
+// (PolarStudyError), a database that opens but cannot be read is not.
+StudyTable read_table(const std::string& db_path) {
+  try {
+    return read_study_table(db_path);
+  } catch (const StudyTableError& e) {
+    if (e.reason() == StudyTableError::Reason::unreadable) throw;
+    throw PolarStudyError(e.what());
+  }
+}
+
+}  // namespace
+
 DisplayUnit display_unit_of(const std::string& quantity) {
   const auto is = [&](std::initializer_list<const char*> names) {
     for (const char* n : names)
@@ -61,26 +80,6 @@ DisplayUnit display_unit_of(const std::string& quantity) {
     return {"kJ", 1e3};
   return {"SI", 1.0};
 }
-
-// The display unit of an output column from its selector's quantity; SI when it is unknown.
-DisplayUnit unit_from_study(const StudyTable& table, const std::string& column) {
-  const auto it = std::find(table.outputs.begin(), table.outputs.end(), column);
-  if (it == table.outputs.end()) return {"SI", 1.0};
-  return display_unit_of(table.output_quantities[it - table.outputs.begin()]);
-}
-
-// The study's table; a missing file or one that is not a study database is the user's mistake
-// (PolarStudyError), a database that opens but cannot be read is not.
-StudyTable read_table(const std::string& db_path) {
-  try {
-    return read_study_table(db_path);
-  } catch (const StudyTableError& e) {
-    if (e.reason() == StudyTableError::Reason::unreadable) throw;
-    throw PolarStudyError(e.what());
-  }
-}
-
-}  // namespace
 
 EnsembleColumns ensemble_columns(const std::vector<std::string>& outputs,
                                  const std::string& quantity) {

@@ -38,6 +38,8 @@ struct DisplayUnit {
   std::string unit;      // e.g. "cm"
   double divisor = 1.0;  // SI value / divisor = displayed value
 };
+// The display unit of a selector's quantity ("displacement": cm, ...); {"SI", 1} when unknown.
+DisplayUnit display_unit_of(const std::string& quantity);
 
 struct PolarStudyResult {
   PolarEnvelopeData envelope;  // when contour_axis is ""

@@ -46,6 +46,7 @@ void write_vtu(const FrameMesh& mesh, const std::string& path) {
   time->SetName("TimeValue");
   time->InsertNextValue(mesh.time);
   grid->GetFieldData()->AddArray(time);
+  for (const MeshArray& a : mesh.field_data) grid->GetFieldData()->AddArray(to_array(a));
 
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetFileName(path.c_str());

@@ -1,11 +1,17 @@
 // isopound command line: run a model, show its modes, check it, run the built-in demo, or
 // compute the overlap of convex polygons (geometry overlap).
 // Errors are printed as "file:line:col: key: what" and give a non-zero exit code.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -18,6 +24,7 @@
 #include "solver/core/constants.h"
 #include "solver/core/modes.h"
 #include "solver/io/computed_defaults.h"
+#include "solver/io/demo_model.h"
 #include "solver/io/model_input.h"
 #include "solver/io/overlap_report.h"
 #include "solver/io/plausibility.h"
@@ -42,18 +49,6 @@ using namespace isopound;
 namespace {
 
 enum ExitCode { kOk = 0, kFailure = 1, kBadInput = 2, kDiverged = 3 };
-
-// The thesis's 3-storey building (THEORY section 1) with Bouc-Wen isolators, T_b = 2 s,
-// Q/W = 5 %, u_y = 1 cm, under the built-in near-fault pulse.
-ModelConfig demo_config() {
-  ModelConfig c;
-  c.source = "(built-in demo)";
-  c.building.name = "3-storey";
-  c.building.base_mass = 340e3;
-  c.building.floors = {{340e3, 600e6, 3.2}, {340e3, 600e6, 3.2}, {250e3, 600e6, 3.2}};
-  c.ground_motion.use_pulse = true;
-  return c;
-}
 
 // A progress line on stderr for runs longer than a few seconds (rewritten in place).
 class ProgressLine {
@@ -217,6 +212,78 @@ void print_defaults(const ModelConfig& config, double record_dt) {
     std::printf("  %s = %s\n", key.c_str(), value.c_str());
 }
 
+// isopound-post beside this program (the build tree, an install), else on PATH; "" when absent.
+// The demo calls it as a program: the solver links nothing of post/.
+std::string find_post_program() {
+  std::error_code ec;
+  const fs::path beside = fs::read_symlink("/proc/self/exe", ec).parent_path() / "isopound-post";
+  if (!ec && access(beside.c_str(), X_OK) == 0) return beside.string();
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (!dir.empty() && access((fs::path(dir) / "isopound-post").c_str(), X_OK) == 0)
+      return (fs::path(dir) / "isopound-post").string();
+  return "";
+}
+
+// Runs `program args...` with its standard output discarded (its errors stay on stderr).
+int run_program(const std::string& program, std::vector<std::string> args) {
+  args.insert(args.begin(), program);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int spawned = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), ::environ);
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  if (spawned != 0 || waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// `isopound demo`: the 3D pounding demo, then its pictures and animation through isopound-post.
+int run_demo(const std::string& out_dir, bool quiet, bool pictures) {
+  create_output_directory(out_dir);
+  const fs::path model = fs::path(out_dir) / "model.yaml";
+  {
+    std::ofstream file(model);
+    file << demo_model_3d_yaml();
+    if (!file) throw std::runtime_error("cannot write " + model.string());
+  }
+  const int code = run_and_write(load_model_file(model.string()), out_dir, quiet);
+  if (code != kOk || !pictures) return code;
+  const std::string post = find_post_program();
+  if (post.empty()) {
+    std::fprintf(stderr,
+                 "isopound: isopound-post is neither beside isopound nor on PATH: no pictures "
+                 "(build or install it, or run with --no-pictures)\n");
+    return kFailure;
+  }
+  if (!quiet) std::printf("\nDrawing the run (isopound-post, headless)...\n");
+  std::fflush(stdout);
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"plot", out_dir}, std::vector<std::string>{"animate", out_dir}})
+    if (run_program(post, args) != 0) {
+      std::fprintf(stderr, "isopound: error: isopound-post %s %s failed\n", args[0].c_str(),
+                   out_dir.c_str());
+      return kFailure;
+    }
+  if (!quiet) {
+    const fs::path dir(out_dir);
+    std::printf("Results:    %s  (summary.json, histories.csv, contact_events.csv, model.yaml)\n",
+                dir.string().c_str());
+    std::printf("Pictures:   %s  (time_histories, trajectory, contacts, hysteresis .png)\n",
+                dir.string().c_str());
+    std::printf("Animation:  %s  (animation.pvd: slowed down at every impact; view.py)\n",
+                (dir / "animation").string().c_str());
+    std::printf("Watch it in ParaView:  paraview --script=%s\n",
+                (dir / "animation" / "view.py").string().c_str());
+  }
+  return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -251,10 +318,17 @@ int main(int argc, char** argv) {
                   "Threads for --ensemble; 0 = all cores (default), as in sweep")
       ->check(at_least(0));
 
+  bool demo_2d = false, no_pictures = false;
   CLI::App* demo = app.add_subcommand(
-      "demo", "3-storey Bouc-Wen isolated building under the built-in near-fault pulse");
+      "demo",
+      "An isolated building pounding its moat walls (3D, built-in pulse pair), with its pictures "
+      "and a ParaView animation");
   demo->add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
   demo->add_flag("-q,--quiet", quiet, "Print nothing on success");
+  demo->add_flag("--2d", demo_2d,
+                 "the 2D demo instead: the 3-storey shear building on Bouc-Wen isolators under "
+                 "the built-in pulse, no walls, no pictures");
+  demo->add_flag("--no-pictures", no_pictures, "run only: no isopound-post pictures or animation");
 
   CLI::App* modes =
       app.add_subcommand("modes", "Periods and mode shapes of every structure of a model");
@@ -312,7 +386,9 @@ int main(int argc, char** argv) {
     return *code;  // study commands (sweep, export)
 
   try {
-    if (*demo) return run_and_write(demo_config(), out_dir, quiet);
+    if (*demo)
+      return demo_2d ? run_and_write(demo_model_2d(), out_dir, quiet)
+                     : run_demo(out_dir, quiet, !no_pictures);
     if (*overlap) return print_overlaps(pairs_path, exact);
     ModelConfig config = load_model_file(model_path);
     check_options_apply(config, record_path, ensemble, run->count("--jobs") > 0);

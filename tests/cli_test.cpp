@@ -100,9 +100,9 @@ TEST(CliDivergence, StopsWithTimeAndDof) {
   fs::remove_all(dir);
 }
 
-TEST(CliDemo, WritesSummaryAndHistoriesWithConsistentPeaks) {
+TEST(CliDemo, TwoDimensionalDemoWritesSummaryAndHistoriesWithConsistentPeaks) {
   const fs::path dir = scratch_dir("demo");
-  const Command c = run("demo -o '" + dir.string() + "'");
+  const Command c = run("demo --2d -o '" + dir.string() + "'");
   ASSERT_EQ(c.exit_code, 0) << c.output;
   EXPECT_NE(c.output.find("displacement"), std::string::npos);
   std::ifstream in(dir / "summary.json");

@@ -123,7 +123,7 @@ TEST(PostRun3D, AnimateFramesReadBackWithRangesAndContactBlocksExactlyWhileInCon
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ofstream(dir / "run" / "contact_events.csv") << synthetic_log();
   const double fps = 10.0, t_end = 6.0, scale = 3.0;
-  r = test::run_post("animate " + (dir / "run").string() + " --model " +
+  r = test::run_post("animate " + (dir / "run").string() + " --uniform --model " +
                      (dir / "two.yaml").string() + " --fps 10 --end 6 --scale 3 -o " +
                      (dir / "anim").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -408,8 +408,8 @@ TEST(PostRun3D, RealWallRunHasContactBlocksExactlyWhereItsEventLogSaysInContact)
   auto r =
       test::run_solver("run " + (dir / "walls.yaml").string() + " -o " + (dir / "run").string());
   ASSERT_EQ(r.exit_code, 0) << r.output << yaml;
-  r = test::run_post("animate " + (dir / "run").string() + " --start 3.4 --end 4.2 --fps 100 -o " +
-                     (dir / "anim").string());
+  r = test::run_post("animate " + (dir / "run").string() +
+                     " --uniform --start 3.4 --end 4.2 --fps 100 -o " + (dir / "anim").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   std::ifstream log_file(dir / "run" / "contact_events.csv");

@@ -51,8 +51,9 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
   const auto run_dir = pounding_run();
   const auto out = test::scratch_dir("anim");
   const double fps = 10.0;
-  const auto r = test::run_post("animate " + run_dir.string() +
-                                " --fps 10 --end 12 --scale 5 --preview 4.8 -o " + out.string());
+  const auto r =
+      test::run_post("animate " + run_dir.string() +
+                     " --uniform --fps 10 --end 12 --scale 5 --preview 4.8 -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   // Independent reading of the histories (header names) and the summary.
@@ -183,7 +184,7 @@ TEST(PostAnimate, FlexibleWallsMoveAndAreNotLevelsOfTheBuilding) {
     EXPECT_DOUBLE_EQ(w.gap, 0.2);
   }
   r = test::run_post("animate " + (dir / "run").string() + " --model " +
-                     (dir / "flex.yaml").string() + " --fps 10 --end 8 -o " +
+                     (dir / "flex.yaml").string() + " --uniform --fps 10 --end 8 -o " +
                      (dir / "anim").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   double max_wall_u = 0.0;
