@@ -23,6 +23,7 @@
 #include "post/plot_floor_spectra.h"
 #include "post/plot_pushover.h"
 #include "post/plot_run.h"
+#include "post/plot_spectra.h"
 #include "post/polar_study.h"
 #include "post/pushover_data.h"
 #include "post/render_png.h"
@@ -148,13 +149,16 @@ int run_spectra(const SpectraArgs& a) {
       }
     }
 
-  // CSV: PSA in g and SD in m per record, statistics, RotD.
+  // CSV: PSA in g and SD in m per record; for a set the log-space median exp(mean ln), σ_ln and
+  // the band exp(mean ln ∓ σ_ln) (spectra.h); RotD.
   std::ostringstream csv;
   csv.precision(10);
   csv << "period_s";
   for (const Spectrum& s : spectra) csv << "," << s.name << "_PSA_g," << s.name << "_SD_m";
   const bool stats = spectra.size() > 1;
-  if (stats) csv << ",mean_PSA_g,sigma_PSA_g,mean_SD_m,sigma_SD_m";
+  if (stats)
+    csv << ",median_PSA_g,sigma_ln_PSA,median_minus_sigma_ln_PSA_g,median_plus_sigma_ln_PSA_g"
+        << ",median_SD_m,sigma_ln_SD,median_minus_sigma_ln_SD_m,median_plus_sigma_ln_SD_m";
   for (const RotDSpectrum& r : rotd)
     csv << "," << r.name << "_RotD50_PSA_g," << r.name << "_RotD100_PSA_g," << r.name
         << "_RotD50_SD_m," << r.name << "_RotD100_SD_m";
@@ -163,8 +167,10 @@ int run_spectra(const SpectraArgs& a) {
     csv << periods[i];
     for (const Spectrum& s : spectra) csv << "," << s.psa[i] / kGravity << "," << s.sd[i];
     if (stats)
-      csv << "," << st.mean_psa[i] / kGravity << "," << st.sigma_psa[i] / kGravity << ","
-          << st.mean_sd[i] << "," << st.sigma_sd[i];
+      csv << "," << st.median_psa[i] / kGravity << "," << st.sigma_ln_psa[i] << ","
+          << st.lower_psa[i] / kGravity << "," << st.upper_psa[i] / kGravity << ","
+          << st.median_sd[i] << "," << st.sigma_ln_sd[i] << "," << st.lower_sd[i] << ","
+          << st.upper_sd[i];
     for (const RotDSpectrum& r : rotd)
       csv << "," << r.psa50[i] / kGravity << "," << r.psa100[i] / kGravity << "," << r.sd50[i]
           << "," << r.sd100[i];
@@ -172,60 +178,8 @@ int run_spectra(const SpectraArgs& a) {
   }
   write_text(fs::path(a.out) / "spectra.csv", csv.str());
 
-  // Figure: PSA [g] and SD [cm] against period.
-  char damping_text[32];
-  std::snprintf(damping_text, sizeof damping_text, "%g %%", a.damping);
-  Panel psa{"Pseudo-acceleration, ξ = " + std::string(damping_text),
-            "period T [s]",
-            "PSA [g]",
-            {},
-            true,
-            false,
-            true};
-  Panel sd{"Displacement, ξ = " + std::string(damping_text),
-           "period T [s]",
-           "SD [cm]",
-           {},
-           true,
-           false,
-           true};
-  const auto add = [&](const std::string& label, const std::vector<double>& p,
-                       const std::vector<double>& d, std::optional<Rgb> c, double w) {
-    std::vector<double> pg, dc;
-    for (double x : p) pg.push_back(x / kGravity);
-    for (double x : d) dc.push_back(x * 100.0);
-    psa.series.push_back({label, periods, pg, c, w});
-    sd.series.push_back({label, periods, dc, c, w});
-  };
-  const bool many = spectra.size() > 1;
-  for (std::size_t k = 0; k < spectra.size(); ++k)
-    add(spectra[k].name, spectra[k].psa, spectra[k].sd,
-        many ? std::optional<Rgb>(Rgb{170, 170, 170}) : std::nullopt, many ? 1.0 : 1.8);
-  if (many) {
-    std::vector<double> lo_p, hi_p, lo_d, hi_d;
-    for (std::size_t i = 0; i < periods.size(); ++i) {
-      lo_p.push_back(st.mean_psa[i] - st.sigma_psa[i]);
-      hi_p.push_back(st.mean_psa[i] + st.sigma_psa[i]);
-      lo_d.push_back(st.mean_sd[i] - st.sigma_sd[i]);
-      hi_d.push_back(st.mean_sd[i] + st.sigma_sd[i]);
-    }
-    add("mean", st.mean_psa, st.mean_sd, Rgb{0, 0, 0}, 2.5);
-    add("mean ± σ", hi_p, hi_d, Rgb{214, 39, 40}, 1.5);
-    add("", lo_p, lo_d, Rgb{214, 39, 40}, 1.5);
-  }
-  for (std::size_t k = 0; k < rotd.size(); ++k) {
-    const std::string pre = rotd.size() > 1 ? rotd[k].name + " " : "";
-    add(pre + "RotD50", rotd[k].psa50, rotd[k].sd50, series_colour(2 * k), 2.0);
-    add(pre + "RotD100", rotd[k].psa100, rotd[k].sd100, series_colour(2 * k + 1), 2.0);
-  }
-  if (many) {
-    // Individual records are grey and unlabelled in the legend.
-    for (Panel* p : {&psa, &sd})
-      for (std::size_t k = 0; k < spectra.size(); ++k) p->series[k].label = "";
-    psa.series.front().label = sd.series.front().label = "records";
-  }
   const PrivateDisplay display;
-  render_png(xy_figure({psa, sd}, 2, 1200, 480, "Elastic response spectra"),
+  render_png(spectra_figure(spectra, st, rotd, a.damping),
              (fs::path(a.out) / "spectra.png").string());
   std::printf("Wrote %s/spectra.csv and %s/spectra.png\n", a.out.c_str(), a.out.c_str());
   return kOk;

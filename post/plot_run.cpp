@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "post/plot_run3d.h"
 #include "post/xy_plot.h"
@@ -20,7 +21,56 @@ std::string short_label(const std::string& label, const RunData& run) {
   return label;
 }
 
+// Ground displacement from the ground-acceleration column, integrated exactly as a piecewise-linear
+// acceleration from rest (the solver's rule for the record): v' = a, u' = v between samples.
+std::vector<double> ground_displacement(const std::vector<double>& t,
+                                        const std::vector<double>& a) {
+  std::vector<double> u(t.size(), 0.0);
+  double v = 0.0;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    const double h = t[i] - t[i - 1];
+    u[i] = u[i - 1] + h * v + h * h * (a[i - 1] / 3.0 + a[i] / 6.0);
+    v += 0.5 * h * (a[i - 1] + a[i]);
+  }
+  return u;
+}
+
 }  // namespace
+
+std::string peak_text(const ReportedPeak& peak, double divisor, const std::string& unit) {
+  char buf[96];
+  if (peak.time)
+    std::snprintf(buf, sizeof buf, "%.4g %s at %.3f s", peak.value / divisor, unit.c_str(),
+                  *peak.time);
+  else
+    std::snprintf(buf, sizeof buf, "%.4g %s", peak.value / divisor, unit.c_str());
+  return buf;
+}
+
+void mark_reported_peaks(Panel& panel, const std::vector<std::optional<ReportedPeak>>& peaks,
+                         double divisor, const std::string& unit) {
+  int largest = -1;
+  for (std::size_t k = 0; k < peaks.size() && k < panel.series.size(); ++k)
+    if (peaks[k] && peaks[k]->time && (largest < 0 || peaks[k]->value > peaks[largest]->value))
+      largest = static_cast<int>(k);
+  for (std::size_t k = 0; k < peaks.size() && k < panel.series.size(); ++k) {
+    if (!peaks[k]) continue;
+    Series& s = panel.series[k];
+    const std::string text = "peak " + peak_text(*peaks[k], divisor, unit);
+    if (!s.label.empty())
+      s.label += peaks[k]->time ? " — " + text : " — " + text + " (time not reported)";
+    if (!peaks[k]->time) continue;
+    panel.marks.push_back({*peaks[k]->time, peaks[k]->signed_value / divisor,
+                           static_cast<int>(k) == largest ? text + " (summary.json)" : "",
+                           s.colour.value_or(series_colour(static_cast<int>(k)))});
+  }
+}
+
+std::string sampled_every(const RunData& run) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "curves: histories.csv every %g ms", 1e3 * history_interval(run));
+  return buf;
+}
 
 double force_scale(double peak_newton, std::string& unit) {
   if (peak_newton >= 1e7) {
@@ -37,63 +87,95 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   std::vector<Panel> panels;
   const Structure& main = run.structures.front();
 
-  Panel ground{"Ground and base", "time [s]", "", {}, true, true};
+  // Ground displacement (from its acceleration) and the base's relative to the ground.
+  Panel ground{"Ground and base", "time [s]", "displacement [cm]", {}, true, true};
+  ground.legend_at = Panel::LegendAt::kBest;
   const int ag = run.find("", "ground_acceleration");
-  // Base (lowest level of the main building) displacement relative to the ground.
   const Level& base = main.levels.front();
-  ground.y_title = "displacement [cm]";
-  ground.series.push_back(
-      line_series(short_label(base.label, run) + " u", t, scaled(run.column(base.u), 0.01)));
+  std::vector<std::optional<ReportedPeak>> ground_peaks;
+  if (ag >= 0) {
+    ground.series.push_back({"ground (a_g integrated twice)", t,
+                             scaled(ground_displacement(t, run.column(ag)), 0.01),
+                             Rgb{150, 150, 150}, 1.0});
+    ground_peaks.push_back(reported_ground_peak(run, "pgd_m"));
+  }
+  ground.series.push_back(line_series(short_label(base.label, run) + " u (relative to the ground)",
+                                      t, scaled(run.column(base.u), 0.01)));
+  ground_peaks.push_back(reported_level_peak(run, base.label, "displacement"));
+  mark_reported_peaks(ground, ground_peaks, 0.01, "cm");
   panels.push_back(ground);
 
-  Panel drift{"Story drift ratios", "time [s]", "drift ratio [%]", {}, true, true};
-  for (const Structure& s : run.structures)
-    for (std::size_t k = 1; k < s.levels.size(); ++k) {
-      const Level& lo = s.levels[k - 1];
+  // Storey k of a structure: between its levels k-1 and k, or from the ground to its first level
+  // when that stands above the ground (a neighbour); numbered from the bottom as summary.json.
+  Panel drift{"Storey drift ratios", "time [s]", "drift ratio [%]", {}, true, true};
+  std::vector<std::optional<ReportedPeak>> drift_peaks;
+  for (const Structure& s : run.structures) {
+    const bool on_ground = !s.levels.empty() && s.levels.front().elevation > 0.0;
+    int story = 0;
+    for (std::size_t k = on_ground ? 0 : 1; k < s.levels.size(); ++k) {
+      const Level* lo = k > 0 ? &s.levels[k - 1] : nullptr;  // nullptr: the ground
       const Level& hi = s.levels[k];
-      const double h = hi.elevation - lo.elevation;
+      const double h = hi.elevation - (lo ? lo->elevation : 0.0);
+      ++story;
       if (!(h > 0.0)) continue;
       std::vector<double> r(t.size());
       for (std::size_t i = 0; i < t.size(); ++i)
-        r[i] = 100.0 * (run.column(hi.u)[i] - run.column(lo.u)[i]) / h;
-      drift.series.push_back(line_series(short_label(hi.label, run), t, r));
-    }
-  // The first story of an isolated building rests on the base slab; of a neighbour, on the ground.
-  for (const Structure& s : run.structures)
-    if (!s.levels.empty() && s.levels.front().elevation > 0.0) {
-      const Level& l = s.levels.front();
+        r[i] = 100.0 * (run.column(hi.u)[i] - (lo ? run.column(lo->u)[i] : 0.0)) / h;
+      const std::string lo_name =
+          lo ? lo->label.substr(lo->label.find('/') + 1) : std::string("ground");
+      const std::string name = "storey " + std::to_string(story) + " (" + lo_name + "–" +
+                               hi.label.substr(hi.label.find('/') + 1) + ")";
       drift.series.push_back(
-          line_series(short_label(l.label, run), t, scaled(run.column(l.u), l.elevation / 100.0)));
+          line_series(run.structures.size() > 1 ? s.name + "/" + name : name, t, r));
+      drift_peaks.push_back(reported_drift_ratio_peak(run, s.name, story));
     }
+  }
+  mark_reported_peaks(drift, drift_peaks, 0.01, "%");
   panels.push_back(drift);
 
   Panel acc{"Absolute accelerations", "time [s]", "absolute acceleration [g]", {}, true, true};
-  if (ag >= 0)
+  std::vector<std::optional<ReportedPeak>> acc_peaks;
+  if (ag >= 0) {
     acc.series.push_back({"ground", t, scaled(run.column(ag), kGravity), Rgb{150, 150, 150}, 1.0});
+    acc_peaks.push_back(reported_ground_peak(run, "pga_m_s2"));
+  }
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels)
-      if (l.a_abs >= 0)
+      if (l.a_abs >= 0) {
         acc.series.push_back(
             line_series(short_label(l.label, run), t, scaled(run.column(l.a_abs), kGravity)));
+        acc_peaks.push_back(reported_level_peak(run, l.label, "absolute_acceleration"));
+      }
+  mark_reported_peaks(acc, acc_peaks, kGravity, "g");
   panels.push_back(acc);
 
   if (!run.contacts.empty()) {
     double peak = 0.0;
-    for (const ElementColumns& c : run.contacts)
+    for (const ElementColumns& c : run.contacts) {
       peak = std::max(peak, peak_of(run.column(c.force)));
+      if (const auto p = reported_element_peak(run, c.label, "force"))
+        peak = std::max(peak, p->value);
+    }
     std::string unit;
     const double div = force_scale(peak, unit);
     Panel impact{"Impact forces", "time [s]", "impact force [" + unit + "]", {}, true, false, true};
-    for (const ElementColumns& c : run.contacts)
+    std::vector<std::optional<ReportedPeak>> impact_peaks;
+    for (const ElementColumns& c : run.contacts) {
       impact.series.push_back(
           line_series(short_label(c.label, run), t, scaled(run.column(c.force), div)));
+      impact_peaks.push_back(reported_element_peak(run, c.label, "force"));
+    }
+    mark_reported_peaks(impact, impact_peaks, div, unit);
     panels.push_back(impact);
   }
   std::vector<NamedFigure> out;
   const int rows = static_cast<int>(panels.size());
-  out.push_back(
-      {"time_histories.png", xy_figure(panels, 1, 1000, 230 * rows + 40,
-                                       "Time histories: " + run.dir.filename().string())});
+  NamedFigure th{"time_histories.png", {}, {}};
+  th.figure = xy_figure(panels, 1, 1000, 230 * rows + 40,
+                        "Time histories: " + run.dir.filename().string() + " (" +
+                            sampled_every(run) + "; ◆ peaks over every step, summary.json)",
+                        &th.frames);
+  out.push_back(std::move(th));
 
   std::vector<Panel> loops;
   for (const ElementColumns& e : run.isolators) {
@@ -127,8 +209,11 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   if (!loops.empty()) {
     const int columns = loops.size() > 1 ? 2 : 1;
     const int rows_l = static_cast<int>((loops.size() + columns - 1) / columns);
-    out.push_back({"hysteresis.png", xy_figure(loops, columns, 500 * columns, 360 * rows_l + 40,
-                                               "Hysteresis: " + run.dir.filename().string())});
+    out.push_back(
+        {"hysteresis.png",
+         xy_figure(loops, columns, 500 * columns, 360 * rows_l + 40,
+                   "Hysteresis: " + run.dir.filename().string() + " (" + sampled_every(run) + ")"),
+         {}});
   }
   return out;
 }

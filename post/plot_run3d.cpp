@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "geometry/overlap.h"
 #include "post/xy_plot.h"
@@ -95,6 +96,11 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
   disp.series.push_back(line_series("x", t, scaled(cm.x, 0.01)));
   disp.series.push_back(line_series("y", t, scaled(cm.y, 0.01)));
   disp.series.push_back({"resultant", t, scaled(cm.resultant, 0.01), Rgb{0, 0, 0}, 1.5});
+  mark_reported_peaks(disp,
+                      {reported_level_peak(run, base.label, "displacement", "x"),
+                       reported_level_peak(run, base.label, "displacement", "y"),
+                       reported_level_peak(run, base.label, "displacement", "resultant")},
+                      0.01, "cm");
   panels.push_back(disp);
 
   Panel drift{"Corner drift ratios (the worst corner of each storey)",
@@ -104,8 +110,15 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
               true,
               false,
               true};
-  for (const CornerDrift& d : corner_drifts(run))
+  std::vector<std::optional<ReportedPeak>> drift_peaks;
+  for (const CornerDrift& d : corner_drifts(run)) {
     drift.series.push_back(line_series(short_label(d.label, run), t, scaled(d.ratio, 0.01)));
+    // "<building>/story <k> corner <c>": summary.json's largest corner-column peak of storey k.
+    const auto slash = d.label.find('/');
+    drift_peaks.push_back(reported_drift_ratio_peak(run, d.label.substr(0, slash),
+                                                    std::atoi(d.label.c_str() + slash + 7)));
+  }
+  mark_reported_peaks(drift, drift_peaks, 0.01, "%");
   panels.push_back(drift);
 
   Panel acc{"Absolute accelerations at the centres of mass (resultant)",
@@ -116,19 +129,24 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
             false,
             true};
   const int gx = run.find("", "ground_acceleration"), gy = run.find("", "ground_acceleration_y");
+  std::vector<std::optional<ReportedPeak>> acc_peaks;
   if (gx >= 0) {
     std::vector<double> g(t.size());
     for (std::size_t r = 0; r < t.size(); ++r)
       g[r] = std::hypot(run.values[gx][r], gy >= 0 ? run.values[gy][r] : 0.0) / kGravity;
     acc.series.push_back({"ground", t, g, Rgb{150, 150, 150}, 1.0});
+    acc_peaks.push_back(std::nullopt);  // summary.json has a_x's and a_y's, not the resultant's
   }
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels)
-      if (l.a_abs >= 0)
+      if (l.a_abs >= 0) {
         acc.series.push_back(
             line_series(short_label(l.label, run), t,
                         scaled(point_history(run, l, run.site.bodies[l.body].p_WCM, true).resultant,
                                kGravity)));
+        acc_peaks.push_back(reported_level_peak(run, l.label, "absolute_acceleration"));
+      }
+  mark_reported_peaks(acc, acc_peaks, kGravity, "g");
   panels.push_back(acc);
 
   if (!run.contact_log.pairs.empty()) {
@@ -138,7 +156,7 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
         peak = std::max({peak, std::abs(e.normal_force), std::abs(e.tangential_force)});
     std::string unit;
     const double div = force_scale(peak, unit);
-    Panel normal{"Normal contact forces F_N (event log)",
+    Panel normal{"Normal contact forces F_N (event log: every step in contact)",
                  "time [s]",
                  "F_N [" + unit + "]",
                  {},
@@ -151,7 +169,10 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
                      {},
                      true,
                      true};
+    std::vector<std::optional<ReportedPeak>> fn_peaks, ft_peaks;
     for (const auto& [pair, rows] : run.contact_log.pairs) {
+      fn_peaks.push_back(reported_element_peak(run, pair, "normal_force"));
+      ft_peaks.push_back(reported_element_peak(run, pair, "tangential_force"));
       // Zero from the start and between episodes (the log holds in-contact and separation rows).
       std::vector<double> tt{t.front()}, fn{0.0}, ft{0.0};
       for (const ContactEvent& e : rows) {
@@ -165,12 +186,17 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
       normal.series.push_back(line_series(name, tt, fn));
       tangential.series.push_back(line_series(name, tt, ft));
     }
+    mark_reported_peaks(normal, fn_peaks, div, unit);
+    mark_reported_peaks(tangential, ft_peaks, div, unit);
     panels.push_back(normal);
     panels.push_back(tangential);
   }
-  out.push_back(
-      {"time_histories.png", xy_figure(panels, 1, 1000, 230 * static_cast<int>(panels.size()) + 40,
-                                       "Time histories: " + run.dir.filename().string())});
+  NamedFigure th{"time_histories.png", {}, {}};
+  th.figure = xy_figure(panels, 1, 1000, 230 * static_cast<int>(panels.size()) + 40,
+                        "Time histories: " + run.dir.filename().string() + " (" +
+                            sampled_every(run) + "; ◆ peaks over every step, summary.json)",
+                        &th.frames);
+  out.push_back(std::move(th));
 
   // ---- bearings: force vs deformation per direction, and the orbit
   std::vector<Panel> loops;
@@ -202,8 +228,11 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
                                          scaled(run.column(e->deformation_y), 0.01)));
     }
     loops = {px, py, orbit};
-    out.push_back({"hysteresis.png",
-                   xy_figure(loops, 3, 1500, 480, "Bearings: " + run.dir.filename().string())});
+    out.push_back(
+        {"hysteresis.png",
+         xy_figure(loops, 3, 1500, 480,
+                   "Bearings: " + run.dir.filename().string() + " (" + sampled_every(run) + ")"),
+         {}});
   }
 
   // ---- contacts: F_N against the indentation δ_N and F_T against F_N per pair (event log)
@@ -242,8 +271,11 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
       contact_panels.push_back(pt);
     }
     const int rows_c = static_cast<int>(contact_panels.size() / 2);
-    out.push_back({"contacts.png", xy_figure(contact_panels, 2, 1100, 360 * rows_c + 40,
-                                             "Contacts: " + run.dir.filename().string())});
+    out.push_back({"contacts.png",
+                   xy_figure(contact_panels, 2, 1100, 360 * rows_c + 40,
+                             "Contacts: " + run.dir.filename().string() +
+                                 " (event log: every step in contact)"),
+                   {}});
   }
 
   // ---- base slab in plan: at true scale with the walls, and its displacements with the
@@ -304,9 +336,11 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
     orbit.series.push_back({"corner " + std::to_string(c + 1), scaled(corners[c].x, 0.01),
                             scaled(corners[c].y, 0.01), series_colour(static_cast<int>(c)), 1.0});
   }
-  out.push_back(
-      {"trajectory.png", xy_figure({plan, orbit}, 2, 1400, 700,
-                                   "Base slab trajectory: " + run.dir.filename().string())});
+  out.push_back({"trajectory.png",
+                 xy_figure({plan, orbit}, 2, 1400, 700,
+                           "Base slab trajectory: " + run.dir.filename().string() + " (" +
+                               sampled_every(run) + ")"),
+                 {}});
   return out;
 }
 

@@ -348,6 +348,14 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
         csv << angles[a] << "," << c.radius[i] << "," << c.value.back() << "\n";
       }
   }
+  // The title says which rows were drawn: the --where filters, as given.
+  std::string where;
+  for (const auto& [axis, label] : opt.where)
+    where += (where.empty() ? "" : ", ") + axis + " = " + label;
+  if (!where.empty()) {
+    result.envelope.title += " (where " + where + ")";
+    result.contour.title += " (where " + where + ")";
+  }
   result.csv = csv.str();
   return result;
 }

@@ -108,19 +108,31 @@ SpectrumStatistics spectrum_statistics(const std::vector<Spectrum>& spectra) {
   if (spectra.empty()) return st;
   st.period = spectra.front().period;
   const std::size_t n = spectra.size();
-  const auto stats = [&](auto member, std::vector<double>& mean, std::vector<double>& sigma) {
+  const auto stats = [&](auto member, std::vector<double>& median, std::vector<double>& sigma,
+                         std::vector<double>& lower, std::vector<double>& upper) {
     for (std::size_t i = 0; i < st.period.size(); ++i) {
+      bool positive = true;
       double sum = 0.0;
-      for (const Spectrum& s : spectra) sum += (s.*member)[i];
+      for (const Spectrum& s : spectra) {
+        positive = positive && (s.*member)[i] > 0.0;
+        if (positive) sum += std::log((s.*member)[i]);
+      }
+      if (!positive) {  // ln 0: no log statistics (SD at T = 0, identically 0)
+        median.push_back(0.0), sigma.push_back(0.0), lower.push_back(0.0), upper.push_back(0.0);
+        continue;
+      }
       const double mu = sum / n;
       double ss = 0.0;
-      for (const Spectrum& s : spectra) ss += ((s.*member)[i] - mu) * ((s.*member)[i] - mu);
-      mean.push_back(mu);
-      sigma.push_back(n > 1 ? std::sqrt(ss / (n - 1)) : 0.0);
+      for (const Spectrum& s : spectra) ss += std::pow(std::log((s.*member)[i]) - mu, 2);
+      const double sg = n > 1 ? std::sqrt(ss / (n - 1)) : 0.0;
+      median.push_back(std::exp(mu));
+      sigma.push_back(sg);
+      lower.push_back(std::exp(mu - sg));
+      upper.push_back(std::exp(mu + sg));
     }
   };
-  stats(&Spectrum::psa, st.mean_psa, st.sigma_psa);
-  stats(&Spectrum::sd, st.mean_sd, st.sigma_sd);
+  stats(&Spectrum::psa, st.median_psa, st.sigma_ln_psa, st.lower_psa, st.upper_psa);
+  stats(&Spectrum::sd, st.median_sd, st.sigma_ln_sd, st.lower_sd, st.upper_sd);
   return st;
 }
 

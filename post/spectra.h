@@ -35,10 +35,15 @@ std::vector<double> sdof_displacement(const GroundMotion& motion, double period,
 Spectrum response_spectrum(const GroundMotion& motion, const std::vector<double>& periods,
                            const SpectrumOptions& options = {});
 
-// Mean and sample standard deviation over spectra (same periods), per period. One spectrum: sigma
-// 0.
+// Statistics of a set of spectra (same periods) in log space, per period, since spectral ordinates
+// are about lognormal and a band must stay positive: median = exp(mean of ln x), sigma_ln = the
+// sample standard deviation of ln x, and the band median exp(-/+ sigma_ln) = exp(mean ln -/+
+// sigma_ln). A period where an ordinate is 0 (SD at T = 0) has median 0, sigma_ln 0 and band 0.
+// One spectrum: sigma_ln 0.
 struct SpectrumStatistics {
-  std::vector<double> period, mean_psa, sigma_psa, mean_sd, sigma_sd;
+  std::vector<double> period;
+  std::vector<double> median_psa, sigma_ln_psa, lower_psa, upper_psa;  // m/s^2 (sigma_ln: -)
+  std::vector<double> median_sd, sigma_ln_sd, lower_sd, upper_sd;      // m
 };
 SpectrumStatistics spectrum_statistics(const std::vector<Spectrum>& spectra);
 

@@ -52,20 +52,37 @@ constexpr Rgb kBlack{0, 0, 0};
 constexpr Rgb kGrid{225, 225, 225};
 constexpr Rgb kFrame{60, 60, 60};
 
+// A value on an axis as laid out: log10 on a log axis (NaN for values <= 0: not drawn).
+double axis_value(double v, bool log) {
+  if (!log) return v;
+  return v > 0.0 ? std::log10(v) : std::numeric_limits<double>::quiet_NaN();
+}
+
 void range_of(const Panel& panel, double& x_lo, double& x_hi, double& y_lo, double& y_hi) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   x_lo = y_lo = inf;
   x_hi = y_hi = -inf;
+  const auto take = [&](double x, double y) {
+    x = axis_value(x, panel.log_x), y = axis_value(y, panel.log_y);
+    if (!std::isfinite(x) || !std::isfinite(y)) return;
+    x_lo = std::min(x_lo, x);
+    x_hi = std::max(x_hi, x);
+    y_lo = std::min(y_lo, y);
+    y_hi = std::max(y_hi, y);
+  };
   for (const Series& s : panel.series)
-    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-      x_lo = std::min(x_lo, s.x[i]);
-      x_hi = std::max(x_hi, s.x[i]);
-      y_lo = std::min(y_lo, s.y[i]);
-      y_hi = std::max(y_hi, s.y[i]);
-    }
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) take(s.x[i], s.y[i]);
+  for (const Mark& m : panel.marks) take(m.x, m.y);
   if (!(x_lo <= x_hi)) x_lo = 0, x_hi = 1;
   if (!(y_lo <= y_hi)) y_lo = 0, y_hi = 1;
+  if (panel.log_y) {
+    if (y_hi == y_lo) y_lo -= 0.5, y_hi += 0.5;
+    const double pad = 0.05 * (y_hi - y_lo);  // as below, in decades
+    y_lo -= pad;
+    y_hi += pad;
+    if (x_hi == x_lo) x_lo -= 0.5, x_hi += 0.5;
+    return;
+  }
   if (panel.symmetric_y) {
     const double m = std::max(std::abs(y_lo), std::abs(y_hi));
     y_lo = -m;
@@ -129,7 +146,9 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
   frame.width = std::max(10.0, w - ml - mr);
   frame.height = std::max(10.0, h - mb - mt);
   range_of(panel, frame.x_lo, frame.x_hi, frame.y_lo, frame.y_hi);
-  if (panel.equal_axes) {
+  frame.log_x = panel.log_x;
+  frame.log_y = panel.log_y;
+  if (panel.equal_axes && !panel.log_x && !panel.log_y) {
     // Widen the range that has fewer pixels per unit, about its centre.
     const double per_x = (frame.x_hi - frame.x_lo) / frame.width;
     const double per_y = (frame.y_hi - frame.y_lo) / frame.height;
@@ -143,20 +162,23 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
   }
   const double L = frame.left, B = frame.bottom, R = L + frame.width, T = B + frame.height;
 
-  for (double t : nice_ticks(frame.x_lo, frame.x_hi, 7)) {
-    const double px = frame.to_pixel(t, 0).x;
+  const auto ticks = [](double lo, double hi, bool log, int target) {
+    return log ? log_ticks(std::pow(10.0, lo), std::pow(10.0, hi)) : nice_ticks(lo, hi, target);
+  };
+  for (double t : ticks(frame.x_lo, frame.x_hi, panel.log_x, 7)) {
+    const double px = frame.to_pixel(t, 1).x;
     fig.lines.push_back({{{px, B}, {px, T}}, kGrid, 1.0});
     fig.lines.push_back({{{px, B}, {px, B - 5}}, kFrame, 1.0});
     fig.texts.push_back({{px, B - 8}, tick_label(t), 11, kBlack, HAlign::kCentre, VAlign::kTop});
   }
-  for (double t : nice_ticks(frame.y_lo, frame.y_hi, 5)) {
-    const double py = frame.to_pixel(0, t).y;
+  for (double t : ticks(frame.y_lo, frame.y_hi, panel.log_y, 5)) {
+    const double py = frame.to_pixel(1, t).y;
     fig.lines.push_back({{{L, py}, {R, py}}, kGrid, 1.0});
     fig.lines.push_back({{{L - 5, py}, {L, py}}, kFrame, 1.0});
     fig.texts.push_back({{L - 8, py}, tick_label(t), 11, kBlack, HAlign::kRight, VAlign::kCentre});
   }
-  if (frame.y_lo < 0 && frame.y_hi > 0) {
-    const double py = frame.to_pixel(0, 0).y;
+  if (!panel.log_y && frame.y_lo < 0 && frame.y_hi > 0) {
+    const double py = frame.to_pixel(1, 0).y;
     fig.lines.push_back({{{L, py}, {R, py}}, {150, 150, 150}, 1.0});
   }
   DrawnData drawn{fig.lines.size(), 0, fig.markers.size()};
@@ -166,7 +188,9 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
     line.colour = s.colour.value_or(series_colour(index));
     line.width = s.width;
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
+      if (!std::isfinite(axis_value(s.x[i], panel.log_x)) ||
+          !std::isfinite(axis_value(s.y[i], panel.log_y)))
+        continue;
       line.points.push_back(frame.to_pixel(s.x[i], s.y[i]));
     }
     if (s.marker != MarkerShape::kNone)
@@ -177,6 +201,22 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
     ++index;
   }
   drawn.line_end = fig.lines.size();
+  for (const Mark& m : panel.marks) {
+    if (!std::isfinite(axis_value(m.x, panel.log_x)) ||
+        !std::isfinite(axis_value(m.y, panel.log_y)))
+      continue;
+    const Point2 p = frame.to_pixel(m.x, m.y);
+    fig.markers.push_back(
+        {marker_outline(MarkerShape::kDiamond, p, m.size), m.colour, kBlack, 1.0});
+    // Beside the marker, on the side with room (about 6.5 px per character at 11 pt).
+    const bool left = p.x + 10 + 6.5 * static_cast<double>(m.text.size()) > R;
+    fig.texts.push_back({{left ? p.x - m.size : p.x + m.size, p.y},
+                         m.text,
+                         11,
+                         kBlack,
+                         left ? HAlign::kRight : HAlign::kLeft,
+                         VAlign::kCentre});
+  }
   fig.lines.push_back({{{L, B}, {R, B}, {R, T}, {L, T}, {L, B}}, kFrame, 1.0});
   fig.texts.push_back(
       {{(L + R) / 2, y0 + 4}, panel.x_title, 12, kBlack, HAlign::kCentre, VAlign::kBottom});

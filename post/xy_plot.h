@@ -2,6 +2,7 @@
 // titles (with units) and a legend. Data in any units; the mapping to pixels is linear.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +53,15 @@ std::vector<double> scaled(const std::vector<double>& v, double divisor);
 // The largest |value| of v (0 for an empty series).
 double peak_of(const std::vector<double>& v);
 
+// A point marked on a panel with its own text beside it, e.g. a curve's true peak taken from
+// elsewhere than the drawn samples: a diamond of `colour` (black outline) and the text in black.
+struct Mark {
+  double x = 0.0, y = 0.0;  // data units of the panel
+  std::string text;         // drawn right of the marker (left of it near the right edge)
+  Rgb colour{0, 0, 0};
+  double size = 11.0;  // px across
+};
+
 struct Panel {
   std::string title;
   std::string x_title, y_title;  // with units, e.g. "time [s]"
@@ -63,13 +73,20 @@ struct Panel {
   // Where the legend goes: top right, bottom right, or whichever of the two the data cross less.
   enum class LegendAt { kTopRight, kBottomRight, kBest };
   LegendAt legend_at = LegendAt::kTopRight;
+  // Logarithmic axes: decades with log_ticks; values <= 0 are not drawn (nor symmetric_y,
+  // y_from_zero, equal_axes on that axis).
+  bool log_x = false, log_y = false;
+  std::vector<Mark> marks{};  // inside the data range; drawn above the series
 };
 
 // Where a panel's data lands on the figure (for tests and overlays).
 struct PanelFrame {
   double left = 0, bottom = 0, width = 0, height = 0;  // plot area, px
-  double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;       // data range shown
+  double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;       // data range shown (log10 on a log axis)
+  bool log_x = false, log_y = false;
   Point2 to_pixel(double x, double y) const {
+    if (log_x) x = std::log10(x);
+    if (log_y) y = std::log10(y);
     return {left + (x - x_lo) / (x_hi - x_lo) * width,
             bottom + (y - y_lo) / (y_hi - y_lo) * height};
   }

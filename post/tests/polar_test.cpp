@@ -160,6 +160,12 @@ TEST(PostPolar, CommandWritesEnvelopeAndContourFromAStudy) {
     }
   }
   EXPECT_EQ(rows, 24);
+  // The title states the filter that chose the rows drawn.
+  PolarStudyOptions where;
+  where.quantity = "u_base";
+  where.where = {{"gap", "0.1"}};
+  EXPECT_EQ(read_polar_study(db, where).envelope.title,
+            "u_base against incidence angle (where gap = 0.1)");
   // -o a directory, as for every command: the default names inside it.
   r = test::run_post("polar " + db + " --quantity u_base -o " + (dir / "figures").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;

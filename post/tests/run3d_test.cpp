@@ -14,6 +14,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -24,6 +25,7 @@
 #include "post/plot_run3d.h"
 #include "post/run_data.h"
 #include "post_test_support.h"
+#include "solver/core/constants.h"
 
 namespace isopound::post {
 namespace {
@@ -269,6 +271,28 @@ TEST(PostRun3D, AnimateFramesReadBackWithRangesAndContactBlocksExactlyWhileInCon
   const test::Image tr = test::read_png((dir / "plot" / "trajectory.png").string());
   EXPECT_EQ(tr.width, 1400);
   EXPECT_GT(tr.variance(), 50.0);
+  // The time histories mark summary.json's peak of the base slab's centre-of-mass acceleration
+  // (over every step) with its value and time in the legend and a marker at that place.
+  {
+    const std::vector<NamedFigure> figures = run_figures3d(run);
+    ASSERT_EQ(figures.front().frames.size(), 5u);
+    const auto& peak = summary["buildings_3d"][0]["levels"][0]["centre_of_mass"]
+                              ["absolute_acceleration"]["resultant"];
+    const double a = peak_value(peak) / kGravity, at = peak.at("time_s").get<double>();
+    char want[96];
+    std::snprintf(want, sizeof want, "building/base — peak %.4g g at %.3f s", a, at);
+    bool legend = false;
+    for (const auto& t : figures.front().figure.texts) legend = legend || t.text == want;
+    EXPECT_TRUE(legend) << want;
+    const auto p = figures.front().frames[2].to_pixel(at, a);
+    bool marker = false;
+    for (const auto& m : figures.front().figure.markers) {
+      double x = 0, y = 0;
+      for (const auto& q : m.points) x += q.x / m.points.size(), y += q.y / m.points.size();
+      marker = marker || std::hypot(x - p.x, y - p.y) < 1e-9;
+    }
+    EXPECT_TRUE(marker);
+  }
   const std::vector<CornerDrift> drifts = corner_drifts(run);
   ASSERT_EQ(drifts.size(), 4u);  // 2 storeys of each building
   std::size_t i = 0;

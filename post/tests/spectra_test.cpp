@@ -160,12 +160,12 @@ TEST(PostSpectra, RotD100IsTheMaximumOver180AnglesAndAtLeastRotD50) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(PostSpectra, StatisticsAreMeanAndSampleSigma) {
-  Spectrum a{"a", {1.0}, {1.0}, {2.0}}, b{"b", {1.0}, {3.0}, {6.0}};
+TEST(PostSpectra, StatisticsAreLogSpaceMedianAndSampleSigmaLn) {
+  Spectrum a{"a", {1.0}, {1.0}, {2.0}}, b{"b", {1.0}, {4.0}, {8.0}};
   const SpectrumStatistics st = spectrum_statistics({a, b});
-  EXPECT_DOUBLE_EQ(st.mean_sd[0], 2.0);
-  EXPECT_DOUBLE_EQ(st.sigma_sd[0], std::sqrt(2.0));
-  EXPECT_DOUBLE_EQ(st.mean_psa[0], 4.0);
+  EXPECT_DOUBLE_EQ(st.median_sd[0], 2.0);  // exp(mean(ln 1, ln 4))
+  EXPECT_DOUBLE_EQ(st.sigma_ln_sd[0], std::log(4.0) / std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(st.median_psa[0], 4.0);
 }
 
 }  // namespace
