@@ -208,6 +208,69 @@ TEST(PostTimeline, EveryContactEpisodeGetsItsFramesWithinTheBudgetAndSlowMotionS
   for (const Episode& e : episodes) EXPECT_GE(frames_within(tight, e.start, e.end), 8u);
 }
 
+// 2D: the thesis building between rigid walls 10 cm away under the built-in pulse.
+constexpr const char* kWallRun2D = R"(building:
+  name: 3-storey
+  base: {mass: 340 t}
+  floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
+  isolator: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm, n: 2, A: 1, beta: 0.5, gamma: 0.5}
+  walls: {sides: both, level: 0, gap: 10 cm, mass: 500 t, law: kelvin_voigt, k: 2500 kN/mm, e: 0.7}
+analysis: {t_end: 10 s}
+output: {interval: 0.001 s}
+)";
+
+TEST(PostTimeline, TwoDimensionalEpisodesFromTheForceHistoriesGetTheirFramesToo) {
+  const fs::path dir = test::scratch_dir("pv-2d");
+  std::ofstream(dir / "walls.yaml") << kWallRun2D;
+  auto r =
+      test::run_solver("run -q " + (dir / "walls.yaml").string() + " -o " + (dir / "run").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Episodes read here: runs of rows with a positive wall force, from the row before to the row
+  // after.
+  std::ifstream csv(dir / "run" / "histories.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::string> header;
+  {
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) header.push_back(cell);
+  }
+  std::vector<std::size_t> force_columns;
+  for (std::size_t c = 0; c < header.size(); ++c)
+    if (header[c].find("/wall ") != std::string::npos &&
+        header[c].find(" force [N]") != std::string::npos)
+      force_columns.push_back(c);
+  ASSERT_EQ(force_columns.size(), 2u) << line;
+  std::vector<double> time;
+  std::vector<std::vector<double>> force(2);
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    time.push_back(std::stod(cells[0]));
+    for (int k = 0; k < 2; ++k) force[k].push_back(std::stod(cells[force_columns[k]]));
+  }
+  std::vector<std::pair<double, double>> episodes;
+  for (const auto& f : force)
+    for (std::size_t i = 0; i < f.size();) {
+      if (!(f[i] > 0.0)) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < f.size() && f[j] > 0.0) ++j;
+      episodes.emplace_back(time[i > 0 ? i - 1 : 0], time[std::min(j, f.size() - 1)]);
+      i = j;
+    }
+  ASSERT_GE(episodes.size(), 3u) << "the run must pound";
+  r = test::run_post("animate " + (dir / "run").string() + " -o " + (dir / "anim").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto times = pvd_times(dir / "anim" / "animation.pvd");
+  for (const auto& [a, b] : episodes) EXPECT_GE(frames_within(times, a, b), 8u) << a << ".." << b;
+  EXPECT_NE(r.output.find(std::to_string(episodes.size()) + " contact episodes"), std::string::npos)
+      << r.output;
+}
+
 TEST(PostTimeline, EarlierFramesAreRemovedOnlyWhenThisToolWroteThem) {
   const fs::path run = wall_run() / "run";
   const fs::path out = test::scratch_dir("pv-stale");
