@@ -264,7 +264,8 @@ int run_demo(const std::string& out_dir, bool quiet, bool pictures) {
   if (!quiet) std::printf("\nDrawing the run (isopound-post, headless)...\n");
   std::fflush(stdout);
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"plot", out_dir}, std::vector<std::string>{"animate", out_dir}})
+       {std::vector<std::string>{"plot", out_dir}, std::vector<std::string>{"animate", out_dir},
+        std::vector<std::string>{"floor-spectra", out_dir}})
     if (run_program(post, args) != 0) {
       std::fprintf(stderr, "isopound: error: isopound-post %s %s failed\n", args[0].c_str(),
                    out_dir.c_str());
@@ -274,8 +275,9 @@ int run_demo(const std::string& out_dir, bool quiet, bool pictures) {
     const fs::path dir(out_dir);
     std::printf("Results:    %s  (summary.json, histories.csv, contact_events.csv, model.yaml)\n",
                 dir.string().c_str());
-    std::printf("Pictures:   %s  (time_histories, trajectory, contacts, hysteresis .png)\n",
-                dir.string().c_str());
+    std::printf(
+        "Pictures:   %s  (time_histories, trajectory, contacts, hysteresis, floor-spectra .png)\n",
+        dir.string().c_str());
     std::printf("Animation:  %s  (animation.pvd: slowed down at every impact; view.py)\n",
                 (dir / "animation").string().c_str());
     std::printf("Watch it in ParaView:  paraview --script=%s\n",
