@@ -39,4 +39,27 @@ RunData load_run(const std::string& dir, const std::string& model) {
   }
 }
 
+std::vector<std::pair<std::string, std::string>> parse_where(
+    const std::vector<std::string>& where) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& w : where) {
+    const auto eq = w.find('=');
+    if (eq == std::string::npos || eq == 0) throw BadInput("--where '" + w + "': write AXIS=VALUE");
+    out.push_back({w.substr(0, eq), w.substr(eq + 1)});
+  }
+  return out;
+}
+
+std::string study_figure_stem(const std::string& db, const std::string& out,
+                              const std::string& name) {
+  namespace fs = std::filesystem;
+  fs::path png = out.empty() ? fs::path(db).parent_path() / name : fs::path(out);
+  if (png.extension() == ".png" || png.extension() == ".PNG")
+    png.replace_extension();
+  else if (!out.empty())
+    png /= name;
+  if (!png.parent_path().empty()) fs::create_directories(png.parent_path());
+  return png.string();
+}
+
 }  // namespace isopound::post

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "post/run_data.h"
 
@@ -35,5 +37,13 @@ class Progress {
 
 // read_run with its notes printed on stderr; a RunDataError becomes BadInput.
 RunData load_run(const std::string& dir, const std::string& model);
+
+// --where AXIS=VALUE options of the study commands as (axis, value) pairs; BadInput otherwise.
+std::vector<std::pair<std::string, std::string>> parse_where(const std::vector<std::string>& where);
+
+// The path without extension of a study figure (its .png and .csv): `-o` is the output directory
+// (default: the database's) to write `name` into, or a .png file. Creates the directory.
+std::string study_figure_stem(const std::string& db, const std::string& out,
+                              const std::string& name);
 
 }  // namespace isopound::post

@@ -160,11 +160,7 @@ int run_plot(const std::string& dir, const std::string& out, const std::string& 
 
 int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<std::string>& where,
               const std::string& out) {
-  for (const std::string& w : where) {
-    const auto eq = w.find('=');
-    if (eq == std::string::npos || eq == 0) throw BadInput("--where '" + w + "': write AXIS=VALUE");
-    opt.where.push_back({w.substr(0, eq), w.substr(eq + 1)});
-  }
+  opt.where = parse_where(where);
   PolarStudyResult r;
   try {
     r = read_polar_study(db, opt);
@@ -176,14 +172,7 @@ int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<st
   // (its .csv beside it).
   const std::string name = fs::path(db).stem().string() + "-polar-" + opt.quantity +
                            (opt.contour_axis.empty() ? "" : "-" + opt.contour_axis);
-  fs::path png = out.empty() ? fs::path(db).parent_path() / name : fs::path(out);
-  if (out.empty() || (png.extension() != ".png" && png.extension() != ".PNG")) {
-    if (!out.empty()) png /= name;
-  } else {
-    png.replace_extension();
-  }
-  const std::string stem = png.string();
-  if (!fs::path(stem).parent_path().empty()) fs::create_directories(fs::path(stem).parent_path());
+  const std::string stem = study_figure_stem(db, out, name);
   write_text(stem + ".csv", r.csv);
   const PrivateDisplay display;
   render_png(opt.contour_axis.empty() ? polar_envelope_figure(r.envelope)
@@ -198,11 +187,7 @@ int run_polar(const std::string& db, PolarStudyOptions opt, const std::vector<st
 // A peak against a swept axis; -o as for polar: a directory (default: the database's) or a .png.
 int run_sweep_plot(const std::string& db, SweepPlotOptions opt,
                    const std::vector<std::string>& where, const std::string& out) {
-  for (const std::string& w : where) {
-    const auto eq = w.find('=');
-    if (eq == std::string::npos || eq == 0) throw BadInput("--where '" + w + "': write AXIS=VALUE");
-    opt.where.push_back({w.substr(0, eq), w.substr(eq + 1)});
-  }
+  opt.where = parse_where(where);
   SweepPlotData data;
   try {
     data = read_sweep_plot(db, opt);
@@ -212,13 +197,7 @@ int run_sweep_plot(const std::string& db, SweepPlotOptions opt,
   for (const std::string& n : data.notes)
     std::fprintf(stderr, "isopound-post: note: %s\n", n.c_str());
   const std::string name = fs::path(db).stem().string() + "-sweep-" + opt.output + "-" + opt.x_axis;
-  fs::path png = out.empty() ? fs::path(db).parent_path() / name : fs::path(out);
-  if (png.extension() == ".png" || png.extension() == ".PNG")
-    png.replace_extension();
-  else if (!out.empty())
-    png /= name;
-  const std::string stem = png.string();
-  if (!png.parent_path().empty()) fs::create_directories(png.parent_path());
+  const std::string stem = study_figure_stem(db, out, name);
   write_text(stem + ".csv", sweep_plot_csv(data));
   const PrivateDisplay display;
   render_png(sweep_plot_figure(data), stem + ".png");
