@@ -15,11 +15,10 @@ TEST(PostDemo, DemoLeavesTheRunItsPicturesAndTheAnimationWithItsViewScript) {
   const fs::path dir = test::scratch_dir("demo") / "out";
   const auto r = test::run_solver("demo -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* file :
-       {"model.yaml", "summary.json", "histories.csv", "contact_events.csv", "time_histories.png",
-        "trajectory.png", "contacts.png", "hysteresis.png", "floor-spectra.png",
-        "floor-spectra.csv", "animation/animation.pvd",
-        "animation/view.py", "animation/frame_000000.vtu"})
+  for (const char* file : {"model.yaml", "summary.json", "histories.csv", "contact_events.csv",
+                           "time_histories.png", "trajectory.png", "contacts.png", "hysteresis.png",
+                           "floor-spectra.png", "floor-spectra.csv", "animation/animation.pvd",
+                           "animation/view.py", "animation/frame_000000.vtu"})
     EXPECT_TRUE(fs::exists(dir / file)) << file;
   // It pounds: every wall is struck, and the animation slows down at the impacts.
   std::ifstream sj(dir / "summary.json");

@@ -56,6 +56,27 @@ std::string building_2d(const std::string& k, const std::string& ground,
          ground + "  extra_time: 0 s\noutput: " + output + "\n";
 }
 
+// A 3D 2-storey building on Bouc-Wen bearings (2 x 2 bays of 6 m; `eccentricity` a YAML line or
+// "") under the built-in pulse pair (0.8 and 0.4 m/s, 1 s) at `angle`, histories at every sample.
+std::string building_3d(const std::string& eccentricity, const std::string& angle) {
+  return R"(structures:
+  - name: building
+    grid: {bays_x: [6 m, 6 m], bays_y: [6 m, 6 m]}
+    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
+    storeys: {count: 2, height: 3.2 m, mass: 300 t}
+    base: {mass: 300 t}
+)" + eccentricity +
+         R"(    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm, n: 2, A: 1, beta: 0.5, gamma: 0.5}
+ground_motion:
+  L: {pulse: {amplitude: 0.8 m/s, period: 1 s, t_peak: 2 s, duration: 5 s, dt: 0.005 s}}
+  T: {pulse: {amplitude: 0.4 m/s, period: 1 s, t_peak: 2 s, duration: 5 s, dt: 0.005 s}}
+  angle: )" +
+         angle + R"(
+  extra_time: 0 s
+output: {interval: 0 s}
+)";
+}
+
 std::filesystem::path solve(const std::filesystem::path& dir, const std::string& model) {
   write_file(dir / "model.yaml", model);
   const auto run = dir / "run";
@@ -256,20 +277,7 @@ TEST(PostFloorSpectra, RowsDenserThanTheStepsDoNotRelaxTheRule) {
 // is 6e-17, hence 1e-12) and RotD50 <= RotD100.
 TEST(PostFloorSpectra, ThreeDCornersOfANonRotatingBuildingMatchTheCentre) {
   const auto dir = test::scratch_dir("floor-3d");
-  const auto run_dir = solve(dir, R"(structures:
-  - name: building
-    grid: {bays_x: [6 m, 6 m], bays_y: [6 m, 6 m]}
-    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 2, height: 3.2 m, mass: 300 t}
-    base: {mass: 300 t}
-    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm, n: 2, A: 1, beta: 0.5, gamma: 0.5}
-ground_motion:
-  L: {pulse: {amplitude: 0.8 m/s, period: 1 s, t_peak: 2 s, duration: 5 s, dt: 0.005 s}}
-  T: {pulse: {amplitude: 0.4 m/s, period: 1 s, t_peak: 2 s, duration: 5 s, dt: 0.005 s}}
-  angle: 0 deg
-  extra_time: 0 s
-output: {interval: 0 s}
-)");
+  const auto run_dir = solve(dir, building_3d("", "0 deg"));
   const RunData run = read_run(run_dir);
   ASSERT_TRUE(run.three_d);
   FloorSpectraOptions o;
@@ -330,21 +338,7 @@ output: {interval: 0 s}
 // response). The other sign (a_x + p_y a_theta) moves a corner's x peak by about 10 %.
 TEST(PostFloorSpectra, ThreeDPlanPointsPeakAsTheSolversProbes) {
   const auto dir = test::scratch_dir("floor-ecc");
-  const auto run_dir = solve(dir, R"(structures:
-  - name: building
-    grid: {bays_x: [6 m, 6 m], bays_y: [6 m, 6 m]}
-    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 2, height: 3.2 m, mass: 300 t}
-    base: {mass: 300 t}
-    eccentricity: [1.2 m, 0.6 m]
-    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm, n: 2, A: 1, beta: 0.5, gamma: 0.5}
-ground_motion:
-  L: {pulse: {amplitude: 0.8 m/s, period: 1 s, t_peak: 2 s, duration: 5 s, dt: 0.005 s}}
-  T: {pulse: {amplitude: 0.4 m/s, period: 1 s, t_peak: 2 s, duration: 5 s, dt: 0.005 s}}
-  angle: 20 deg
-  extra_time: 0 s
-output: {interval: 0 s}
-)");
+  const auto run_dir = solve(dir, building_3d("    eccentricity: [1.2 m, 0.6 m]\n", "20 deg"));
   const RunData run = read_run(run_dir);
   FloorSpectraOptions o;
   o.periods = {0.0, 0.5, 1.0};

@@ -15,7 +15,6 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
-#include <sstream>
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -23,6 +22,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "post/contact_log.h"
 #include "post/headless.h"
 #include "post/paraview_run.h"
 #include "post_test_support.h"
@@ -64,10 +64,7 @@ std::vector<Episode> log_episodes(const fs::path& csv) {
   std::getline(in, line);
   std::map<std::string, std::vector<std::vector<std::string>>> rows;
   while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    const std::vector<std::string> cells = split_csv(line);
     rows[cells.at(1)].push_back(cells);
   }
   std::vector<Episode> out;
@@ -94,14 +91,8 @@ std::vector<Episode> log_episodes(const fs::path& csv) {
 }
 
 std::vector<double> pvd_times(const fs::path& pvd) {
-  std::ifstream in(pvd);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  const std::regex item(R"re(timestep="([^"]+)")re");
   std::vector<double> times;
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), item); it != std::sregex_iterator(); ++it)
-    times.push_back(std::stod((*it)[1]));
+  for (const auto& [t, file] : test::read_pvd(pvd)) times.push_back(t);
   return times;
 }
 
@@ -230,11 +221,7 @@ TEST(PostTimeline, TwoDimensionalEpisodesFromTheForceHistoriesGetTheirFramesToo)
   std::ifstream csv(dir / "run" / "histories.csv");
   std::string line;
   std::getline(csv, line);
-  std::vector<std::string> header;
-  {
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) header.push_back(cell);
-  }
+  const std::vector<std::string> header = split_csv(line);
   std::vector<std::size_t> force_columns;
   for (std::size_t c = 0; c < header.size(); ++c)
     if (header[c].find("/wall ") != std::string::npos &&
@@ -244,9 +231,7 @@ TEST(PostTimeline, TwoDimensionalEpisodesFromTheForceHistoriesGetTheirFramesToo)
   std::vector<double> time;
   std::vector<std::vector<double>> force(2);
   while (std::getline(csv, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    const std::vector<std::string> cells = split_csv(line);
     time.push_back(std::stod(cells[0]));
     for (int k = 0; k < 2; ++k) force[k].push_back(std::stod(cells[force_columns[k]]));
   }

@@ -5,7 +5,11 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "png_image.h"
@@ -30,6 +34,19 @@ inline ::isopound::test::CommandResult run_post(const std::string& args) {
 }
 inline ::isopound::test::CommandResult run_solver(const std::string& args) {
   return ::isopound::test::run_command(std::string(ISOPOUND_BINARY) + " " + args);
+}
+
+// The DataSets of a .pvd collection in file order: (timestep, file).
+inline std::vector<std::pair<double, std::string>> read_pvd(const std::filesystem::path& pvd) {
+  std::ifstream in(pvd);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  const std::regex item("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+  std::vector<std::pair<double, std::string>> frames;
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), item); it != std::sregex_iterator(); ++it)
+    frames.push_back({std::stod((*it)[1]), (*it)[2]});
+  return frames;
 }
 
 using ::isopound::test::Image;

@@ -151,14 +151,7 @@ TEST(PostRun3D, AnimateFramesReadBackWithRangesAndContactBlocksExactlyWhileInCon
   ASSERT_GT(peak_bearing, 0.0);
 
   // The .pvd: one DataSet per frame at k / fps.
-  std::ifstream pvd(dir / "anim" / "animation.pvd");
-  std::stringstream text;
-  text << pvd.rdbuf();
-  const std::string s = text.str();
-  const std::regex item("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
-  std::vector<std::pair<double, std::string>> frames;
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), item); it != std::sregex_iterator(); ++it)
-    frames.push_back({std::stod((*it)[1]), (*it)[2]});
+  const auto frames = test::read_pvd(dir / "anim" / "animation.pvd");
   ASSERT_EQ(frames.size(), static_cast<std::size_t>(std::floor(t_end * fps + 1e-9)) + 1);
 
   const RunData run = read_run(dir / "run", (dir / "two.yaml").string());

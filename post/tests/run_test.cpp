@@ -85,15 +85,13 @@ TEST(PostAnimate, EveryFrameReadsBackWithItsArraysAndContactsOnlyWhileInContact)
   ASSERT_GT(peak_force, 0.0);
 
   // The .pvd: one DataSet per frame at k / fps, files in order.
-  std::ifstream pvd(out / "animation.pvd");
-  std::stringstream text;
-  text << pvd.rdbuf();
-  const std::string s = text.str();
-  EXPECT_NE(s.find("<VTKFile type=\"Collection\""), std::string::npos);
-  const std::regex item("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
-  std::vector<std::pair<double, std::string>> frames;
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), item); it != std::sregex_iterator(); ++it)
-    frames.push_back({std::stod((*it)[1]), (*it)[2]});
+  {
+    std::ifstream pvd(out / "animation.pvd");
+    std::stringstream text;
+    text << pvd.rdbuf();
+    EXPECT_NE(text.str().find("<VTKFile type=\"Collection\""), std::string::npos);
+  }
+  const auto frames = test::read_pvd(out / "animation.pvd");
   const double t_end = 12.0;  // --end: the strong motion (the rest is free vibration)
   ASSERT_EQ(frames.size(), static_cast<std::size_t>(std::floor(t_end * fps + 1e-9)) + 1);
 
