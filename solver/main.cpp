@@ -1,9 +1,6 @@
 // isopound command line: run a model, show its modes, check it, run the built-in demo, or
 // compute the overlap of convex polygons (geometry overlap).
 // Errors are printed as "file:line:col: key: what" and give a non-zero exit code.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
@@ -23,6 +20,7 @@
 #include "geometry/overlap.h"
 #include "solver/core/constants.h"
 #include "solver/core/modes.h"
+#include "solver/io/child_process.h"
 #include "solver/io/computed_defaults.h"
 #include "solver/io/demo_model.h"
 #include "solver/io/model_input.h"
@@ -218,29 +216,7 @@ std::string find_post_program() {
   std::error_code ec;
   const fs::path beside = fs::read_symlink("/proc/self/exe", ec).parent_path() / "isopound-post";
   if (!ec && access(beside.c_str(), X_OK) == 0) return beside.string();
-  const char* path = std::getenv("PATH");
-  std::istringstream dirs(path ? path : "");
-  for (std::string dir; std::getline(dirs, dir, ':');)
-    if (!dir.empty() && access((fs::path(dir) / "isopound-post").c_str(), X_OK) == 0)
-      return (fs::path(dir) / "isopound-post").string();
-  return "";
-}
-
-// Runs `program args...` with its standard output discarded (its errors stay on stderr).
-int run_program(const std::string& program, std::vector<std::string> args) {
-  args.insert(args.begin(), program);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  const int spawned = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), ::environ);
-  posix_spawn_file_actions_destroy(&actions);
-  int status = 0;
-  if (spawned != 0 || waitpid(pid, &status, 0) < 0) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return find_on_path("isopound-post");
 }
 
 // `isopound demo`: the 3D pounding demo, then its pictures and animation through isopound-post.
@@ -263,10 +239,12 @@ int run_demo(const std::string& out_dir, bool quiet, bool pictures) {
   }
   if (!quiet) std::printf("\nDrawing the run (isopound-post, headless)...\n");
   std::fflush(stdout);
+  ChildOptions quiet_child;
+  quiet_child.output_file = "/dev/null";  // its "Wrote ..." lines: the summary below says it all
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"plot", out_dir}, std::vector<std::string>{"animate", out_dir},
         std::vector<std::string>{"floor-spectra", out_dir}})
-    if (run_program(post, args) != 0) {
+    if (run_child(post, args, quiet_child).exit_code != 0) {
       std::fprintf(stderr, "isopound: error: isopound-post %s %s failed\n", args[0].c_str(),
                    out_dir.c_str());
       return kFailure;
