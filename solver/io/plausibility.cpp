@@ -67,7 +67,7 @@ constexpr std::array<PlausibleRange, 48> kRanges{{
   {"pga",          dim::kAcceleration, 0, 10 * kGravity, 0.005 * kGravity, 3 * kGravity, "g", kGravity, "a record's peak ground acceleration"},
   // "section.key" rows apply under that section only, before the key's own row (rubber is not
   // concrete: a 2 cm layer, a 10 MPa modulus).
-  {"bumper.thickness", dim::kLength, 0, 5, 0.005, 1, "cm", 1e-2, "a rubber bumper's thickness"},
+  {"bumper.thickness", dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a rubber bumper's thickness (0: none)"},
   {"bumper.E",     dim::kPressure, 0, 1e11, 1e5, 1e9, "MPa", 1e6, "a rubber bumper's modulus"},
   {"bumper.k",     dim::kHertzStiffness, 0, 1e16, 1e5, 1e14, "kN/m^1.5", 1e3, "a Hertz-type bumper stiffness"},
   {"bumper.area",  kArea, 0, 1e4, 1e-4, 100, "m2", 1, "a bumper's contact area"},

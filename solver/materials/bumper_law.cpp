@@ -119,7 +119,7 @@ ImpactResponse BumperLaw::respond(double delta, double rate, const ImpactPhase& 
   const double g = 1.0 + phase.damping / k_ * rate;  // 1 + zeta rate / v_imp
   if (g > 0) {
     r.force = k_ * p.value * g;
-    r.stiffness = delta < bottom_ ? k_ * p.slope * g : 0.0;
+    r.stiffness = delta <= bottom_ ? k_ * p.slope * g : 0.0;  // at s: the left limit
     r.damping = phase.damping * p.value;
   }
   if (delta > bottom_) {
