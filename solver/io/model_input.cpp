@@ -386,9 +386,12 @@ BumperConfig read_bumper(const InputNode& node, double gap) {
   BumperConfig b;
   const InputNode thickness = node.required("thickness");
   b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);
-  if (b.thickness > gap)
-    thickness.fail("the bumper (" + std::to_string(b.thickness) + " m) is thicker than the gap (" +
-                   std::to_string(gap) + " m)");
+  if (b.thickness > gap) {
+    char what[120];
+    std::snprintf(what, sizeof what, "the bumper (%g cm) is thicker than the gap (%g cm)",
+                  100 * b.thickness, 100 * gap);
+    thickness.fail(what);
+  }
   node.read_choice<std::string>("law", {{"linear", "linear"}, {"hertz", "hertz"}}, b.law);
   const double n = b.law == "hertz" ? 1.5 : 1.0;
   if (const auto k = node.find("k")) {
