@@ -8,6 +8,7 @@
 
 #include "solver/elements/contact_step.h"
 #include "solver/elements/witness.h"
+#include "solver/materials/bumper_law.h"
 
 namespace isopound {
 
@@ -27,6 +28,7 @@ Contact1D::Contact1D(std::string label, ContactBody a, ContactBody b, double gap
       steps_per_contact_(steps_per_contact) {
   committed_.delta = -gap;
   trial_ = committed_;
+  bumper_ = dynamic_cast<const BumperLaw*>(law_.get());
 }
 
 double Contact1D::kinematics(const Eigen::VectorXd& x) const {
@@ -46,6 +48,7 @@ void Contact1D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
   T.started = T.ended = false;
   T.onset_fraction = 1.0;
   T.end_indentation = 0.0;
+  T.rubber_damping_force = 0.0;
 
   if (freeze_) {
     // A step cut to end at an event: the status changes only in settle_event().
@@ -83,16 +86,17 @@ void Contact1D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
       T.force = r.force;
       T.stiffness = r.stiffness;
       T.damping = r.damping;
-      // Recoverable energy of the elastic part F_e(delta) = F(delta, 0): exact for a power law
-      // F_e = K delta^n, whose integral is F_e delta / (n + 1) with n = delta F_e' / F_e.
-      const ImpactResponse elastic = law_->respond(std::max(T.delta, 0.0), 0.0, T.phase);
-      const double denominator = elastic.force + T.delta * elastic.stiffness;
-      if (elastic.force > 0 && denominator > 0)
-        stored = elastic.force * elastic.force * T.delta / denominator;
+      stored = law_->stored_energy(T.delta, T.phase);  // of the elastic part F(delta, 0)
+      if (bumper_ && T.force > 0)
+        T.rubber_damping_force = bumper_->rubber_damping_force(T.delta, T.rate, T.phase);
     }
   }
   trial_stored_ = stored;
   trial_work_ = work_ + 0.5 * h_ * (C.force * C.rate + T.force * T.rate);
+  if (bumper_)
+    trial_rubber_work_ =
+        rubber_work_ +
+        0.5 * h_ * (C.rubber_damping_force * C.rate + T.rubber_damping_force * T.rate);
 }
 
 void Contact1D::add_force(Eigen::VectorXd& f) const {
@@ -135,6 +139,18 @@ void Contact1D::commit() {
   if (h_ > 0) rate_change_ = std::abs(trial_.rate - committed_.rate) / h_;
   work_ = trial_work_;
   stored_ = trial_stored_;
+  if (bumper_) {
+    time_ += h_;
+    rubber_work_ = trial_rubber_work_;
+    if (trial_.in_contact) {
+      peak_compression_ = std::max(peak_compression_, bumper_->compression(trial_.delta));
+      const double s = bumper_->stage_penetration();
+      if (committed_.delta <= s && trial_.delta > s) {  // bottomed out in this step
+        ++bottomings_;
+        if (first_bottoming_ < 0) first_bottoming_ = time_;
+      }
+    }
+  }
   committed_ = trial_;
   steps_in_contact_ = trial_.started ? 0 : steps_in_contact_ + 1;
 }
@@ -143,6 +159,7 @@ void Contact1D::revert() {
   trial_ = committed_;
   trial_stored_ = stored_;
   trial_work_ = work_;
+  trial_rubber_work_ = rubber_work_;
 }
 
 double Contact1D::event_fraction() {
@@ -182,6 +199,13 @@ double Contact1D::event_fraction() {
   }
   if (C.in_contact && T.in_contact && C.rate > 0 && T.rate <= 0)  // approach -> restitution
     consider(C.rate / (C.rate - T.rate), Event::kPhase);
+  // A bumper bottoming out (or coming back): the force is continuous but its slope jumps by
+  // the wall's stiffness, so the step ends there too.
+  if (const double s = law_->stage_penetration(); s < 1e300 && C.in_contact && T.in_contact) {
+    const WitnessStep ws{C.delta - s, C.rate, T.delta - s, T.rate, h_};
+    const double f = first_status_change(ws, C.delta > s);
+    if (f < 1.0) consider(f, Event::kPhase);
+  }
   return theta;
 }
 
@@ -251,13 +275,20 @@ double Contact1D::step_limit() const {
 }
 
 std::string Contact1D::output_name(int i) const {
-  static const char* kNames[] = {"force",           "penetration", "impacts",
-                                 "impact_velocity", "indentation", "dissipated_energy"};
+  static const char* kNames[] = {"force",
+                                 "penetration",
+                                 "impacts",
+                                 "impact_velocity",
+                                 "indentation",
+                                 "dissipated_energy",
+                                 "bumper_compression",
+                                 "bottomings",
+                                 "bumper_dissipated_energy"};
   return kNames[i];
 }
 
 std::string Contact1D::output_unit(int i) const {
-  static const char* kUnits[] = {"N", "m", "-", "m/s", "m", "J"};
+  static const char* kUnits[] = {"N", "m", "-", "m/s", "m", "J", "m", "-", "J"};
   return kUnits[i];
 }
 
@@ -268,10 +299,15 @@ void Contact1D::outputs(double* out) const {
   out[3] = std::max(max_impact_velocity_, trial_.started ? trial_.phase.impact_velocity : 0.0);
   out[4] = indentation_ + (trial_.ended ? trial_.end_indentation : 0.0);
   out[5] = trial_work_ - trial_stored_;
+  if (!bumper_) return;
+  out[6] = trial_.in_contact ? bumper_->compression(trial_.delta) : 0.0;
+  const double s = bumper_->stage_penetration();
+  out[7] = bottomings_ + (trial_.in_contact && committed_.delta <= s && trial_.delta > s ? 1 : 0);
+  out[8] = trial_rubber_work_;
 }
 
 double Contact1D::output(int i) const {
-  double values[6];
+  double values[9];
   outputs(values);
   return values[i];
 }

@@ -27,6 +27,8 @@ struct ContactBody {
 // upwards: the law gets the approach rate at that instant (Hermite interpolation inside the
 // step) as v_imp. It ends when delta returns to 0 or, for a law without tension, when its
 // force reaches 0: the penetration there stays as a permanent indentation that widens the gap.
+class BumperLaw;
+
 class Contact1D final : public Element {
  public:
   Contact1D(std::string label, ContactBody a, ContactBody b, double gap,
@@ -52,7 +54,9 @@ class Contact1D final : public Element {
   bool settle_event() override;
   double step_limit() const override;
 
-  int output_count() const override { return 6; }
+  // 6 for every law; a bumper adds 3 at the end: bumper_compression, bottomings,
+  // bumper_dissipated_energy.
+  int output_count() const override { return bumper_ ? 9 : 6; }
   std::string output_name(int i) const override;
   std::string output_unit(int i) const override;
   double output(int i) const override;
@@ -75,6 +79,15 @@ class Contact1D final : public Element {
   double force() const { return trial_.force; }
   double penetration() const { return trial_.delta; }
 
+  // With a bumper (bumper_law.h; nullptr otherwise): its peak compression (m), the number of
+  // times it bottomed out, the first time (s from the start, < 0 if never) and the energy its
+  // rubber dissipated (J, the work of its damping part).
+  const BumperLaw* bumper() const { return bumper_; }
+  double bumper_peak_compression() const { return peak_compression_; }
+  int bottomings() const { return bottomings_; }
+  double first_bottoming_time() const { return first_bottoming_; }
+  double bumper_dissipated_energy() const { return rubber_work_; }
+
  private:
   // The state of the contact at the end of a (trial or committed) step.
   struct State {
@@ -91,6 +104,7 @@ class Contact1D final : public Element {
     double onset_fraction = 1.0;
     double onset_rate = 0.0;       // approach rate at delta = 0 of a contact begun this step
     double end_indentation = 0.0;  // penetration left when a no-tension contact ended
+    double rubber_damping_force = 0.0;  // N, a bumper's damping part
   };
   double kinematics(const Eigen::VectorXd& x) const;
 
@@ -118,6 +132,12 @@ class Contact1D final : public Element {
   double max_penetration_ = 0.0;
   double work_ = 0.0, trial_work_ = 0.0;      // work of the contact force on the bodies, J
   double stored_ = 0.0, trial_stored_ = 0.0;  // recoverable energy of the contact, J
+  const BumperLaw* bumper_ = nullptr;         // law_ when it is a bumper
+  double time_ = 0.0;                         // committed time, s (sum of the accepted steps)
+  double peak_compression_ = 0.0;
+  int bottomings_ = 0;
+  double first_bottoming_ = -1.0;
+  double rubber_work_ = 0.0, trial_rubber_work_ = 0.0;  // J
 };
 
 }  // namespace isopound

@@ -378,9 +378,51 @@ ImpactLawUses read_impact(const InputNode& node, ImpactLawConfig& c) {
   return uses;
 }
 
+// A rubber bumper on the wall's face (bumper_law.h). Its face must stay behind the level's rest
+// position: thickness <= the smallest gap of the sides the wall has.
+BumperConfig read_bumper(const InputNode& node, double gap) {
+  node.expect_keys(
+      {"thickness", "law", "k", "E", "area", "e", "max_strain", "min_impact_velocity"});
+  BumperConfig b;
+  const InputNode thickness = node.required("thickness");
+  b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);
+  if (b.thickness > gap) {
+    char what[120];
+    std::snprintf(what, sizeof what, "the bumper (%g cm) is thicker than the gap (%g cm)",
+                  100 * b.thickness, 100 * gap);
+    thickness.fail(what);
+  }
+  node.read_choice<std::string>("law", {{"linear", "linear"}, {"hertz", "hertz"}}, b.law);
+  const double n = b.law == "hertz" ? 1.5 : 1.0;
+  if (const auto k = node.find("k")) {
+    for (const char* key : {"E", "area"})
+      if (written(node.yaml(), key))
+        node.find(key)->fail("give either k, or E and area (k = E A / t), not both");
+    b.k = k->quantity(Dimension{1.0 - n, 1.0, -2.0}, Bound::kPositive);
+  } else {
+    if (!written(node.yaml(), "E") && !written(node.yaml(), "area"))
+      node.fail_at_key("k", "missing required key 'k' (or E and area: k = E A / t)");
+    b.modulus = node.required("E").quantity(dim::kPressure, Bound::kPositive);
+    b.area = node.required("area").quantity(Dimension{2.0, 0.0, 0.0}, Bound::kPositive);
+  }
+  const InputNode e = node.required("e");
+  b.e = e.number(Bound::kPositive);
+  if (b.e > 1.0) e.fail("the coefficient of restitution must be in (0, 1]");
+  if (const auto strain = node.find("max_strain")) {
+    b.max_strain = strain->number();
+    if (!(b.max_strain > 0 && b.max_strain < 1))
+      strain->fail("max_strain must be in (0, 1) (a fraction of the thickness, e.g. 60 %)");
+  } else {
+    node.note_default("max_strain", "0.6");
+  }
+  node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive,
+                     b.min_impact_velocity);
+  return b;
+}
+
 WallConfig read_wall(const InputNode& node) {
-  std::vector<std::string_view> keys = {"sides", "gap",  "gap_left",  "gap_right",
-                                        "level", "mass", "stiffness", "damping"};
+  std::vector<std::string_view> keys = {"sides", "gap",       "gap_left", "gap_right", "level",
+                                        "mass",  "stiffness", "damping",  "bumper"};
   keys.insert(keys.end(), kImpactKeys.begin(), kImpactKeys.end());
   node.expect_keys(keys);
   WallConfig w;
@@ -408,6 +450,10 @@ WallConfig read_wall(const InputNode& node) {
   // A rigid wall's mass enters only the impact damping of the laws that use m_eff.
   if (w.stiffness > 0 || uses.mass)
     node.read_quantity("mass", dim::kMass, Bound::kPositive, w.mass);
+  if (const auto bumper = node.find("bumper")) {
+    const double gap = std::min(w.left ? w.gap_left : 1e300, w.right ? w.gap_right : 1e300);
+    w.bumper = read_bumper(*bumper, gap);
+  }
   return w;
 }
 

@@ -17,9 +17,10 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr Dimension kLinearMass{-1, 1, 0};  // kg/m
 constexpr Dimension kMoment{2, 1, -2};      // N m
+constexpr Dimension kArea{2, 0, 0};         // m^2
 
 // clang-format off
-constexpr std::array<PlausibleRange, 43> kRanges{{
+constexpr std::array<PlausibleRange, 48> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
@@ -64,6 +65,13 @@ constexpr std::array<PlausibleRange, 43> kRanges{{
   {"extra_time",   dim::kTime, 0, 1e4, 0, 300, "s", 1, "free vibration after the record"},
   {"scale",        dim::kNone, -100, 100, -20, 20, "", 1, "a record scale factor"},
   {"pga",          dim::kAcceleration, 0, 10 * kGravity, 0.005 * kGravity, 3 * kGravity, "g", kGravity, "a record's peak ground acceleration"},
+  // "section.key" rows apply under that section only, before the key's own row (rubber is not
+  // concrete: a 2 cm layer, a 10 MPa modulus).
+  {"bumper.thickness", dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a rubber bumper's thickness (0: none)"},
+  {"bumper.E",     dim::kPressure, 0, 1e11, 1e5, 1e9, "MPa", 1e6, "a rubber bumper's modulus"},
+  {"bumper.k",     dim::kHertzStiffness, 0, 1e16, 1e5, 1e14, "kN/m^1.5", 1e3, "a Hertz-type bumper stiffness"},
+  {"bumper.area",  kArea, 0, 1e4, 1e-4, 100, "m2", 1, "a bumper's contact area"},
+  {"max_strain",   dim::kNone, 0, 1, 0.2, 0.9, "%", 1e-2, "a bumper's compression limit"},
 }};
 // clang-format on
 
@@ -179,6 +187,13 @@ bool is_unchecked_key(std::string_view key) {
 
 const PlausibleRange* plausible_range_for(std::string_view key_path, const Dimension& d) {
   const std::string key = key_of(key_path);
+  // The section's own row first ("bumper.E" for building.walls.bumper.E).
+  const std::string generic = key_path.size() > key.size()
+                                  ? key_of(key_path.substr(0, key_path.find_last_of('.')))
+                                  : std::string();
+  if (!generic.empty())
+    for (const PlausibleRange& r : kRanges)
+      if (r.key == generic + "." + key && r.dimension == d) return &r;
   for (const PlausibleRange& r : kRanges)
     if (r.key == key && r.dimension == d) return &r;
   return nullptr;

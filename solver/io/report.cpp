@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "solver/elements/column_link.h"
+#include "solver/elements/contact.h"
 #include "solver/elements/polygon_contact.h"
 
 #include <cerrno>
@@ -20,6 +21,7 @@
 #include "solver/io/computed_defaults.h"
 #include "solver/io/report3d.h"
 #include "solver/io/report_damage2d.h"
+#include "solver/materials/bumper_law.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
 
@@ -59,8 +61,9 @@ const char* isolator_name(IsolatorConfig::Model m) {
   return "?";
 }
 
+// A 2D contact (6 outputs; 9 with a bumper, whose 3 come after the 6).
 bool is_contact(const Element& el) {
-  return el.output_count() == 6 && el.output_name(5) == "dissipated_energy";
+  return el.output_count() >= 6 && el.output_name(5) == "dissipated_energy";
 }
 
 // Impact-dissipated energy: the contacts' own dissipation at the end of the run.
@@ -313,12 +316,22 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     json je;
     je["label"] = el.label();
     for (int k = 0; k < el.output_count(); ++k) {
-      if (el.output_name(k) == "impacts") {  // a count: an integer, no peak shape
-        je["impacts"] = static_cast<long>(std::lround(r.element_outputs[e][k].value));
+      if (el.output_name(k) == "impacts" || el.output_name(k) == "bottomings") {  // counts
+        je[el.output_name(k)] = static_cast<long>(std::lround(r.element_outputs[e][k].value));
         continue;
       }
       je["peak_" + el.output_name(k)] =
           peak_json(r.element_outputs[e][k], el.output_unit(k).c_str());
+    }
+    const auto* contact = dynamic_cast<const Contact1D*>(&el);
+    if (contact && contact->bumper()) {
+      je["bumper"] = {{"thickness_m", contact->bumper()->thickness()},
+                      {"peak_compression_m", contact->bumper_peak_compression()},
+                      {"bottomings", contact->bottomings()},
+                      {"first_bottoming_s", contact->first_bottoming_time() >= 0
+                                                ? json(contact->first_bottoming_time())
+                                                : json(nullptr)},
+                      {"dissipated_J", contact->bumper_dissipated_energy()}};
     }
     elements.push_back(je);
   }
@@ -547,6 +560,21 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
         std::snprintf(line, sizeof line, "   %d impacts, max impact velocity %.3f m/s",
                       static_cast<int>(r.element_outputs[e][2].value),
                       r.element_outputs[e][3].value);
+        out << line;
+      }
+      const auto* contact = dynamic_cast<const Contact1D*>(&el);
+      if (contact && contact->bumper()) {
+        std::snprintf(line, sizeof line,
+                      "\n  %-22s bumper %.0f cm: peak compression %.2f cm, %d bottom-outs", "",
+                      100 * contact->bumper()->thickness(),
+                      100 * contact->bumper_peak_compression(), contact->bottomings());
+        out << line;
+        if (contact->bottomings() > 0) {
+          std::snprintf(line, sizeof line, " (first at %.3f s)", contact->first_bottoming_time());
+          out << line;
+        }
+        std::snprintf(line, sizeof line, ", rubber dissipated %.4g kJ",
+                      contact->bumper_dissipated_energy() / 1e3);
         out << line;
       }
       out << '\n';

@@ -435,6 +435,18 @@ ImpactLawUses impact_law_uses(std::string_view name) {
   throw std::invalid_argument("unknown impact law '" + std::string(name) + "'");
 }
 
+double ImpactLaw::stored_energy(double delta, const ImpactPhase& phase) const {
+  const ImpactResponse elastic = respond(std::max(delta, 0.0), 0.0, phase);
+  const double denominator = elastic.force + delta * elastic.stiffness;
+  if (elastic.force > 0 && denominator > 0)
+    return elastic.force * elastic.force * delta / denominator;
+  return 0.0;
+}
+
+double ImpactLaw::stage_penetration() const {
+  return std::numeric_limits<double>::infinity();
+}
+
 std::unique_ptr<ImpactLaw> make_impact_law(const ImpactLawConfig& config) {
   for (const LawEntry& law : kLaws) {
     if (law.name != config.law) continue;

@@ -15,6 +15,10 @@ struct ImpactPhase {
   double restitution = 0.0;      // e used for this contact (constant, or from v_imp by material)
   double damping = 0.0;          // the law's damping coefficient for this contact (c, xi_hat,
                                  // c_h factor or xi_h; meaning per law, documented in each)
+  // Behind a bumper (bumper_law.h): the wall law's own phase, begun with the same v_imp.
+  double wall_impact_velocity = 0.0;
+  double wall_restitution = 0.0;
+  double wall_damping = 0.0;
 };
 
 // Force of a law and its partial derivatives at (delta, rate).
@@ -53,6 +57,13 @@ class ImpactLaw {
   // false: a tensile force is set to 0 and the contact ends there, leaving a permanent
   // indentation (modified Kelvin-Voigt); true: tension is kept until delta returns to 0.
   virtual bool tension_allowed() const = 0;
+  // Recoverable energy at penetration delta (J): the integral of the elastic part
+  // F_e = F(delta, 0). The default is exact for a power law F_e = K delta^n:
+  // F_e delta / (n + 1) with n = delta F_e' / F_e. 0 outside contact.
+  virtual double stored_energy(double delta, const ImpactPhase& phase) const;
+  // Penetration at which the force changes its form (a bumper bottoming out), or +inf: the
+  // contact element ends a step there, as at the approach/restitution switch.
+  virtual double stage_penetration() const;
   virtual std::string_view name() const = 0;
   virtual std::unique_ptr<ImpactLaw> clone() const = 0;
 };

@@ -9,6 +9,7 @@
 #include "solver/core/analysis_config.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/excitation/ground_motion.h"
+#include "solver/materials/bumper_law.h"
 #include "solver/materials/impact_law.h"
 
 namespace isopound {
@@ -92,6 +93,9 @@ struct WallConfig {
   // ground motion. stiffness = 0: rigid, immovable; its mass enters only the impact damping.
   double stiffness = 0.0;      // N/m
   double damping_ratio = 0.0;  // of the wall's own oscillator
+  // Rubber bumper on the wall's face (thickness 0: none). The level then meets the bumper at
+  // gap - thickness; the wall's impact law acts once the rubber bottoms out (bumper_law.h).
+  BumperConfig bumper;
 };
 
 // A 2D shear building: optional base slab on isolators, floors bottom to top.

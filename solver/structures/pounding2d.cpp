@@ -30,14 +30,21 @@ int add_wall_structure(Model& model, const std::string& name, const WallConfig& 
   return dof;
 }
 
+// A bumper of thickness t > 0 moves the contact surface t closer (the gap to the rubber's face)
+// and wraps the wall's law; t = 0 is the bare wall, untouched.
 void add_contact(Model& model, const std::string& label, ContactBody a, ContactBody b, double gap,
-                 ImpactLawConfig impact, double mass_a, double mass_b, double steps_per_contact) {
+                 ImpactLawConfig impact, double mass_a, double mass_b, double steps_per_contact,
+                 const BumperConfig& bumper = {}) {
   if (!(gap >= 0)) throw std::invalid_argument(label + ": gap must be >= 0");
+  if (!(bumper.thickness >= 0 && bumper.thickness <= gap))
+    throw std::invalid_argument(label + ": bumper thickness must be in [0, gap]");
   impact.mass_1 = mass_a;
   impact.mass_2 = mass_b;
-  model.elements.push_back(std::make_unique<Contact1D>(label, a, b, gap, make_impact_law(impact),
-                                                       effective_mass(mass_a, mass_b),
-                                                       steps_per_contact));
+  std::unique_ptr<ImpactLaw> law = make_impact_law(impact);
+  if (bumper.thickness > 0) law = make_bumper_law(bumper, std::move(law));
+  model.elements.push_back(
+      std::make_unique<Contact1D>(label, a, b, gap - bumper.thickness, std::move(law),
+                                  effective_mass(mass_a, mass_b), steps_per_contact));
 }
 
 }  // namespace
@@ -78,7 +85,7 @@ void add_walls(Model& model, int structure, const BuildingConfig& building,
         model.structures[structure].base_contact_elements.push_back(
             static_cast<int>(model.elements.size()));
       add_contact(model, name, {level_dof, s}, wall_body, right ? wall.gap_right : wall.gap_left,
-                  wall.impact, level_mass, wall.mass, steps_per_contact);
+                  wall.impact, level_mass, wall.mass, steps_per_contact, wall.bumper);
     }
   }
 }

@@ -81,6 +81,12 @@ TEST(HotLoop, TwoDBuildingAllocatesNothing) {
   expect_no_allocation("tutorial.yaml");
 }
 
+// Rubber bumpers on the walls (issue 27): the bumper law and its outputs allocate nothing.
+TEST(HotLoop, TwoDBumpersAllocateNothing) {
+  ISOPOUND_REQUIRE_RECORDS();
+  expect_no_allocation("2d-bumpers.yaml");
+}
+
 TEST(HotLoop, EccentricBuildingAllocatesNothing) {
   ISOPOUND_REQUIRE_RECORDS();
   expect_no_allocation("3d-eccentric-v30.yaml");

@@ -1,0 +1,42 @@
+// Rubber strip in front of a moat wall's inner face (bumper_layer3d.h).
+#include "solver/structures/bumper_layer3d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace isopound {
+
+std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, double thickness,
+                                       BumperSpan span) {
+  if (wall.size() != 4 || side < 0 || side > 3)
+    throw std::invalid_argument("bumper layer: a moat wall is a rectangle on side 0-3");
+  if (!(thickness > 0)) throw std::invalid_argument("bumper layer: thickness must be > 0");
+  double x0 = wall[0].x, x1 = wall[0].x, y0 = wall[0].y, y1 = wall[0].y;
+  for (const Vec2& p : wall) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  }
+  const bool along_y = side <= 1;  // east and west walls run along y
+  const double start = along_y ? y0 : x0, length = along_y ? y1 - y0 : x1 - x0;
+  const double to = std::isinf(span.to) ? length : span.to;
+  if (!(span.from >= 0 && to <= length * (1 + 1e-12) && span.from < to))
+    throw std::invalid_argument(
+        "bumper layer: from = " + std::to_string(span.from) + " m, to = " + std::to_string(to) +
+        " m must satisfy 0 <= from < to <= the face length " + std::to_string(length) + " m");
+  const double a = start + span.from, b = start + std::min(to, length);
+  // The inner face: east x0, west x1, north y0, south y1; the strip lies on the slab's side.
+  switch (side) {
+    case 0:
+      return {{x0 - thickness, a}, {x0, a}, {x0, b}, {x0 - thickness, b}};
+    case 1:
+      return {{x1, a}, {x1 + thickness, a}, {x1 + thickness, b}, {x1, b}};
+    case 2:
+      return {{a, y0 - thickness}, {b, y0 - thickness}, {b, y0}, {a, y0}};
+    default:
+      return {{a, y1}, {b, y1}, {b, y1 + thickness}, {a, y1 + thickness}};
+  }
+}
+
+}  // namespace isopound
