@@ -68,6 +68,8 @@ void Contact1D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
     T.in_contact = false;
     T.ended = true;
   }
+  if (!freeze_ && bumper_ && bumper_->bottoming_jumps())
+    T.phase.bottomed = T.in_contact && T.delta > bumper_->stage_penetration();
 
   T.force = T.raw_force = T.stiffness = T.damping = 0.0;
   double stored = 0.0;
@@ -200,11 +202,14 @@ double Contact1D::event_fraction() {
   if (C.in_contact && T.in_contact && C.rate > 0 && T.rate <= 0)  // approach -> restitution
     consider(C.rate / (C.rate - T.rate), Event::kPhase);
   // A bumper bottoming out (or coming back): the force is continuous but its slope jumps by
-  // the wall's stiffness, so the step ends there too.
+  // the wall's stiffness, so the step ends there too. Where the force jumps (kJump) it is a
+  // status change, settled like an onset.
   if (const double s = law_->stage_penetration(); s < 1e300 && C.in_contact && T.in_contact) {
+    const bool jumps = bumper_ && bumper_->bottoming_jumps();
     const WitnessStep ws{C.delta - s, C.rate, T.delta - s, T.rate, h_};
-    const double f = first_status_change(ws, C.delta > s);
-    if (f < 1.0) consider(f, Event::kPhase);
+    double f = first_status_change(ws, jumps ? C.phase.bottomed : C.delta > s);
+    if (jumps && T.phase.bottomed != C.phase.bottomed) f = std::min(f, 1.0 - 1e-15);
+    if (f < 1.0) consider(f, jumps ? Event::kStage : Event::kPhase);
   }
   return theta;
 }
@@ -236,6 +241,10 @@ bool Contact1D::settle_event() {
       C.in_contact = false;
       break;
     }
+    case Event::kStage:
+      if (!C.in_contact) return false;
+      C.phase.bottomed = !C.phase.bottomed;
+      break;
     case Event::kPhase:
     case Event::kNone:
       return false;  // the force is continuous there

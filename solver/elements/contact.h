@@ -102,8 +102,8 @@ class Contact1D final : public Element {
     bool started = false;  // this step began a contact
     bool ended = false;    // this step ended a contact
     double onset_fraction = 1.0;
-    double onset_rate = 0.0;       // approach rate at delta = 0 of a contact begun this step
-    double end_indentation = 0.0;  // penetration left when a no-tension contact ended
+    double onset_rate = 0.0;            // approach rate at delta = 0 of a contact begun this step
+    double end_indentation = 0.0;       // penetration left when a no-tension contact ended
     double rubber_damping_force = 0.0;  // N, a bumper's damping part
   };
   double kinematics(const Eigen::VectorXd& x) const;
@@ -116,7 +116,8 @@ class Contact1D final : public Element {
   double steps_per_contact_;
   double h_ = 0.0;
   bool freeze_ = false;
-  enum class Event { kNone, kOnset, kSeparation, kNoTension, kPhase };
+  // kStage: a bumper whose force jumps at the bottoming out crosses it (status-like).
+  enum class Event { kNone, kOnset, kSeparation, kNoTension, kPhase, kStage };
   Event pending_ = Event::kNone;  // the event found by the last event_fraction()
   State committed_, trial_;
   double indentation_ = 0.0;     // accumulated permanent indentation (committed), m

@@ -24,7 +24,9 @@ double contact_period_estimate(const ImpactLaw& law, const ImpactPhase& phase, d
   for (int it = 0; it < 60; ++it) {
     const ImpactResponse e = law.respond(delta, 0.0, phase);
     if (!(e.force > 0)) return 1e300;
-    const double stored = e.force * e.force * delta / (e.force + delta * e.stiffness);
+    // The law's own elastic energy (a power law's F delta / (n + 1); exact for a bumper's
+    // stages, whose Newton path may pass the bottoming out).
+    const double stored = law.stored_energy(delta, phase);
     const double next = delta - (stored - energy) / e.force;
     const double updated = next > 0 ? next : 0.5 * delta;
     if (std::abs(updated - delta) < 1e-10 * delta) {

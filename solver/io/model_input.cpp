@@ -382,7 +382,7 @@ ImpactLawUses read_impact(const InputNode& node, ImpactLawConfig& c) {
 // position: thickness <= the smallest gap of the sides the wall has.
 BumperConfig read_bumper(const InputNode& node, double gap) {
   node.expect_keys(
-      {"thickness", "law", "k", "E", "area", "e", "max_strain", "min_impact_velocity"});
+      {"thickness", "law", "k", "E", "area", "e", "max_strain", "min_impact_velocity", "bottoming"});
   BumperConfig b;
   const InputNode thickness = node.required("thickness");
   b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);
@@ -417,6 +417,9 @@ BumperConfig read_bumper(const InputNode& node, double gap) {
   }
   node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive,
                      b.min_impact_velocity);
+  node.read_choice<BumperBottoming>(
+      "bottoming", {{"continuous", BumperBottoming::kContinuous}, {"jump", BumperBottoming::kJump}},
+      b.bottoming);
   return b;
 }
 
@@ -460,7 +463,7 @@ WallConfig read_wall(const InputNode& node) {
 BuildingConfig read_building(const InputNode& node);
 
 NeighbourConfig read_neighbour(const InputNode& node) {
-  node.expect_keys({"building", "side", "gap", "impact"});
+  node.expect_keys({"building", "side", "gap", "impact", "bumper"});
   NeighbourConfig n;
   n.building = read_building(node.required("building"));
   node.read_choice<bool>("side", {{"left", false}, {"right", true}}, n.right);
@@ -468,6 +471,7 @@ NeighbourConfig read_neighbour(const InputNode& node) {
   const InputNode impact = node.required("impact");
   impact.expect_keys(kImpactKeys);
   read_impact(impact, n.impact);
+  if (const auto bumper = node.find("bumper")) n.bumper = read_bumper(*bumper, n.gap);
   return n;
 }
 

@@ -68,6 +68,7 @@ BumperLaw::BumperLaw(const BumperConfig& b, std::unique_ptr<ImpactLaw> wall)
       e_(b.e),
       zeta_(hunt_crossley_factor(b.e)),
       min_impact_velocity_(b.min_impact_velocity),
+      jump_(b.bottoming == BumperBottoming::kJump),
       wall_(std::move(wall)) {}
 
 std::unique_ptr<ImpactLaw> BumperLaw::clone() const {
@@ -85,7 +86,8 @@ BumperLaw::BumperLaw(const BumperLaw& other, std::nullptr_t)
       n_(other.n_),
       e_(other.e_),
       zeta_(other.zeta_),
-      min_impact_velocity_(other.min_impact_velocity_) {}
+      min_impact_velocity_(other.min_impact_velocity_),
+      jump_(other.jump_) {}
 
 void BumperLaw::begin_contact(double impact_velocity, ImpactPhase& phase) const {
   phase.impact_velocity =
@@ -97,6 +99,7 @@ void BumperLaw::begin_contact(double impact_velocity, ImpactPhase& phase) const 
   phase.wall_impact_velocity = w.impact_velocity;
   phase.wall_restitution = w.restitution;
   phase.wall_damping = w.damping;
+  phase.bottomed = false;
 }
 
 ImpactPhase BumperLaw::wall_phase(const ImpactPhase& phase) const {
@@ -122,7 +125,14 @@ ImpactResponse BumperLaw::respond(double delta, double rate, const ImpactPhase& 
     r.stiffness = delta <= bottom_ ? k_ * p.slope * g : 0.0;  // at s: the left limit
     r.damping = phase.damping * p.value;
   }
-  if (delta > bottom_) {
+  if (jump_ && phase.bottomed) {
+    // A frozen step may end a hair short of s: the wall's law at 0+ there.
+    const ImpactResponse concrete =
+        wall_->respond(std::max(delta - bottom_, 0.0), rate, wall_phase(phase));
+    r.force += concrete.force;
+    r.stiffness += concrete.stiffness;
+    r.damping += concrete.damping;
+  } else if (!jump_ && delta > bottom_) {
     const ImpactPhase w = wall_phase(phase);
     const ImpactResponse concrete = wall_->respond(delta - bottom_, rate, w);
     const ImpactResponse onset = wall_->respond(0.0, rate, w);

@@ -12,6 +12,12 @@
 
 namespace isopound {
 
+// How the wall's law takes over where the rubber bottoms out (docs/impact-laws.md).
+enum class BumperBottoming {
+  kContinuous,  // F_w(delta - s) - F_w(0+): continuous force; a Kelvin-Voigt dashpot is dropped
+  kJump,        // F_w(delta - s): the wall's own onset jump (c rate for the Kelvin-Voigt family)
+};
+
 struct BumperConfig {
   double thickness = 0.0;      // m, rubber layer on the wall face; 0: no bumper (bare wall)
   std::string law = "linear";  // rubber's elastic part: "linear" k x, "hertz" k x^1.5
@@ -23,6 +29,7 @@ struct BumperConfig {
   double e = 0.8;           // rubber's coefficient of restitution in (0, 1]
   double max_strain = 0.6;  // compression at which the rubber bottoms out, fraction of t, (0, 1)
   double min_impact_velocity = 1e-3;  // m/s, floor of v_imp (the damping divides by it)
+  BumperBottoming bottoming = BumperBottoming::kContinuous;
 };
 
 // The rubber's stiffness from the configuration (k, or E A / t, E A / t^1.5).
@@ -41,6 +48,8 @@ double hunt_crossley_factor(double e);
 // F_w the wall's law, begun with the same v_imp as the rubber. Subtracting its value at zero
 // penetration (c rate for the Kelvin-Voigt family, 0 for the others) makes F continuous at the
 // bottoming out. F is clamped at 0: a bumper does not pull.
+// With BumperBottoming::kJump the subtraction is left out and the concrete stage is on while
+// phase.bottomed (set by the contact element at the crossing, an event where F jumps).
 class BumperLaw final : public ImpactLaw {
  public:
   BumperLaw(const BumperConfig& bumper, std::unique_ptr<ImpactLaw> wall);
@@ -52,6 +61,7 @@ class BumperLaw final : public ImpactLaw {
   std::unique_ptr<ImpactLaw> clone() const override;
   double stored_energy(double delta, const ImpactPhase& phase) const override;
   double stage_penetration() const override { return bottom_; }
+  bool bottoming_jumps() const { return jump_; }
 
   // The rubber's compression (m) and the force of its damping part, F_r - K(x) (N).
   double compression(double delta) const;
@@ -66,6 +76,7 @@ class BumperLaw final : public ImpactLaw {
   ImpactPhase wall_phase(const ImpactPhase& phase) const;
 
   double thickness_, bottom_, k_, n_, e_, zeta_, min_impact_velocity_;
+  bool jump_;
   std::unique_ptr<ImpactLaw> wall_;
 };
 

@@ -19,6 +19,9 @@ struct ImpactPhase {
   double wall_impact_velocity = 0.0;
   double wall_restitution = 0.0;
   double wall_damping = 0.0;
+  // Behind a bumper whose bottoming out jumps the force: the concrete stage is on. It changes
+  // only at an event (the contact element's settle_event), so a step cut there keeps its side.
+  bool bottomed = false;
 };
 
 // Force of a law and its partial derivatives at (delta, rate).

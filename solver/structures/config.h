@@ -121,6 +121,9 @@ struct NeighbourConfig {
   bool right = true;       // side of the main building it stands on (+x = right)
   double gap = 0.1;        // m, clear distance at rest
   ImpactLawConfig impact;  // masses are taken from the two colliding levels
+  // Rubber on the neighbour's facing side at every pounding level pair (thickness 0: none): the
+  // levels meet the rubber at gap - thickness, the concrete law acts once it bottoms out.
+  BumperConfig bumper;
   bool pounding = true;    // false: no contact elements (the unobstructed comparison)
 };
 

@@ -116,7 +116,7 @@ void add_neighbour(Model& model, int main, const BuildingConfig& main_building,
         model.structures[other].base_contact_elements.push_back(element);
       add_contact(model, label, {dof_main, s}, {dof_other, -s}, neighbour.gap, neighbour.impact,
                   model.mass(dof_main, dof_main), model.mass(dof_other, dof_other),
-                  steps_per_contact);
+                  steps_per_contact, neighbour.bumper);
     }
   }
   if (pairs == 0)
