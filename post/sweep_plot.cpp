@@ -66,7 +66,9 @@ DisplayUnit named_unit(const std::string& unit, const char* option) {
 // The display unit of a numeric axis from its name: sweep axes hold SI (docs/studies.md).
 DisplayUnit axis_unit(const std::string& axis) {
   const std::string n = lower(axis);
-  if (n.find("gap") != std::string::npos || n == "uy" || n == "u_y") return {"cm", 0.01};
+  if (n.find("gap") != std::string::npos || n.find("thickness") != std::string::npos || n == "uy" ||
+      n == "u_y")
+    return {"cm", 0.01};
   if (n == "angle" || n == "incidence" || n == "theta" ||
       (n.size() >= 5 && n.compare(n.size() - 5, 5, "angle") == 0))
     return {"deg", std::numbers::pi / 180.0};
