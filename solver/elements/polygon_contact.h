@@ -142,6 +142,7 @@ class PolygonContact final : public Element {
   double trial_friction_dissipated() const { return trial_.friction_dissipated; }
   double dissipated_energy() const { return trial_.work - trial_stored(); }
   double effective_mass() const { return m_eff_; }
+  const ImpactLaw* length_law() const { return cfg_.length_law.get(); }
   double normal_damping_ratio() const { return xi_; }
   // Witness (penetration −separation, m) and its rate (m/s) at the trial state.
   double trial_witness() const;
