@@ -76,7 +76,7 @@ constexpr std::array<PlausibleRange, 49> kRanges{{
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 37> kUnchecked{{
+constexpr std::array<UncheckedKey, 39> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
@@ -106,6 +106,8 @@ constexpr std::array<UncheckedKey, 37> kUnchecked{{
     {"bays_y", "grid spacing (m): the site's own geometry"},
     {"position", "plan coordinates (m): the site's own geometry, checked by the site checks"},
     {"rectangle", "plan size (m): the site's own geometry, checked by the site checks"},
+    {"from", "where a 3D bumper starts along its wall's face (m), checked against the face"},
+    {"to", "where a 3D bumper ends along its wall's face (m), checked against the face"},
     {"polygon", "plan vertices (m): the site's own geometry, checked by the site checks"},
     {"at", "a bearing's plan position (m): checked against the slab by the site checks"},
     {"eccentricity", "centre-of-mass offset (m): checked against the slab by the site checks"},
