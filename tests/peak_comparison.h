@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,20 @@ inline Comparison compare(const std::vector<NamedPeak>& run, const std::vector<N
     }
   }
   return c;
+}
+
+// Every peak leaf ({"value", "unit"}) of a summary tree, by path: (value, unit).
+inline void peak_leaves(const nlohmann::json& node, const std::string& path,
+                        std::map<std::string, std::pair<double, std::string>>& out) {
+  if (node.is_object() && node.contains("value") && node.contains("unit")) {
+    out[path] = {node["value"].get<double>(), node["unit"].get<std::string>()};
+    return;
+  }
+  if (node.is_object())
+    for (const auto& [k, v] : node.items()) peak_leaves(v, path + "/" + k, out);
+  if (node.is_array())
+    for (std::size_t i = 0; i < node.size(); ++i)
+      peak_leaves(node[i], path + "/" + std::to_string(i), out);
 }
 
 }  // namespace isopound::test

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "peak_comparison.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/io/model_input.h"
 #include "solver/io/report3d.h"
@@ -84,20 +85,6 @@ TEST(Pounding3DPassivity, OneEpisodeNetWorkIsMinusTheDissipatedEnergy) {
   EXPECT_GE(checked, 1);  // θ = 0 to 3.6 s: the west wall is hit once (THEORY §12 window)
 }
 
-// Every peak leaf ({"value", "unit"}) of a summary tree, by path.
-void peak_leaves(const nlohmann::json& node, const std::string& path,
-                 std::map<std::string, std::pair<double, std::string>>& out) {
-  if (node.is_object() && node.contains("value") && node.contains("unit")) {
-    out[path] = {node["value"].get<double>(), node["unit"].get<std::string>()};
-    return;
-  }
-  if (node.is_object())
-    for (const auto& [k, v] : node.items()) peak_leaves(v, path + "/" + k, out);
-  if (node.is_array())
-    for (std::size_t i = 0; i < node.size(); ++i)
-      peak_leaves(node[i], path + "/" + std::to_string(i), out);
-}
-
 // Window convergence, the light form (issue 16; the full check against fixed-step references is
 // bench/xy5_window.sh, bench/RESULTS.md): XY-5 to t_end 3.6 s (first impact 3.49 s, ~5 impacts).
 // Defaults against a run at tolerance 1e-6, which the bench measured within 0.25 % of the
@@ -113,10 +100,10 @@ TEST(Pounding3DWindow, DefaultsMatchATightRunUpTo3p6s) {
     tight.analysis.tolerance = 1e-6;
     const JobResult fine = run_job(tight);
     std::map<std::string, std::pair<double, std::string>> p, q;
-    peak_leaves(summary3d_json(coarse), "", p);
-    peak_leaves(contacts3d_json(coarse), "", p);
-    peak_leaves(summary3d_json(fine), "", q);
-    peak_leaves(contacts3d_json(fine), "", q);
+    test::peak_leaves(summary3d_json(coarse), "", p);
+    test::peak_leaves(contacts3d_json(coarse), "", p);
+    test::peak_leaves(summary3d_json(fine), "", q);
+    test::peak_leaves(contacts3d_json(fine), "", q);
     ASSERT_EQ(p.size(), q.size());
     std::map<std::string, double> largest;  // per unit: peaks below 1e-6 of it are not compared
     for (const auto& [k, v] : q) largest[v.second] = std::max(largest[v.second], std::abs(v.first));

@@ -73,6 +73,8 @@ PolygonContact::PolygonContact(std::string label, PolygonBody a, PolygonBody b,
           "friction needs 0 <= mu_k <= mu_s");
   require(cfg.restitution > 0 && cfg.restitution <= 1, "e must be in (0, 1]");
   require(cfg.steps_per_contact > 0, "steps_per_contact must be > 0");
+  require(!(cfg.length_law && cfg.normal_law), "give normal_law or length_law, not both");
+  law_ = cfg.length_law ? cfg.length_law.get() : cfg.normal_law.get();
   dof_ = {a_.dof_u, a_.dof_v, a_.dof_theta, b_.dof_u, b_.dof_v, b_.dof_theta};
   m_eff_ = isopound::effective_mass(a_.mass, b_.mass);
   xi_ = kelvin_voigt_xi(cfg.restitution);
@@ -188,11 +190,12 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.rate_t = dot(v_B - v_A, ov.t_AB);
 
   bool tension = cfg_.keep_tension;
-  if (cfg_.normal_law) {
-    const ImpactLaw& law = *cfg_.normal_law;
+  if (law_) {
+    const ImpactLaw& law = *law_;
+    const double scale = law_scale(area_per_depth);
     if (out.started) law.begin_contact(std::max(out.rate_n, 0.0), out.phase);
-    out.raw_normal = law.respond(out.indentation, out.rate_n, out.phase).force;
-    out.elastic_normal = law.respond(out.indentation, 0.0, out.phase).force;
+    out.raw_normal = scale * law.respond(out.indentation, out.rate_n, out.phase).force;
+    out.elastic_normal = scale * law.respond(out.indentation, 0.0, out.phase).force;
     tension = tension || law.tension_allowed();
   } else {
     out.elastic_normal = cfg_.k_normal * out.area;
@@ -406,8 +409,9 @@ void PolygonContact::count_impact(double approach_rate) {
 }
 
 double PolygonContact::onset_contact_step(const State& s) const {
-  if (cfg_.normal_law)
-    return contact_period_estimate(*cfg_.normal_law, s.phase, m_eff_) / cfg_.steps_per_contact;
+  if (law_)
+    return contact_period_estimate(*law_, s.phase, law_mass(s.secant_width)) /
+           cfg_.steps_per_contact;
   return area_contact_step(s.secant_width);
 }
 
@@ -464,7 +468,7 @@ double PolygonContact::event_fraction() {
   // the laws with a damper in approach only (normal_law option); harmless for the area law.
   if (C.closed && T.closed && C.rate_n > 0 && T.rate_n <= 0)
     consider(C.rate_n / (C.rate_n - T.rate_n), Event::kPhase, true);
-  const bool tension = cfg_.keep_tension || (cfg_.normal_law && cfg_.normal_law->tension_allowed());
+  const bool tension = cfg_.keep_tension || (law_ && law_->tension_allowed());
   if (!tension && C.closed && T.closed && C.raw_normal > 0 && T.raw_normal < 0)
     consider(C.raw_normal / (C.raw_normal - T.raw_normal), Event::kTension, true);
   return theta;
@@ -485,7 +489,7 @@ bool PolygonContact::settle_event() {
       C.episode_work = C.work;
       C.episode_gross_work = C.gross_work;
       const double v_imp = std::max(C.witness_rate, 0.0);
-      if (cfg_.normal_law) cfg_.normal_law->begin_contact(v_imp, C.phase);
+      if (law_) law_->begin_contact(v_imp, C.phase);
       // The contact's state at its onset (the limit A_c → 0+): its shape sets the first contact
       // step, and Coulomb decides whether it starts sliding: a slab that arrives sliding along
       // the other body at u̇_T has f_tr = c_T u̇_T against μ_s F_N (without this test the frozen
@@ -536,10 +540,12 @@ double PolygonContact::step_limit() const {
   const State& C = committed_;
   if (!C.closed) return approach_limit();
   double limit = 1e300;
-  if (cfg_.normal_law) {
+  if (law_) {
     const double delta = std::max(C.indentation, 1e-3);
-    const double k_sec = cfg_.normal_law->respond(delta, 0.0, C.phase).force / delta;
-    if (k_sec > 0) limit = std::numbers::pi * std::sqrt(m_eff_ / k_sec) / cfg_.steps_per_contact;
+    const double k_sec = law_->respond(delta, 0.0, C.phase).force / delta;
+    if (k_sec > 0)
+      limit =
+          std::numbers::pi * std::sqrt(law_mass(C.secant_width) / k_sec) / cfg_.steps_per_contact;
   } else {
     limit = area_contact_step(C.secant_width);
   }
@@ -564,10 +570,13 @@ double PolygonContact::approach_limit() const {
   const TimeOfImpact toi = time_of_impact(-s.witness, s.witness_rate, acceleration_bound);
   if (toi.time >= 1e300) return approach_limit_ = 1e300;
   double floor = 0.0;
-  if (cfg_.normal_law) {
+  if (law_) {
     ImpactPhase phase;
-    cfg_.normal_law->begin_contact(std::max(toi.arrival_speed, kCountedImpactVelocity), phase);
-    floor = contact_period_estimate(*cfg_.normal_law, phase, m_eff_) / cfg_.steps_per_contact;
+    law_->begin_contact(std::max(toi.arrival_speed, kCountedImpactVelocity), phase);
+    // A length law's contact length at arrival is at most body B's longest side.
+    const Vec2 size = b_.shape.box_max() - b_.shape.box_min();
+    const double length = cfg_.length_law ? std::max(size.x, size.y) : 1.0;
+    floor = contact_period_estimate(*law_, phase, m_eff_ / length) / cfg_.steps_per_contact;
   } else if (toi.time < area_contact_step(0.0)) {  // the floor's largest value (w = width_floor_)
     const ConvexPolygon pa = place(a_, C.q[0], C.q[1], C.q[2]);
     const ConvexPolygon pb = place(b_, C.q[3], C.q[4], C.q[5]);

@@ -68,6 +68,11 @@ struct PolygonContactConfig {
   // Option: one of the ten 2D impact laws along the normal with δ_N as the penetration
   // (its k in N/m); null = the area law k_N A_c + c_N δ̇_N.
   std::shared_ptr<const ImpactLaw> normal_law;
+  // Option (issue 27, rubber bumpers): a law of the force per unit contact length along the
+  // normal, F_N = L_c f(δ_N, δ̇_N) with L_c = A_c/δ_N the overlap's secant width (its k in N/m
+  // per m of contact; a linear f = k δ_N is the area law k A_c without damping). Not with
+  // normal_law.
+  std::shared_ptr<const ImpactLaw> length_law;
 };
 
 // What a writer of the contact-event log needs at a step (SI, plan frame W).
@@ -137,6 +142,7 @@ class PolygonContact final : public Element {
   double trial_friction_dissipated() const { return trial_.friction_dissipated; }
   double dissipated_energy() const { return trial_.work - trial_stored(); }
   double effective_mass() const { return m_eff_; }
+  const ImpactLaw* length_law() const { return cfg_.length_law.get(); }
   double normal_damping_ratio() const { return xi_; }
   // Witness (penetration −separation, m) and its rate (m/s) at the trial state.
   double trial_witness() const;
@@ -202,10 +208,19 @@ class PolygonContact final : public Element {
   // law: its contact period at s's impact velocity).
   double onset_contact_step(const State& s) const;
   double trial_stored() const;
+  // F_N = scale f(δ_N, δ̇_N) of the normal law (normal_law or length_law): scale 1, or the
+  // contact length L_c = A_c/δ_N (the overlap's secant width).
+  double law_scale(double secant_width) const { return cfg_.length_law ? secant_width : 1.0; }
+  // The mass a contact period of the normal law sees: m_eff / L_c for a length law, L_c bounded
+  // below by width_floor_ (a shorter period: the step limit errs small).
+  double law_mass(double secant_width) const {
+    return m_eff_ / (cfg_.length_law ? std::max(secant_width, width_floor_) : 1.0);
+  }
 
   std::string label_;
   PolygonBody a_, b_;
   PolygonContactConfig cfg_;
+  const ImpactLaw* law_ = nullptr;  // normal_law or length_law; null: the area law
   std::array<int, kDofs> dof_{};
   double m_eff_ = 0.0;
   double xi_ = 0.0;

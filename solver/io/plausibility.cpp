@@ -20,7 +20,7 @@ constexpr Dimension kMoment{2, 1, -2};      // N m
 constexpr Dimension kArea{2, 0, 0};         // m^2
 
 // clang-format off
-constexpr std::array<PlausibleRange, 48> kRanges{{
+constexpr std::array<PlausibleRange, 49> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
@@ -71,11 +71,12 @@ constexpr std::array<PlausibleRange, 48> kRanges{{
   {"bumper.E",     dim::kPressure, 0, 1e11, 1e5, 1e9, "MPa", 1e6, "a rubber bumper's modulus"},
   {"bumper.k",     dim::kHertzStiffness, 0, 1e16, 1e5, 1e14, "kN/m^1.5", 1e3, "a Hertz-type bumper stiffness"},
   {"bumper.area",  kArea, 0, 1e4, 1e-4, 100, "m2", 1, "a bumper's contact area"},
+  {"bumper.height", dim::kLength, 0, 20, 0.02, 2, "m", 1, "a 3D bumper's height against the slab edge"},
   {"max_strain",   dim::kNone, 0, 1, 0.2, 0.9, "%", 1e-2, "a bumper's compression limit"},
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 37> kUnchecked{{
+constexpr std::array<UncheckedKey, 39> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
@@ -105,6 +106,8 @@ constexpr std::array<UncheckedKey, 37> kUnchecked{{
     {"bays_y", "grid spacing (m): the site's own geometry"},
     {"position", "plan coordinates (m): the site's own geometry, checked by the site checks"},
     {"rectangle", "plan size (m): the site's own geometry, checked by the site checks"},
+    {"from", "where a 3D bumper starts along its wall's face (m), checked against the face"},
+    {"to", "where a 3D bumper ends along its wall's face (m), checked against the face"},
     {"polygon", "plan vertices (m): the site's own geometry, checked by the site checks"},
     {"at", "a bearing's plan position (m): checked against the slab by the site checks"},
     {"eccentricity", "centre-of-mass offset (m): checked against the slab by the site checks"},

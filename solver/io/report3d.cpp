@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "solver/io/report.h"
 #include "solver/io/report_columns3d.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/pounding3d.h"
 
 namespace isopound {
 namespace {
@@ -155,6 +157,29 @@ nlohmann::json summary3d_json(const JobResult& job) {
   return buildings;
 }
 
+namespace {
+
+// A rubber bumper's contact (element e) and its bottomed strip's, the next element
+// (pounding3d.h): bottomings are that one's impacts.
+nlohmann::json bumper_json(const JobResult& job, std::size_t e, const BumperLaw& rubber) {
+  using nlohmann::json;
+  const auto& elements = job.model.elements;
+  const auto* bottomed = e + 1 < elements.size()
+                             ? dynamic_cast<const PolygonContact*>(elements[e + 1].get())
+                             : nullptr;
+  if (!bottomed || !bottomed->label().ends_with(kBottomedLabel))
+    throw std::logic_error("bumper contact " + elements[e]->label() +
+                           " without its bottomed strip");
+  const double first = e + 1 < job.first_impact_time.size() ? job.first_impact_time[e + 1] : -1.0;
+  return {{"thickness_m", rubber.thickness()},
+          {"peak_compression_m", job.analysis.element_outputs[e][3].value},
+          {"bottomings", bottomed->impacts()},
+          {"first_bottoming_s", first >= 0 ? json(first) : json(nullptr)},
+          {"dissipated_J", elements[e]->output(10)}};
+}
+
+}  // namespace
+
 nlohmann::json contacts3d_json(const JobResult& job) {
   using nlohmann::json;
   const Model& model = job.model;
@@ -187,6 +212,8 @@ nlohmann::json contacts3d_json(const JobResult& job) {
     jc["max_episode_net_work_J"] = any ? json(c->max_episode_net_work()) : json(nullptr);
     jc["max_episode_net_work_relative"] =
         any ? json(c->max_episode_net_work_relative()) : json(nullptr);
+    if (const auto* rubber = dynamic_cast<const BumperLaw*>(c->length_law()))
+      jc["bumper"] = bumper_json(job, e, *rubber);
     out.push_back(jc);
   }
   return out;

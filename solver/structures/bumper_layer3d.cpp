@@ -9,7 +9,7 @@
 namespace isopound {
 
 std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, double thickness,
-                                       BumperSpan span) {
+                                       BumperSpan span, double setback) {
   if (wall.size() != 4 || side < 0 || side > 3)
     throw std::invalid_argument("bumper layer: a moat wall is a rectangle on side 0-3");
   if (!(thickness > 0)) throw std::invalid_argument("bumper layer: thickness must be > 0");
@@ -27,6 +27,7 @@ std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, 
         " m must satisfy 0 <= from < to <= the face length " + std::to_string(length) + " m");
   const double a = start + span.from, b = start + std::min(to, length);
   // The inner face: east x0, west x1, north y0, south y1; the strip lies on the slab's side.
+  x0 -= setback, x1 += setback, y0 -= setback, y1 += setback;
   switch (side) {
     case 0:
       return {{x0 - thickness, a}, {x0, a}, {x0, b}, {x0 - thickness, b}};
@@ -37,6 +38,32 @@ std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, 
     default:
       return {{a, y1}, {b, y1}, {b, y1 + thickness}, {a, y1 + thickness}};
   }
+}
+
+BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side,
+                           const MoatBumper3DConfig& bumper) {
+  const double t = bumper.thickness, s = bumper.max_strain * t;
+  const BumperSpan span{bumper.from, bumper.to};
+  return {bumper_layer_outline(wall, side, s, span, t - s),
+          bumper_layer_outline(wall, side, t - s, span)};
+}
+
+std::shared_ptr<const ImpactLaw> bumper_rubber_law(const MoatBumper3DConfig& bumper,
+                                                   double k_normal) {
+  BumperConfig b;
+  b.thickness = bumper.thickness;
+  b.law = bumper.law;
+  b.k = bumper.modulus * bumper.height / std::pow(bumper.thickness, b.law == "hertz" ? 1.5 : 1.0);
+  b.e = bumper.e;
+  b.max_strain = bumper.max_strain;
+  return make_bumper_law(b, bumper_bottomed_law(k_normal)->clone());
+}
+
+std::shared_ptr<const ImpactLaw> bumper_bottomed_law(double k_normal) {
+  ImpactLawConfig concrete;
+  concrete.law = "linear";
+  concrete.k = k_normal;
+  return make_impact_law(concrete);
 }
 
 }  // namespace isopound

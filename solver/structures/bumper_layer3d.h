@@ -3,9 +3,12 @@
 #pragma once
 
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "geometry/convex_polygon.h"
+#include "solver/materials/bumper_law.h"
+#include "solver/structures/config3d.h"
 
 namespace isopound {
 
@@ -19,9 +22,28 @@ struct BumperSpan {
 // The strip's outline (counter-clockwise rectangle, building frame like the wall's) in front of
 // the inner face of `wall`, the outline moat_wall_outline() gives for `side`
 // (MoatWalls3DConfig::Side: 0 east, 1 west, 2 north, 3 south). The inner face is the one towards
-// the slab; the strip occupies [face − thickness, face] on the slab's side. Throws
-// std::invalid_argument for thickness <= 0, from < 0, to > the face's length or from >= to.
+// the slab; the strip occupies [face − setback − thickness, face − setback] on the slab's side.
+// Throws std::invalid_argument for thickness <= 0, from < 0, to > the face's length or
+// from >= to.
 std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, double thickness,
-                                       BumperSpan span = {});
+                                       BumperSpan span = {}, double setback = 0.0);
+
+// A bumper in plan is two strips on the wall's DOFs (docs/impact-laws.md, "Bumpers on moat
+// walls (3D)"): the rubber, max_strain t deep at the front, and behind it the bottomed-out
+// rubber, (1 − max_strain) t deep against the wall face, which acts as concrete.
+struct BumperStrips {
+  std::vector<Vec2> rubber, bottomed;  // building frame, as bumper_layer_outline
+};
+BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side,
+                           const MoatBumper3DConfig& bumper);
+
+// The laws of the two strips per unit contact length L_c (polygon_contact.h, length_law).
+// Rubber: a BumperLaw of thickness t with k = E h / t (linear: F_N/L_c = k δ_N) or E h / t^1.5
+// (hertz: F_N/L_c = k δ_N^1.5) and Hunt–Crossley damping from e (its δ_N never passes
+// max_strain t: the strip is that deep). Bottomed: elastic k_N δ_N (N/m², F_N = k_N A_c).
+// Throws std::invalid_argument for an invalid bumper.
+std::shared_ptr<const ImpactLaw> bumper_rubber_law(const MoatBumper3DConfig& bumper,
+                                                   double k_normal);
+std::shared_ptr<const ImpactLaw> bumper_bottomed_law(double k_normal);
 
 }  // namespace isopound

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,24 @@ enum class ColumnCoupling {
   kFull,    // R diag(k_1, k_2) R^T: the full rotated stiffness
 };
 
+// Rubber bumpers on the inner faces of the moat walls (issue 27; docs/impact-laws.md, "Bumpers on
+// moat walls (3D)"): a strip `thickness` deep over [from, to] along each bumpered face, pressed
+// by the slab edge over `height`. Linear F_N = (E h / t) A_c, Hertz-type F_N = E L_c h (d_N/t)^1.5,
+// times (1 + zeta d'_N / v_imp)+; bottoming out at max_strain t onto the concrete k_N.
+struct MoatBumper3DConfig {
+  std::array<bool, 4> on{};    // sides with rubber (MoatWalls3DConfig::Side); none: no bumpers
+  double thickness = 0.0;      // m, t
+  std::string law = "linear";  // "linear" or "hertz"
+  double modulus = 0.0;        // Pa, the rubber's E
+  double height = 0.0;         // m, h: rubber height in contact with the slab edge
+  double e = 0.8;              // coefficient of restitution of the rubber, (0, 1]
+  double max_strain = 0.6;     // bottoming out at max_strain t
+  double mu_static = 0.8, mu_kinetic = 0.6;             // rubber on the slab edge
+  double from = 0.0;                                    // m along the face from its start
+  double to = std::numeric_limits<double>::infinity();  // m; +inf: to the face's end
+  bool any() const { return on[0] || on[1] || on[2] || on[3]; }
+};
+
 // Moat walls around the base slab of an isolated building (issue 16 item 3): one straight wall
 // per side, parallel to the side of the slab's bounding box in the building frame, at the side's
 // gap, extending `extension` beyond the slab at each end. Rigid and immovable; the wall's mass
@@ -114,6 +133,7 @@ struct MoatWalls3DConfig {
   double E = 30e9;  // Pa
   double nu = 0.2;
   double damping_ratio = 0.05;
+  MoatBumper3DConfig bumper;  // rubber on the inner faces (issue 27); none by default
   bool any() const { return present[0] || present[1] || present[2] || present[3]; }
 };
 

@@ -9,6 +9,7 @@
 #include "geometry/overlap.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/bumper_layer3d.h"
 
 namespace isopound {
 
@@ -209,6 +210,42 @@ void add_flexible_walls(Model& model, const ModelConfig& config) {
   }
 }
 
+namespace {
+
+// A bumpered wall's two strips (issue 27, bumper_layer3d.h): two more contacts right after the
+// wall's, between the slab and each strip on the wall's DOFs, with laws per contact length and
+// the rubber's friction. The concrete contact stays: the strips end at the wall face, so the
+// rubber's δ_N stops at max_strain t where the bottomed strip's overlap begins, and that one's at
+// (1 − max_strain) t where the concrete's begins (docs/impact-laws.md, "Bumpers on moat walls").
+template <class MakeBody>
+void add_bumper_contacts(Model& model, const ModelConfig& config, const SiteBody& slab,
+                         const SiteBody& wall, const MakeBody& body,
+                         const PolygonContactConfig& wall_law) {
+  if (wall.role != "wall") return;
+  const Building3DConfig& b = config.structures3d[wall.building];
+  const MoatBumper3DConfig& bumper = b.walls.bumper;
+  if (!bumper.on[wall.wall_side] || !(bumper.thickness > 0)) return;
+  const double k_normal = config.contact3d.law.k_normal;
+  const BumperStrips strips =
+      bumper_strips(moat_wall_outline(b, wall.wall_side), wall.wall_side, bumper);
+  PolygonContactConfig law = wall_law;
+  law.normal_law = nullptr;
+  law.mu_static = bumper.mu_static;
+  law.mu_kinetic = bumper.mu_kinetic;
+  const auto add = [&](const std::vector<Vec2>& outline, std::shared_ptr<const ImpactLaw> f,
+                       const std::string& name) {
+    PolygonBody strip = body(wall);
+    strip.shape = polygon_of(placed(b, outline));
+    law.length_law = std::move(f);
+    model.elements.push_back(std::make_unique<PolygonContact>(
+        slab.label() + "|" + wall.label() + " " + name, body(slab), std::move(strip), law));
+  };
+  add(strips.rubber, bumper_rubber_law(bumper, k_normal), kBumperLabel);
+  add(strips.bottomed, bumper_bottomed_law(k_normal), kBottomedLabel);
+}
+
+}  // namespace
+
 void add_pounding3d(Model& model, const ModelConfig& config) {
   if (!config.contact3d.pounding) return;
   const std::vector<SiteBody> bodies = site_bodies(config);
@@ -240,6 +277,7 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
     }
     model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(bodies[pair.a]),
                                                               body(bodies[pair.b]), law));
+    add_bumper_contacts(model, config, bodies[pair.a], bodies[pair.b], body, law);
   }
 }
 

@@ -54,7 +54,13 @@ std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
 // Model::structures: no storeys or probes; their histories carry "wall east (x) u" etc.).
 void add_flexible_walls(Model& model, const ModelConfig& config);
 
-// Adds a PolygonContact per pair (the model must hold the structures' DOFs already).
+// The end of the labels of a bumper's two contacts (issue 27): the rubber's, "<slab>|<wall>
+// bumper", and the bottomed-out rubber's, "<slab>|<wall> bumper bottomed".
+inline constexpr const char* kBumperLabel = "bumper";
+inline constexpr const char* kBottomedLabel = "bumper bottomed";
+
+// Adds a PolygonContact per pair (the model must hold the structures' DOFs already), and after a
+// bumpered wall's contact the two of its bumper (issue 27).
 void add_pounding3d(Model& model, const ModelConfig& config);
 
 // For the unobstructed comparison: per moat wall, the coordinates whose peaks give the critical

@@ -87,6 +87,12 @@ TEST(HotLoop, TwoDBumpersAllocateNothing) {
   expect_no_allocation("2d-bumpers.yaml");
 }
 
+// Rubber bumpers on 3D moat walls (issue 27), bottoming out: the length law allocates nothing.
+TEST(HotLoop, ThreeDBumpersAllocateNothing) {
+  ISOPOUND_REQUIRE_RECORDS();
+  expect_no_allocation("xy5-bumpers-5cm.yaml");
+}
+
 TEST(HotLoop, EccentricBuildingAllocatesNothing) {
   ISOPOUND_REQUIRE_RECORDS();
   expect_no_allocation("3d-eccentric-v30.yaml");
