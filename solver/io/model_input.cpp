@@ -378,17 +378,20 @@ ImpactLawUses read_impact(const InputNode& node, ImpactLawConfig& c) {
   return uses;
 }
 
-// A rubber bumper on the wall's face (bumper_law.h). Its face must stay behind the level's rest
-// position: thickness <= the smallest gap of the sides the wall has.
+// A rubber bumper on the wall's face (bumper_law.h). Its face must stay clear of the level's rest
+// position: thickness < the smallest gap of the sides the wall has (a rubber touching at rest
+// has no impact velocity for its damping, which divides by it).
 BumperConfig read_bumper(const InputNode& node, double gap) {
   node.expect_keys(
       {"thickness", "law", "k", "E", "area", "e", "max_strain", "min_impact_velocity", "bottoming"});
   BumperConfig b;
   const InputNode thickness = node.required("thickness");
   b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);
-  if (b.thickness > gap) {
-    char what[120];
-    std::snprintf(what, sizeof what, "the bumper (%g cm) is thicker than the gap (%g cm)",
+  if (b.thickness > 0 && b.thickness >= gap) {
+    char what[160];
+    std::snprintf(what, sizeof what,
+                  "the bumper (%g cm) must be thinner than the gap (%g cm): it would touch the "
+                  "slab at rest",
                   100 * b.thickness, 100 * gap);
     thickness.fail(what);
   }

@@ -299,7 +299,7 @@ MoatBumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig&
   const InputNode thickness = node.required("thickness");
   b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);
   for (int k = 0; k < 4; ++k)
-    if (b.on[k] && b.thickness >= walls.gap[k]) {
+    if (b.on[k] && b.thickness > 0 && b.thickness >= walls.gap[k]) {
       char what[160];
       std::snprintf(what, sizeof what,
                     "the bumper (%g cm) must be thinner than the %s wall's gap (%g cm)",

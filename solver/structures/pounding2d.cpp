@@ -36,8 +36,8 @@ void add_contact(Model& model, const std::string& label, ContactBody a, ContactB
                  ImpactLawConfig impact, double mass_a, double mass_b, double steps_per_contact,
                  const BumperConfig& bumper = {}) {
   if (!(gap >= 0)) throw std::invalid_argument(label + ": gap must be >= 0");
-  if (!(bumper.thickness >= 0 && bumper.thickness <= gap))
-    throw std::invalid_argument(label + ": bumper thickness must be in [0, gap]");
+  if (!(bumper.thickness >= 0 && (bumper.thickness == 0 || bumper.thickness < gap)))
+    throw std::invalid_argument(label + ": bumper thickness must be 0 or in (0, gap)");
   impact.mass_1 = mass_a;
   impact.mass_2 = mass_b;
   std::unique_ptr<ImpactLaw> law = make_impact_law(impact);
