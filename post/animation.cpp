@@ -116,11 +116,23 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
         f.cell(3, {g, b}, Block::kColumn, u0 / first.elevation);
       }
     }
-    // Columns between consecutive levels, with the story drift ratio.
+    // Columns between consecutive levels, with the story drift ratio; bearings under a slab
+    // isolated above a storey (docs/isolation-level.md), between it and the floor below.
     for (std::size_t k = 1; k < s.levels.size(); ++k) {
       const Level& lo = s.levels[k - 1];
       const Level& hi = s.levels[k];
       const double ulo = u_of(lo), uhi = u_of(hi);
+      if (hi.label == s.name + "/base") {
+        double force = 0.0;
+        for (const ElementColumns& e : run.isolators)
+          if (e.label.rfind(s.name + "/", 0) == 0) force = value_at(run, e.force, t);
+        for (double side : {-0.4, 0.4}) {
+          const int a = f.point(xc + S * ulo + side * W, lo.elevation + H / 2, ulo, a_of(lo));
+          const int b = f.point(xc + S * uhi + side * W, hi.elevation - H / 2, uhi, a_of(hi));
+          f.cell(3, {a, b}, Block::kBearing, 0.0, force);
+        }
+        continue;
+      }
       const double ratio = (uhi - ulo) / (hi.elevation - lo.elevation);
       for (double side : {-0.45, 0.45}) {
         const int a = f.point(xc + S * ulo + side * W, lo.elevation + H / 2, ulo, a_of(lo));

@@ -91,7 +91,10 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   Panel ground{"Ground and base", "time [s]", "displacement [cm]", {}, true, true};
   ground.legend_at = Panel::LegendAt::kBest;
   const int ag = run.find("", "ground_acceleration");
-  const Level& base = main.levels.front();
+  // The isolated slab wherever it sits (isolated above a storey it is not the lowest level).
+  const auto slab = std::find_if(main.levels.begin(), main.levels.end(),
+                                 [&](const Level& l) { return l.label == main.name + "/base"; });
+  const Level& base = slab != main.levels.end() ? *slab : main.levels.front();
   std::vector<std::optional<ReportedPeak>> ground_peaks;
   if (ag >= 0) {
     ground.series.push_back({"ground (a_g integrated twice)", t,
@@ -115,6 +118,8 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
     for (std::size_t k = on_ground ? 0 : 1; k < s.levels.size(); ++k) {
       const Level* lo = k > 0 ? &s.levels[k - 1] : nullptr;  // nullptr: the ground
       const Level& hi = s.levels[k];
+      // The isolation layer under a slab above the ground is the isolator, no storey.
+      if (lo && hi.label == s.name + "/base") continue;
       const double h = hi.elevation - (lo ? lo->elevation : 0.0);
       ++story;
       if (!(h > 0.0)) continue;

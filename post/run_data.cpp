@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "solver/io/model_input.h"
+#include "solver/structures/pounding2d.h"
 
 namespace fs = std::filesystem;
 
@@ -36,6 +37,18 @@ std::map<std::string, double> story_heights(const nlohmann::json& summary) {
         if (st.contains("label") && height) h[st.at("label").get<std::string>()] = *height;
       }
   return h;
+}
+
+// Isolated above a storey (summary.json, docs/isolation-level.md): structure name -> (k, h).
+std::map<std::string, std::pair<int, double>> isolation_levels(const nlohmann::json& summary) {
+  std::map<std::string, std::pair<int, double>> out;
+  if (!summary.is_object() || !summary.contains("structures")) return out;
+  for (const auto& s : summary.at("structures"))
+    if (s.contains("isolation_level") && s.contains("name")) {
+      const auto h = number_of(s, "isolation_height_m");
+      out[s.at("name").get<std::string>()] = {s.at("isolation_level").get<int>(), h ? *h : 0.0};
+    }
+  return out;
 }
 
 void read_histories(RunData& run, const fs::path& path) {
@@ -114,6 +127,7 @@ void find_structures(RunData& run) {
     return;
   }
   const auto heights = story_heights(run.summary);
+  const auto isolation = isolation_levels(run.summary);
   for (std::size_t c = 1; c < run.columns.size(); ++c) {
     const ColumnName n = parse_column_name(run.columns[c]);
     if (n.quantity != "u") continue;
@@ -132,10 +146,15 @@ void find_structures(RunData& run) {
     lv.u = static_cast<int>(c);
     lv.v = run.find(n.label, "v");
     lv.a_abs = run.find(n.label, "a_abs");
-    // "floor k": elevation = sum of the heights of stories 1..k (3 m when unknown).
-    if (level.rfind("floor ", 0) == 0) {
-      const int k = std::atoi(level.c_str() + 6);
-      double z = 0.0;
+    // "floor k": elevation = sum of the heights of stories 1..k (3 m when unknown), plus the
+    // isolation storey's above the isolation level; "base" above it: floor k's + that height.
+    const auto iso = isolation.find(name);
+    const int iso_level = iso == isolation.end() ? 0 : iso->second.first;
+    const double iso_height = iso == isolation.end() ? 0.0 : iso->second.second;
+    const bool raised_base = level == "base" && iso_level > 0;
+    if (level.rfind("floor ", 0) == 0 || raised_base) {
+      const int k = raised_base ? iso_level : std::atoi(level.c_str() + 6);
+      double z = iso_level > 0 && (raised_base || k > iso_level) ? iso_height : 0.0;
       for (int s = 1; s <= k; ++s) {
         const auto h = heights.find(name + "/story " + std::to_string(s));
         if (h == heights.end()) {
@@ -256,7 +275,7 @@ void find_geometry(RunData& run, const std::string& model_override) {
     for (const WallConfig& w : config.building.walls) {
       if (w.level < 0 || w.level >= static_cast<int>(main.levels.size())) continue;
       // Labels as the solver writes them (structures/pounding2d.cpp).
-      const std::string where = w.level == 0 && config.building.isolated
+      const std::string where = is_base_level(config.building, w.level)
                                     ? std::string("base")
                                     : "level " + std::to_string(w.level);
       const double z = main.levels[w.level].elevation;

@@ -168,7 +168,7 @@ std::vector<NamedPeak> peaks_of(const Outcome& r, int s = 0) {
   const StructureInfo& info = r.model.structures[s];
   const AnalysisResult& a = r.result;
   std::vector<NamedPeak> p;
-  if (info.has_base) p.push_back({"base displacement", a.displacement[info.level_dofs[0]].value});
+  if (info.has_base) p.push_back({"base displacement", a.displacement[info.base_dof()].value});
   for (std::size_t k = 0; k < a.stories.size(); ++k)
     if (a.stories[k].label.rfind(info.name + "/", 0) == 0)
       p.push_back({a.stories[k].label + " drift", a.drift[k].value});

@@ -107,6 +107,10 @@ void check_model2d(const ScannedModel& model, const CheckLimits& limits, Problem
   // Stiffness jumps of the main building's storeys.
   const BuildingConfig& b = config.building;
   for (std::size_t s = 0; s + 1 < b.floors.size(); ++s) {
+    // Storeys k and k+1 of a building isolated on floor k are not neighbours: the isolation
+    // layer stands between them (docs/isolation-level.md).
+    if (b.isolated && b.isolation_level > 0 && s + 1 == static_cast<std::size_t>(b.isolation_level))
+      continue;
     const double k_lo = b.floors[s].stiffness, k_hi = b.floors[s + 1].stiffness;
     const double ratio = std::max(k_lo / k_hi, k_hi / k_lo);
     if (ratio <= limits.stiffness_jump || !model.floors) continue;

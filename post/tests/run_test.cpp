@@ -257,6 +257,31 @@ TEST(PostRunData, ColumnsByHeaderNameAndHeightsInEitherSummaryShape) {
   std::filesystem::remove_all(dir);
 }
 
+// Isolated on floor 1 (docs/isolation-level.md): summary.json's isolation_level and
+// isolation_height_m put the slab at z(floor 1) + h and raise the floors above it by h.
+TEST(PostRunData, SlabIsolatedAboveAStoreySitsAtItsElevation) {
+  const auto dir = test::scratch_dir("rundata-mid");
+  {
+    std::ofstream h(dir / "histories.csv");
+    h << "time [s],b/floor 1 u [m],b/base u [m],b/floor 2 u [m]\n0,0,0,0\n0.1,0.1,0.2,0.3\n";
+    std::ofstream j(dir / "summary.json");
+    j << R"({"structures": [{"name": "b", "isolation_level": 1, "isolation_height_m": 1.0,
+          "stories": [{"label": "b/story 1", "height_m": 4.0},
+                      {"label": "b/story 2", "height_m": 3.5}]}]})";
+  }
+  const RunData run = read_run(dir);
+  ASSERT_EQ(run.structures.size(), 1u);
+  const auto& levels = run.structures[0].levels;
+  ASSERT_EQ(levels.size(), 3u);
+  EXPECT_EQ(levels[0].label, "b/floor 1");
+  EXPECT_DOUBLE_EQ(levels[0].elevation, 4.0);
+  EXPECT_EQ(levels[1].label, "b/base");
+  EXPECT_DOUBLE_EQ(levels[1].elevation, 5.0);
+  EXPECT_EQ(levels[2].label, "b/floor 2");
+  EXPECT_DOUBLE_EQ(levels[2].elevation, 8.5);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(PostCli, BadInputGivesOneClearErrorAndNonZeroExit) {
   const auto dir = test::scratch_dir("bad");
   auto r = test::run_post("plot " + (dir / "nope").string());

@@ -18,15 +18,16 @@ namespace isopound {
 std::vector<Story> stories_of(const Model& model) {
   std::vector<Story> stories;
   for (const StructureInfo& s : model.structures) {
-    // Story k links the level below (or the ground) and level k + first_floor; a structure
-    // with no story heights (e.g. a moat-wall oscillator) has no stories.
-    const std::size_t first_floor = s.has_base ? 1 : 0;
+    // Story k links floor k and the level below it (the ground, a floor or the isolated slab);
+    // the isolation layer is the isolator, no story. A structure with no story heights (e.g. a
+    // moat-wall oscillator) has no stories.
     for (std::size_t k = 0; k < s.story_heights.size(); ++k) {
-      const std::size_t level = k + first_floor;
+      const int floor = static_cast<int>(k) + 1;
+      const int below = s.below_floor_level(floor);
       Story story;
       story.label = s.name + "/story " + std::to_string(k + 1);
-      story.upper = s.level_dofs[level];
-      story.lower = level == 0 ? -1 : s.level_dofs[level - 1];
+      story.upper = s.level_dofs[static_cast<std::size_t>(s.floor_level(floor))];
+      story.lower = below < 0 ? -1 : s.level_dofs[static_cast<std::size_t>(below)];
       story.height = s.story_heights[k];
       stories.push_back(story);
     }
@@ -181,16 +182,19 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   res.base_shear.resize(model.structures.size());
   res.base_shear_y.resize(model.structures.size());
   res.base_shear_resultant.resize(model.structures.size());
-  // Levels above each story (same order as stories_of) and the levels of each isolated
-  // structure: the shears are sums of M a_abs over them.
-  std::vector<std::vector<int>> above_story, above_base(model.structures.size());
+  // Levels above each story (same order as stories_of) and the levels from the isolated slab
+  // up (x, and y in plan) of each isolated structure: the shears are sums over them.
+  std::vector<std::vector<int>> above_story, above_base(model.structures.size()),
+      above_base_y(model.structures.size());
   for (std::size_t s = 0; s < model.structures.size(); ++s) {
     const StructureInfo& info = model.structures[s];
-    const std::size_t first_floor = info.has_base ? 1 : 0;
     for (std::size_t k = 0; k < info.story_heights.size(); ++k)
-      above_story.emplace_back(info.level_dofs.begin() + static_cast<long>(k + first_floor),
+      above_story.emplace_back(info.level_dofs.begin() + info.floor_level(static_cast<int>(k) + 1),
                                info.level_dofs.end());
-    if (info.has_base) above_base[s] = info.level_dofs;
+    if (!info.has_base) continue;
+    above_base[s].assign(info.level_dofs.begin() + info.base_level, info.level_dofs.end());
+    if (!info.level_dofs_y.empty())
+      above_base_y[s].assign(info.level_dofs_y.begin() + info.base_level, info.level_dofs_y.end());
   }
   CompressedRows mass_rows;  // M, for M a_abs
   mass_rows.assign(model.mass);
@@ -328,8 +332,9 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       story_shear_now[s] = shear;
       update_peak(res.story_shear[s], shear, t);
     }
-    // Base shear: every force that reaches the foundation from the structure, isolator +
-    // isolation damping + the contacts at the base level (walls, a neighbour's base slab). The
+    // Base shear: every force through the isolation layer and the isolated slab's supports,
+    // isolator + isolation damping + the contacts at the base level (walls, a neighbour's base
+    // slab); with the isolators on the ground, what reaches the foundation. The
     // superstructure's damping is internal to the levels and cancels in the sum; a base
     // contact's force on another structure is not on these levels.
     const Eigen::VectorXd& damping_force = stepper.c_v();  // C v
@@ -341,8 +346,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         base_force.setZero();
         for (const int e : info.upper_contact_elements) model.elements[e]->add_force(base_force);
         double x = 0.0, y = 0.0;
-        for (const int d : info.level_dofs) x -= inertia[d] + base_force[d];
-        for (const int d : info.level_dofs_y) y -= inertia[d] + base_force[d];
+        for (const int d : above_base[s]) x -= inertia[d] + base_force[d];
+        for (const int d : above_base_y[s]) y -= inertia[d] + base_force[d];
         base_shear_now[s] = x;
         base_shear_y_now[s] = y;
         update_peak(res.base_shear[s], x, t);

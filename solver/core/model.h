@@ -37,13 +37,18 @@ struct GroundAcceleration {
 // Bookkeeping for outputs: which DOFs belong to a structure, bottom to top, and its stories.
 struct StructureInfo {
   std::string name;
-  std::vector<int> level_dofs;        // DOF index of each level, bottom to top
-  bool has_base = false;              // level_dofs[0] is an isolated base slab
-  std::vector<double> story_heights;  // story s links level s-1 (or ground) and level s
+  std::vector<int> level_dofs;  // DOF index of each level, bottom to top
+  bool has_base = false;        // level_dofs[base_level] is an isolated base slab
+  // Index into level_dofs of the isolated slab when has_base: 0 when the isolators stand on the
+  // ground, k when they stand on floor k of a fixed-base substructure (levels in elevation
+  // order: floors 1..k, the slab, floors k+1..n). 0 for a fixed-base structure.
+  int base_level = 0;
+  double isolation_height = 0.0;      // m, the slab above floor base_level (base_level > 0)
+  std::vector<double> story_heights;  // per floor: storey f links floor f and the level below
   int isolator_element = -1;          // index into Model::elements, or -1
   // Elements that push the base level from outside the structure (a moat wall, a neighbour's
-  // base slab): their force on level_dofs[0] reaches the foundation and is part of the base
-  // shear, with the isolator's.
+  // base slab): their force on the isolated slab is part of the base shear, with the isolator's
+  // (the force through the isolation layer).
   std::vector<int> base_contact_elements;
   // A structure in plan (3D): the y DOF of each level (level_dofs holds the x DOFs); empty in 2D.
   // Its base shear is then taken from the equilibrium of the whole structure, -sum over the
@@ -56,6 +61,19 @@ struct StructureInfo {
   // An elastic storey whose peak drift ratio exceeds this is outside the elastic model's range:
   // reports flag it (outputs only; 0: never). The model input sets it (default 1 %).
   double elastic_limit_drift_ratio = 0.0;
+
+  // Index into level_dofs of floor f (1-based): the isolated slab, when above the ground, sits
+  // between floors base_level and base_level + 1 and is no floor.
+  int floor_level(int floor) const { return has_base && floor > base_level ? floor : floor - 1; }
+  // Index into level_dofs of the level below storey `floor` (the isolated slab for the first
+  // storey above it), -1 for the ground.
+  int below_floor_level(int floor) const { return floor_level(floor) - 1; }
+  // The isolated slab's DOF (has_base only).
+  int base_dof() const { return level_dofs[static_cast<std::size_t>(base_level)]; }
+  // The DOF under the isolation layer: floor base_level's, or -1 (the ground).
+  int isolator_bottom_dof() const {
+    return has_base && base_level > 0 ? level_dofs[static_cast<std::size_t>(base_level) - 1] : -1;
+  }
 };
 
 // A derived response in plan, for outputs only: two components, each a linear combination of DOF

@@ -68,6 +68,9 @@ std::string computed(const ModelConfig& config, const std::string& key, double r
     const BuildingConfig& building = n >= 0 && n < static_cast<int>(config.neighbours.size())
                                          ? config.neighbours[static_cast<std::size_t>(n)].building
                                          : config.building;
+    if (building.isolation_level > 0)
+      return number(isolated_mass(building), "kg") +
+             " (computed: the base slab and the floors above it)";
     return number(building_mass(building), "kg") +
            " (computed: the whole building incl. the base slab)";
   }

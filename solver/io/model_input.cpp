@@ -32,7 +32,7 @@ constexpr int kIntMax = std::numeric_limits<int>::max();
 // for"): the tallest buildings have ~160 storeys; a model assembles dense n x n matrices and
 // solves their eigenproblem, so n is kept where that is milliseconds, as for 3D (kMaxStoreys).
 constexpr int kMaxFloors = 200;
-constexpr int kMaxHalvings = 60;  // dt / 2^60 is already far below any physical time scale
+constexpr int kMaxHalvings = 60;          // dt / 2^60 is already far below any physical time scale
 constexpr double kMaxPulseSamples = 1e6;  // 1e6 x 8 bytes; a real pulse has ~10^4
 constexpr const char* kFixedBaseOnly = "not allowed for a fixed-base building (isolated: false)";
 
@@ -264,18 +264,56 @@ void read_rayleigh_modes(const InputNode& node, int floor_count, SuperstructureD
   damping.mode_b = values[1];
 }
 
-// building.damping: {superstructure: {type, ratio, modes}, isolation}.
+// building.damping.substructure of a building isolated above storey k: {type, ratio, modes} of
+// the fixed-base floors 1..k; by default modal with the superstructure's ratio.
+void read_substructure_damping(const InputNode& building, const std::optional<InputNode>& damping,
+                               const std::optional<InputNode>& substructure, BuildingConfig& b) {
+  using Type = SuperstructureDamping::Type;
+  SuperstructureDamping& s = b.substructure_damping;
+  s.type = Type::kModal;
+  s.ratio = b.damping.type == Type::kNone ? 0.0 : b.damping.ratio;
+  if (!substructure) {
+    (damping ? *damping : building)
+        .note_default(damping ? "substructure" : "damping.substructure",
+                      "modal, ratio " + std::to_string(s.ratio) + " (the superstructure's)");
+    return;
+  }
+  substructure->expect_keys({"type", "ratio", "modes"});
+  const auto type = substructure->find("type");
+  if (type)
+    s.type = type->choice<Type>(
+        {{"rayleigh", Type::kRayleigh}, {"modal", Type::kModal}, {"none", Type::kNone}});
+  else
+    substructure->note_default("type", "modal");
+  if (s.type != Type::kNone) substructure->read_number("ratio", Bound::kFraction, s.ratio);
+  if (s.type != Type::kRayleigh) return;
+  if (b.isolation_level < 2)
+    (type ? *type : *substructure)
+        .fail(
+            "Rayleigh damping needs two fixed-base modes but a 1-storey substructure has one; "
+            "use type: modal");
+  if (const auto modes = substructure->find("modes"))
+    read_rayleigh_modes(*modes, b.isolation_level, s);
+  else
+    substructure->note_default("modes", "[1, 2]");
+}
+
+// building.damping: {superstructure: {type, ratio, modes}, isolation, substructure}.
 void read_damping(const InputNode& building, BuildingConfig& b) {
   using Type = SuperstructureDamping::Type;
   const auto damping = building.find("damping");
   std::optional<InputNode> superstructure;
+  std::optional<InputNode> substructure;
   if (damping) {
-    damping->expect_keys({"superstructure", "isolation"});
+    damping->expect_keys({"superstructure", "isolation", "substructure"});
     if (const auto isolation = damping->find("isolation")) {
       if (!b.isolated) isolation->fail(kFixedBaseOnly);
       b.isolation_damping_ratio = isolation->number(Bound::kFraction);
     }
     superstructure = damping->find("superstructure");
+    substructure = damping->find("substructure");
+    if (substructure && b.isolation_level == 0)
+      substructure->fail("only for a building isolated above a storey (isolation_level > 0)");
   }
   if (b.isolated && !(damping && damping->has("isolation")))
     (damping ? *damping : building)
@@ -300,8 +338,9 @@ void read_damping(const InputNode& building, BuildingConfig& b) {
       if (!modes) superstructure->note_default("modes", "[1, 2]");
     }
   }
+  if (b.isolation_level > 0) read_substructure_damping(building, damping, substructure, b);
   if (s.type != Type::kRayleigh) return;
-  const int floor_count = static_cast<int>(b.floors.size());
+  const int floor_count = static_cast<int>(b.floors.size()) - b.isolation_level;
   if (floor_count < 2) {
     // Point at what chose Rayleigh: the written type, else the section that defaulted it.
     const std::string what =
@@ -478,9 +517,36 @@ NeighbourConfig read_neighbour(const InputNode& node) {
   return n;
 }
 
+// isolation_level k (0: on the ground; none, not even a default note, when absent) and, for
+// k > 0, isolation_height, the isolated slab's elevation above floor k.
+void read_isolation_level(const InputNode& node, BuildingConfig& b) {
+  const auto level = node.find("isolation_level");
+  const auto height = node.find("isolation_height");
+  if (level) {
+    if (!b.isolated) level->fail(kFixedBaseOnly);
+    const int floors = static_cast<int>(b.floors.size());
+    b.isolation_level = level->integer(0, kMaxFloors);
+    if (b.isolation_level >= floors)
+      level->fail("isolation_level " + std::to_string(b.isolation_level) +
+                  " leaves no floor above the isolators: the building has " +
+                  std::to_string(floors) + " floors (isolation_level 0.." +
+                  std::to_string(floors - 1) + ")");
+  }
+  if (b.isolation_level == 0) {
+    if (height) height->fail("only for a building isolated above a storey (isolation_level > 0)");
+    return;
+  }
+  if (!height)
+    node.fail_at_key("isolation_height",
+                     "missing required key 'isolation_height' (the isolated slab's height above "
+                     "floor " +
+                         std::to_string(b.isolation_level) + ")");
+  b.isolation_height = height->quantity(dim::kLength, Bound::kPositive);
+}
+
 BuildingConfig read_building(const InputNode& node) {
-  node.expect_keys({"name", "isolated", "base", "floors", "isolator", "damping", "walls", "p_delta",
-                    "elastic_limit_drift_ratio"});
+  node.expect_keys({"name", "isolated", "base", "floors", "isolation_level", "isolation_height",
+                    "isolator", "damping", "walls", "p_delta", "elastic_limit_drift_ratio"});
   BuildingConfig b;
   if (const auto name = node.find("name")) {
     b.name = name->string();
@@ -497,6 +563,7 @@ BuildingConfig read_building(const InputNode& node) {
   }
   std::vector<InputNode> hysteresis_nodes;
   b.floors = read_floors(node.required("floors"), hysteresis_nodes);
+  read_isolation_level(node, b);
   check_story_hysteresis(b, hysteresis_nodes);
   // Not noted as defaults when absent: an elastic model's settings stay as they were.
   if (const auto p = node.find("p_delta")) b.p_delta = p->boolean();
@@ -506,6 +573,11 @@ BuildingConfig read_building(const InputNode& node) {
   if (b.isolated) {
     const auto isolator = node.find("isolator");
     b.isolator = read_isolator(isolator ? *isolator : node.empty_child("isolator"));
+    if (b.isolation_level > 0 && b.isolator.model == IsolatorConfig::Model::kFrictionPendulum)
+      node.required("isolation_level")
+          .fail(
+              "a friction pendulum isolator stands on the ground in 2D (isolation_level 0); "
+              "use linear, bilinear or bouc_wen isolators above a storey");
   }
   read_damping(node, b);
   if (const auto walls = node.find("walls")) {

@@ -30,6 +30,7 @@ constexpr std::array<PlausibleRange, 49> kRanges{{
   {"thickness",    dim::kLength, 0, 20, 0.05, 3, "m", 1, "a wall thickness"},
   {"height",       dim::kLength, 0, 200, 0.2, 20, "m", 1, "a storey or wall height"},
   {"extension",    dim::kLength, 0, 100, 0, 20, "m", 1, "a wall extension beyond the slab"},
+  {"isolation_height", dim::kLength, 0, 50, 0.1, 5, "m", 1, "an isolated slab's height above its floor"},
   {"mass",         dim::kMass, 0, 1e9, 1e3, 1e8, "t", 1e3, "a floor or base-slab mass"},
   {"roof_mass",    dim::kMass, 0, 1e9, 1e3, 1e8, "t", 1e3, "a roof mass"},
   {"carried_mass", dim::kMass, 0, 1e9, 0, 1e8, "t", 1e3, "the mass one bearing carries"},
@@ -87,7 +88,8 @@ constexpr std::array<UncheckedKey, 39> kUnchecked{{
     {"beta", "Bouc-Wen shape parameter (dimensionless)"},
     {"gamma", "Bouc-Wen or pulse shape parameter (dimensionless)"},
     {"rate_parameter", "friction rate parameter, s/m: no common other unit"},
-    {"deterioration", "cyclic deterioration lambda = E_t / (F_y d_y): a pure number, no other unit"},
+    {"deterioration",
+     "cyclic deterioration lambda = E_t / (F_y d_y): a pure number, no other unit"},
     {"e", "coefficient of restitution, bounded (0, 1] by the reader"},
     {"damping", "a damping ratio of a wall, bounded [0, 1) by the reader"},
     {"polar_moment", "kg m^2: depends on the plan; computed when absent"},
@@ -214,8 +216,7 @@ PlausibilityVerdict check_plausible(std::string_view key_path, const Dimension& 
   while (!written.empty() && written.back() == ' ') written.pop_back();
   while (!written.empty() && written.front() == ' ') written.erase(0, 1);
   std::string message = "'" + written + "'";
-  if (!has_unit && r->unit_si != 1.0)
-    message += " (a bare number is SI: " + in_unit(si, *r) + ")";
+  if (!has_unit && r->unit_si != 1.0) message += " (a bare number is SI: " + in_unit(si, *r) + ")";
   message += hard ? " is impossible for " : " is implausible for ";
   message += std::string(r->what) + " (" +
              (hard ? "possible: " + range_text(r->hard_min, r->hard_max, *r)

@@ -117,6 +117,12 @@ bool has_contacts(const Model& model) {
   return false;
 }
 
+// u_slab - u_below at the end: what is left on the isolators.
+double residual_isolator_displacement(const AnalysisResult& r, const StructureInfo& s) {
+  const int bottom = s.isolator_bottom_dof();
+  return r.final_displacement[s.base_dof()] - (bottom >= 0 ? r.final_displacement[bottom] : 0.0);
+}
+
 int dof_by_label(const Model& model, const std::string& label) {
   for (int i = 0; i < model.size(); ++i)
     if (model.dofs[i].label == label) return i;
@@ -276,9 +282,10 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     const double weight = structure_weight(model, s);
     js["weight_N"] = weight;
     if (s.has_base) {
-      js["base_displacement_m"] = r.displacement[s.level_dofs[0]].value;
+      js["base_displacement_m"] = r.displacement[s.base_dof()].value;
       // What is left on the isolators when the shaking (and extra_time) is over.
-      js["residual_isolator_displacement_m"] = r.final_displacement[s.level_dofs[0]];
+      js["residual_isolator_displacement_m"] = residual_isolator_displacement(r, s);
+      // The force through the isolation layer (isolators, their damping, contacts on the slab).
       js["base_shear"] = peak_json(r.base_shear[si], "N");  // x in plan (3D)
       js["base_shear_coefficient"] = weight > 0 ? r.base_shear[si].value / weight : 0.0;
       if (!s.level_dofs_y.empty()) {
@@ -302,6 +309,18 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       add_story_damage_json(stories.back(), model, r, s, k, story_index);  // report_damage2d
     }
     js["stories"] = stories;
+    if (s.has_base && s.base_level > 0) {
+      // Isolated above storey k: where the slab sits, and the shear that reaches the ground
+      // (storey 1's, below the substructure).
+      js["isolation_level"] = s.base_level;
+      js["isolation_height_m"] = s.isolation_height;
+      const std::size_t first_story = story_index - count;
+      js["ground_shear"] = peak_json(r.story_shear[first_story], "N");
+      js["ground_shear_coefficient"] = weight > 0 ? r.story_shear[first_story].value / weight : 0.0;
+      if (s.isolator_element >= 0)
+        js["isolator_displacement"] =
+            peak_json(r.element_outputs[static_cast<std::size_t>(s.isolator_element)][1], "m");
+    }
     structures.push_back(js);
   }
   j["structures"] = structures;
@@ -347,9 +366,8 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                  {"elastic_J", en.elastic},
                  {"viscous_J", en.viscous},
                  {"hysteretic_J", en.hysteretic},
-                 {"isolator_hysteretic_J",
-                  en.hysteretic - impacts - friction.value_or(0.0) - stories_hysteretic -
-                      columns.value_or(0.0)},
+                 {"isolator_hysteretic_J", en.hysteretic - impacts - friction.value_or(0.0) -
+                                               stories_hysteretic - columns.value_or(0.0)},
                  {"impact_dissipated_J", impacts},
                  {"balance_error_J", en.error},
                  {"relative_error", en.relative_error},
@@ -417,15 +435,14 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
   // How the analysis ended: at the record's end + extra_time, or at t_end (stated, with the
   // clipping of a t_end past the record), so that a shortened run never reads as a whole one.
   const std::string end_note = analysis_end_note(st);
-  j["end_of_analysis"] = {
-      {"analysed_time_s", st.duration},
-      {"record_end_s", st.record_end},
-      {"requested_end_s", st.t_end > 0 ? json(st.t_end) : json(nullptr)},
-      {"stopped_by", st.t_end > 0 && st.t_end < st.record_end * (1 - 1e-12)
-                         ? "t_end"
-                         : "end of record + extra_time"},
-      {"clipped", st.t_end > st.record_end * (1 + 1e-12)},
-      {"note", end_note}};
+  j["end_of_analysis"] = {{"analysed_time_s", st.duration},
+                          {"record_end_s", st.record_end},
+                          {"requested_end_s", st.t_end > 0 ? json(st.t_end) : json(nullptr)},
+                          {"stopped_by", st.t_end > 0 && st.t_end < st.record_end * (1 - 1e-12)
+                                             ? "t_end"
+                                             : "end of record + extra_time"},
+                          {"clipped", st.t_end > st.record_end * (1 + 1e-12)},
+                          {"note", end_note}};
   return j;
 }
 
@@ -529,8 +546,18 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                       "%.2f cm\n",
                       s.name.c_str(), r.base_shear[si].value / 1e3,
                       weight > 0 ? r.base_shear[si].value / weight : 0.0,
-                      100 * r.final_displacement[s.level_dofs[0]]);
+                      100 * residual_isolator_displacement(r, s));
         out << line;
+        if (s.base_level > 0 && s.isolator_element >= 0) {
+          std::snprintf(
+              line, sizeof line,
+              "  %-22s isolators on floor %d: isolator displacement %.2f cm, ground "
+              "shear %8.1f kN (storey 1)\n",
+              "", s.base_level,
+              100 * r.element_outputs[static_cast<std::size_t>(s.isolator_element)][1].value,
+              r.story_shear[story_index].value / 1e3);
+          out << line;
+        }
       }
       for (std::size_t k = 0; k < s.level_dofs.size(); ++k) {
         const int d = s.level_dofs[k];

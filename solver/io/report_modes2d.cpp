@@ -33,25 +33,47 @@ void print_modes2d(std::ostream& out, const BuildingConfig& b) {
       out << '\n';
     }
   };
+  const int k = b.isolated ? b.isolation_level : 0;
   std::vector<std::string> floor_labels;
-  for (std::size_t i = 0; i < b.floors.size(); ++i)
+  for (std::size_t i = static_cast<std::size_t>(k); i < b.floors.size(); ++i)
     floor_labels.push_back("floor " + std::to_string(i + 1));
   const ShearStick fixed = fixed_base_superstructure(b);
   show("Fixed-base superstructure",
        compute_modes(fixed.stiffness, fixed.mass, Eigen::VectorXd::Ones(fixed.mass.rows())),
        floor_labels);
+  if (k > 0) {
+    std::vector<std::string> sub_labels;
+    for (int i = 0; i < k; ++i) sub_labels.push_back("floor " + std::to_string(i + 1));
+    const ShearStick sub = fixed_base_substructure(b);
+    show("Fixed-base substructure (alone)",
+         compute_modes(sub.stiffness, sub.mass, Eigen::VectorXd::Ones(sub.mass.rows())),
+         sub_labels);
+  }
   if (!b.isolated) return;
   Model model = make_model(b);
-  std::vector<std::string> labels{"base"};
-  labels.insert(labels.end(), floor_labels.begin(), floor_labels.end());
-  const IsolatorProperties p = isolator_properties(b.isolator, model.total_mass());
-  for (const auto& [name, k] : {std::pair{"post-yield stiffness K_post", p.post_yield_stiffness},
-                                std::pair{"initial stiffness K_el", p.elastic_stiffness}}) {
-    if (b.isolator.model == IsolatorConfig::Model::kLinear && k != p.post_yield_stiffness) continue;
+  const StructureInfo& info = model.structures.front();
+  std::vector<std::string> labels;  // levels in elevation order
+  for (const int d : info.level_dofs)
+    labels.push_back(model.dofs[d].label.substr(b.name.size() + 1));
+  const int base = info.level_dofs[static_cast<std::size_t>(info.base_level)];
+  const int bottom = info.isolator_bottom_dof();
+  const IsolatorProperties p =
+      isolator_properties(b.isolator, k > 0 ? isolated_mass(b) : model.total_mass());
+  for (const auto& [name, stiffness] :
+       {std::pair{"post-yield stiffness K_post", p.post_yield_stiffness},
+        std::pair{"initial stiffness K_el", p.elastic_stiffness}}) {
+    if (b.isolator.model == IsolatorConfig::Model::kLinear && stiffness != p.post_yield_stiffness)
+      continue;
+    // The isolation layer as a spring between the slab and what it stands on.
     Eigen::MatrixXd K = model.stiffness;
-    K(0, 0) += k;
-    show(std::string("Isolated, isolators at their ") + name + " = " + std::to_string(k / 1e6) +
-             " MN/m",
+    K(base, base) += stiffness;
+    if (bottom >= 0) {
+      K(bottom, bottom) += stiffness;
+      K(base, bottom) -= stiffness;
+      K(bottom, base) -= stiffness;
+    }
+    show(std::string("Isolated, isolators at their ") + name + " = " +
+             std::to_string(stiffness / 1e6) + " MN/m",
          compute_modes(K, model.mass, model.influence), labels);
   }
   std::snprintf(line, sizeof line,

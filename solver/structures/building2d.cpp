@@ -22,12 +22,22 @@ double building_mass(const BuildingConfig& b) {
   return m;
 }
 
-ShearStick fixed_base_superstructure(const BuildingConfig& b) {
-  const int n = static_cast<int>(b.floors.size());
-  ShearStick s{Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
-  for (int i = 0; i < n; ++i) {
-    s.mass(i, i) = b.floors[i].mass;
-    const double k = b.floors[i].stiffness;
+double isolated_mass(const BuildingConfig& b) {
+  double m = b.base_mass;
+  for (std::size_t i = static_cast<std::size_t>(b.isolation_level); i < b.floors.size(); ++i)
+    m += b.floors[i].mass;
+  return m;
+}
+
+namespace {
+
+// The fixed-base stick of floors first..first+count-1 (the lowest on the ground).
+ShearStick shear_stick(const BuildingConfig& b, int first, int count) {
+  ShearStick s{Eigen::MatrixXd::Zero(count, count), Eigen::MatrixXd::Zero(count, count)};
+  for (int i = 0; i < count; ++i) {
+    const FloorConfig& f = b.floors[static_cast<std::size_t>(first + i)];
+    s.mass(i, i) = f.mass;
+    const double k = f.stiffness;
     s.stiffness(i, i) += k;
     if (i > 0) {
       s.stiffness(i - 1, i - 1) += k;
@@ -38,12 +48,13 @@ ShearStick fixed_base_superstructure(const BuildingConfig& b) {
   return s;
 }
 
-Eigen::MatrixXd superstructure_damping(const BuildingConfig& b) {
-  const int n = static_cast<int>(b.floors.size());
-  const SuperstructureDamping& d = b.damping;
+// Damping matrix of a fixed-base stick: Rayleigh at two of its modes, or modal with the same
+// ratio at every mode.
+Eigen::MatrixXd stick_damping(const ShearStick& s, const SuperstructureDamping& d,
+                              const std::string& what) {
+  const int n = static_cast<int>(s.mass.rows());
   if (d.type == SuperstructureDamping::Type::kNone || d.ratio == 0.0)
     return Eigen::MatrixXd::Zero(n, n);
-  const ShearStick s = fixed_base_superstructure(b);
   const Modes modes = compute_modes(s.stiffness, s.mass, Eigen::VectorXd::Ones(n));
   if (d.type == SuperstructureDamping::Type::kModal) {
     // C = M Phi diag(2 xi omega) Phi^T M for mass-normalised Phi.
@@ -52,8 +63,8 @@ Eigen::MatrixXd superstructure_damping(const BuildingConfig& b) {
   }
   if (d.mode_a < 1 || d.mode_b < 1 || d.mode_a > n || d.mode_b > n || d.mode_a == d.mode_b)
     throw std::invalid_argument("Rayleigh damping needs two distinct modes in 1.." +
-                                std::to_string(n) + " of the fixed-base superstructure");
-  require_distinct_modes(modes.omega, d.mode_a, d.mode_b, "the fixed-base superstructure");
+                                std::to_string(n) + " of " + what);
+  require_distinct_modes(modes.omega, d.mode_a, d.mode_b, what);
   const double wa = modes.omega[d.mode_a - 1];
   const double wb = modes.omega[d.mode_b - 1];
   const double a0 = 2.0 * d.ratio * wa * wb / (wa + wb);
@@ -61,13 +72,39 @@ Eigen::MatrixXd superstructure_damping(const BuildingConfig& b) {
   return a0 * s.mass + a1 * s.stiffness;
 }
 
+}  // namespace
+
+ShearStick fixed_base_superstructure(const BuildingConfig& b) {
+  const int k = b.isolated ? b.isolation_level : 0;
+  return shear_stick(b, k, static_cast<int>(b.floors.size()) - k);
+}
+
+ShearStick fixed_base_substructure(const BuildingConfig& b) {
+  return shear_stick(b, 0, b.isolated ? b.isolation_level : 0);
+}
+
+Eigen::MatrixXd superstructure_damping(const BuildingConfig& b) {
+  return stick_damping(fixed_base_superstructure(b), b.damping, "the fixed-base superstructure");
+}
+
+Eigen::MatrixXd substructure_damping(const BuildingConfig& b) {
+  return stick_damping(fixed_base_substructure(b), b.substructure_damping,
+                       "the fixed-base substructure");
+}
+
 void add_building(Model& model, const BuildingConfig& b) {
   const int floors = static_cast<int>(b.floors.size());
   if (floors < 1) throw std::invalid_argument("building '" + b.name + "' has no floors");
+  // k: the isolators stand on floor k (0: the ground); the DOFs in elevation order.
+  const int k = b.isolated ? b.isolation_level : 0;
+  if (k < 0 || k >= floors)
+    throw std::invalid_argument("building '" + b.name + "': isolation_level " + std::to_string(k) +
+                                " must leave a floor above (0.." + std::to_string(floors - 1) +
+                                ")");
   const int offset = model.size();
-  const int base = b.isolated ? offset : -1;
-  const int first_floor = b.isolated ? offset + 1 : offset;
-  const int n = first_floor + floors;
+  const int base = b.isolated ? offset + k : -1;
+  const auto floor_dof = [&](int i) { return offset + i + (b.isolated && i >= k ? 1 : 0); };
+  const int n = offset + floors + (b.isolated ? 1 : 0);
 
   model.grow(n);
   model.influence.tail(n - offset).setOnes();
@@ -75,24 +112,30 @@ void add_building(Model& model, const BuildingConfig& b) {
   StructureInfo info;
   info.name = b.name;
   info.has_base = b.isolated;
+  info.base_level = k;
+  if (k > 0) info.isolation_height = b.isolation_height;
   const int structure = static_cast<int>(model.structures.size());
+  model.dofs.resize(static_cast<std::size_t>(n));
+  info.level_dofs.resize(static_cast<std::size_t>(n - offset));
   if (b.isolated) {
-    model.dofs.push_back({b.name + "/base", structure, 0});
-    info.level_dofs.push_back(base);
+    model.dofs[static_cast<std::size_t>(base)] = {b.name + "/base", structure, 0};
+    info.level_dofs[static_cast<std::size_t>(k)] = base;
     model.mass(base, base) = b.base_mass;
   }
   for (int i = 0; i < floors; ++i) {
-    const int dof = first_floor + i;
-    model.dofs.push_back({b.name + "/floor " + std::to_string(i + 1), structure, i + 1});
-    info.level_dofs.push_back(dof);
+    const int dof = floor_dof(i);
+    model.dofs[static_cast<std::size_t>(dof)] = {b.name + "/floor " + std::to_string(i + 1),
+                                                 structure, i + 1};
+    info.level_dofs[static_cast<std::size_t>(dof - offset)] = dof;
     info.story_heights.push_back(b.floors[i].height);
     model.mass(dof, dof) = b.floors[i].mass;
-    const int below = i > 0 ? dof - 1 : base;  // -1: ground (fixed base)
+    // The level under the storey: the isolated slab, a floor, or -1 (the ground).
+    const int below = b.isolated && i == k ? base : (i > 0 ? floor_dof(i - 1) : -1);
     // A linear term of the story in K: its elastic spring (unless the story yields) and, with
     // P-Delta, the geometric stiffness -P/h of the weight above.
-    double k = 0.0;
+    double stiffness = 0.0;
     if (b.floors[i].hysteresis.model == StoryHysteresisConfig::Model::kElastic) {
-      k = b.floors[i].stiffness;
+      stiffness = b.floors[i].stiffness;
       info.story_elements.push_back(-1);
     } else {
       info.story_elements.push_back(static_cast<int>(model.elements.size()));
@@ -100,30 +143,37 @@ void add_building(Model& model, const BuildingConfig& b) {
           b.name + "/story " + std::to_string(i + 1) + "/hysteretic", below, dof,
           make_story_material(b, i), story_yield_drift(b, i)));
     }
-    if (b.p_delta) k -= weight_above_story(b, i) / b.floors[i].height;
-    if (k != 0.0) {
-      model.stiffness(dof, dof) += k;
+    if (b.p_delta) stiffness -= weight_above_story(b, i) / b.floors[i].height;
+    if (stiffness != 0.0) {
+      model.stiffness(dof, dof) += stiffness;
       if (below >= 0) {
-        model.stiffness(below, below) += k;
-        model.stiffness(below, dof) -= k;
-        model.stiffness(dof, below) -= k;
+        model.stiffness(below, below) += stiffness;
+        model.stiffness(below, dof) -= stiffness;
+        model.stiffness(dof, below) -= stiffness;
       }
     }
   }
   info.elastic_limit_drift_ratio = b.elastic_limit_drift_ratio;
 
-  // Superstructure damping, relative to the base slab (or the ground if fixed).
+  // Superstructure damping, relative to the base slab (or the ground if fixed): w = T u.
   const Eigen::MatrixXd c_s = superstructure_damping(b);
-  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(floors, n - offset);
-  T.rightCols(floors).setIdentity();
-  if (b.isolated) T.col(0).setConstant(-1.0);
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(floors - k, n - offset);
+  for (int i = k; i < floors; ++i) T(i - k, floor_dof(i) - offset) = 1.0;
+  if (b.isolated) T.col(base - offset).setConstant(-1.0);
   model.damping.bottomRightCorner(n - offset, n - offset) += T.transpose() * c_s * T;
+  // Substructure damping, relative to the ground (its DOFs come first).
+  if (k > 0) model.damping.block(offset, offset, k, k) += substructure_damping(b);
 
   if (b.isolated) {
-    const double m_total = building_mass(b);
-    const double carried = b.isolator.carried_mass > 0 ? b.isolator.carried_mass : m_total;
+    // The isolators carry the slab and the floors above it.
+    const double m_isolated = isolated_mass(b);
+    const double carried = b.isolator.carried_mass > 0 ? b.isolator.carried_mass : m_isolated;
+    const int bottom = k > 0 ? floor_dof(k - 1) : -1;  // -1: the ground
     info.isolator_element = static_cast<int>(model.elements.size());
     if (b.isolator.model == IsolatorConfig::Model::kFrictionPendulum) {
+      if (k > 0)
+        throw std::invalid_argument("building '" + b.name +
+                                    "': a friction pendulum isolator needs isolation_level 0");
       // Rate dependent, so not a uniaxial law: the biaxial bearing acting along x only.
       DiaphragmDofs dofs;
       dofs.ux = base;
@@ -131,11 +181,19 @@ void add_building(Model& model, const BuildingConfig& b) {
           b.name + "/isolator", dofs, Eigen::Vector2d::Zero(),
           make_bearing_material(bearing_config(b.isolator), carried)));
     } else {
-      model.elements.push_back(std::make_unique<UniaxialLink>(
-          b.name + "/isolator", kGround, base, make_isolator_material(b.isolator, carried)));
+      model.elements.push_back(
+          std::make_unique<UniaxialLink>(b.name + "/isolator", k > 0 ? bottom : kGround, base,
+                                         make_isolator_material(b.isolator, carried)));
     }
+    // The isolation dashpot, between the slab and what the isolators stand on.
     const double omega_b = 2.0 * std::numbers::pi / isolation_period(b.isolator);
-    model.damping(base, base) += 2.0 * b.isolation_damping_ratio * m_total * omega_b;
+    const double c_b = 2.0 * b.isolation_damping_ratio * m_isolated * omega_b;
+    model.damping(base, base) += c_b;
+    if (bottom >= 0) {
+      model.damping(bottom, bottom) += c_b;
+      model.damping(base, bottom) -= c_b;
+      model.damping(bottom, base) -= c_b;
+    }
   }
   model.structures.push_back(std::move(info));
 }

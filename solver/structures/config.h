@@ -66,9 +66,9 @@ struct StoryHysteresisConfig {
 };
 
 struct FloorConfig {
-  double mass = 0.0;       // kg, lumped at the floor
-  double stiffness = 0.0;  // N/m, of the story below this floor
-  double height = 0.0;     // m, of the story below this floor
+  double mass = 0.0;                   // kg, lumped at the floor
+  double stiffness = 0.0;              // N/m, of the story below this floor
+  double height = 0.0;                 // m, of the story below this floor
   StoryHysteresisConfig hysteresis{};  // of the story below this floor ({} for {m, k, h})
 };
 
@@ -86,7 +86,9 @@ struct WallConfig {
   bool left = true, right = true;  // sides: both (default) | left | right
   double gap_left = 0.2;           // m, clear distance at rest (>= 0)
   double gap_right = 0.2;          // m
-  int level = 0;           // level index that pounds (0 = base slab of an isolated building)
+  // Level index that pounds, in elevation order (floors 1..k, the isolated slab, floors
+  // k+1..n; 0 = base slab of a building isolated on the ground).
+  int level = 0;
   ImpactLawConfig impact;  // law, k, e, ...; mass_2 is the wall mass below, mass_1 the level's
   double mass = 500e3;     // kg, wall mass (thesis 500 t)
   // Flexible wall: a single-DOF structure (mass, stiffness, damping ratio) excited by the same
@@ -98,15 +100,23 @@ struct WallConfig {
   BumperConfig bumper;
 };
 
-// A 2D shear building: optional base slab on isolators, floors bottom to top.
+// A 2D shear building: optional base slab on isolators, floors bottom to top. The isolators
+// stand on the ground (isolation_level 0) or on floor k = isolation_level of a fixed-base
+// substructure (floors 1..k); floors k+1..n are the isolated superstructure, floor k+1's
+// height measured from the isolated slab (docs/isolation-level.md).
 struct BuildingConfig {
   std::string name = "building";
   bool isolated = true;    // false: fixed base (no base slab DOF)
   double base_mass = 0.0;  // kg, base slab (isolated only)
   std::vector<FloorConfig> floors;
+  int isolation_level = 0;        // k: the isolators stand on floor k (0: the ground)
+  double isolation_height = 0.0;  // m, the isolated slab above floor k (k > 0 only)
   IsolatorConfig isolator;
   SuperstructureDamping damping;
-  double isolation_damping_ratio = 0.05;  // xi_b: c_b = 2 xi_b m_tot omega_b
+  // Of the fixed-base substructure (floors 1..k, relative to the ground); by default modal with
+  // the superstructure's ratio. Unused for k = 0.
+  SuperstructureDamping substructure_damping{SuperstructureDamping::Type::kModal, 0.02, 1, 2};
+  double isolation_damping_ratio = 0.05;  // xi_b: c_b = 2 xi_b m_isolated omega_b
   std::vector<WallConfig> walls;          // moat walls (usually one entry, both sides)
   // P-Delta: each storey gets the geometric stiffness -P/h, P = g x the masses above it.
   bool p_delta = false;

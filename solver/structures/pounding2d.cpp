@@ -52,12 +52,20 @@ void add_contact(Model& model, const std::string& label, ContactBody a, ContactB
 std::vector<double> level_elevations(const BuildingConfig& building) {
   std::vector<double> z;
   double elevation = 0.0;
-  if (building.isolated) z.push_back(0.0);
-  for (const FloorConfig& f : building.floors) {
-    elevation += f.height;
+  const std::size_t k = static_cast<std::size_t>(building.isolation_level);
+  for (std::size_t i = 0; i < building.floors.size(); ++i) {
+    if (building.isolated && i == k) {  // the isolated slab, on the ground or above floor k
+      if (k > 0) elevation += building.isolation_height;
+      z.push_back(elevation);
+    }
+    elevation += building.floors[i].height;
     z.push_back(elevation);
   }
   return z;
+}
+
+bool is_base_level(const BuildingConfig& building, int level) {
+  return building.isolated && level == building.isolation_level;
 }
 
 void add_walls(Model& model, int structure, const BuildingConfig& building,
@@ -72,7 +80,7 @@ void add_walls(Model& model, int structure, const BuildingConfig& building,
     const int level_dof = level_dofs[wall.level];
     const double level_mass = model.mass(level_dof, level_dof);
     const std::string where =
-        wall.level == 0 && building.isolated ? "base" : "level " + std::to_string(wall.level);
+        is_base_level(building, wall.level) ? "base" : "level " + std::to_string(wall.level);
     for (const bool right : {false, true}) {
       if (right ? !wall.right : !wall.left) continue;
       const std::string side = right ? "right" : "left";
@@ -81,7 +89,7 @@ void add_walls(Model& model, int structure, const BuildingConfig& building,
       ContactBody wall_body;  // rigid wall: the ground
       if (wall.stiffness > 0)
         wall_body = {add_wall_structure(model, name + " structure", wall), -s};
-      if (wall.level == 0 && building.isolated)
+      if (is_base_level(building, wall.level))
         model.structures[structure].base_contact_elements.push_back(
             static_cast<int>(model.elements.size()));
       add_contact(model, name, {level_dof, s}, wall_body, right ? wall.gap_right : wall.gap_left,
@@ -110,9 +118,9 @@ void add_neighbour(Model& model, int main, const BuildingConfig& main_building,
       if (!neighbour.pounding) continue;
       // Base slab against base slab: the contact is part of both structures' base shear.
       const int element = static_cast<int>(model.elements.size());
-      if (i == 0 && main_building.isolated)
+      if (is_base_level(main_building, static_cast<int>(i)))
         model.structures[main].base_contact_elements.push_back(element);
-      if (j == 0 && neighbour.building.isolated)
+      if (is_base_level(neighbour.building, static_cast<int>(j)))
         model.structures[other].base_contact_elements.push_back(element);
       add_contact(model, label, {dof_main, s}, {dof_other, -s}, neighbour.gap, neighbour.impact,
                   model.mass(dof_main, dof_main), model.mass(dof_other, dof_other),

@@ -15,8 +15,12 @@ void add_walls(Model& model, int structure, const BuildingConfig& building,
 void add_neighbour(Model& model, int main, const BuildingConfig& main_building,
                    const NeighbourConfig& neighbour, double steps_per_contact);
 
-// Elevation of each level of a building, m: base slab at 0, floor k at the sum of the story
-// heights below it (fixed base: floor 1 at the first story height).
+// Elevation of each level of a building in level order, m: floor i at the sum of the story
+// heights below it, the isolated slab at 0 or, isolated above floor k, at z(floor k) +
+// isolation_height (and the floors above it raised by that).
 std::vector<double> level_elevations(const BuildingConfig& building);
+
+// Whether level index `level` is the building's isolated slab.
+bool is_base_level(const BuildingConfig& building, int level);
 
 }  // namespace isopound

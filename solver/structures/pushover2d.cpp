@@ -26,6 +26,7 @@ BuildingPushoverResult run_pushover2d(const ModelConfig& config,
   const int roof = info.level_dofs.back();
   double height = 0.0;
   for (const FloorConfig& f : b.floors) height += f.height;
+  if (b.isolated && b.isolation_level > 0) height += b.isolation_height;  // the isolation storey
 
   PushoverOptions o;
   o.control = Eigen::VectorXd::Zero(n);
@@ -60,7 +61,8 @@ BuildingPushoverResult run_pushover2d(const ModelConfig& config,
       const Story& st = stories[k];
       const double drift = s.u[st.upper] - (st.lower >= 0 ? s.u[st.lower] : 0.0);
       double shear = 0.0;
-      for (std::size_t level = k + (info.has_base ? 1 : 0); level < info.level_dofs.size(); ++level)
+      for (std::size_t level = static_cast<std::size_t>(info.floor_level(static_cast<int>(k) + 1));
+           level < info.level_dofs.size(); ++level)
         shear += s.lambda * o.pattern[info.level_dofs[level]];
       row.insert(row.end(), {drift, drift / st.height, shear});
       if (r.first_yield_row < 0 && yield_drift[k] > 0 &&

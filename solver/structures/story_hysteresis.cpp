@@ -14,6 +14,8 @@ double weight_above_story(const BuildingConfig& b, int story) {
   double mass = 0.0;
   for (std::size_t i = static_cast<std::size_t>(story); i < b.floors.size(); ++i)
     mass += b.floors[i].mass;
+  // A storey of the substructure under isolators also carries the isolated slab.
+  if (b.isolated && story < b.isolation_level) mass += b.base_mass;
   return kGravity * mass;
 }
 

@@ -22,7 +22,8 @@ Eigen::VectorXd ensemble_initial_displacement(const Model& model, int member, in
                                               double offset) {
   Eigen::VectorXd u0 = Eigen::VectorXd::Zero(model.size());
   if (member <= 0 || model.structures.empty() || model.structures[0].level_dofs.empty()) return u0;
-  const int d = model.structures[0].level_dofs[0];
+  const int d = model.structures[0].has_base ? model.structures[0].base_dof()
+                                             : model.structures[0].level_dofs[0];
   const bool plan = d + 1 < model.size() && model.dofs[d].kind == DofKind::kTranslationX &&
                     model.dofs[d + 1].kind == DofKind::kTranslationY;
   if (plan) {

@@ -111,22 +111,22 @@ std::string level_name(const Model& model, int dof) {
 
 // The levels (indices into level_dofs) a level selector names.
 std::vector<int> selected_levels(const OutputSelector& s, const StructureInfo& b) {
-  const int first_floor = b.has_base ? 1 : 0;
   const int levels = static_cast<int>(b.level_dofs.size());
+  const int floors = levels - (b.has_base ? 1 : 0);
   if (s.where == "base") {
     if (!b.has_base) fail_selector(s, "the building has a fixed base (no base slab)");
-    return {0};
+    return {b.base_level};
   }
   if (s.where == "roof") return {levels - 1};
   std::vector<int> out;
   if (s.where == "floors" || s.where == "levels") {
-    for (int l = s.where == "floors" ? first_floor : 0; l < levels; ++l) out.push_back(l);
+    for (int l = 0; l < levels; ++l)
+      if (s.where == "levels" || !b.has_base || l != b.base_level) out.push_back(l);
     return out;
   }
   const int floor = numbered(s.where, "floor");
-  if (first_floor + floor - 1 >= levels)
-    fail_selector(s, "the building has " + std::to_string(levels - first_floor) + " floors");
-  return {first_floor + floor - 1};
+  if (floor > floors) fail_selector(s, "the building has " + std::to_string(floors) + " floors");
+  return {b.floor_level(floor)};
 }
 
 // The stories (1-based) a story selector names; `count` stories in the building.
