@@ -39,6 +39,7 @@ struct StructureInfo {
   std::string name;
   std::vector<int> level_dofs;        // DOF index of each level, bottom to top
   bool has_base = false;              // level_dofs[0] is an isolated base slab
+  int base_level = 0;                 // index into level_dofs of the isolated slab when has_base
   std::vector<double> story_heights;  // story s links level s-1 (or ground) and level s
   int isolator_element = -1;          // index into Model::elements, or -1
   // Elements that push the base level from outside the structure (a moat wall, a neighbour's

@@ -9,6 +9,7 @@
 #include "geometry/overlap.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/levels3d.h"
 
 namespace isopound {
 
@@ -41,9 +42,15 @@ Vec2 wall_normal_W(const Building3DConfig& b, int side) {
 
 }  // namespace
 
+int walls_level3d(const Building3DConfig& b) {
+  return b.walls_level >= 0 ? b.walls_level : base_level3d(b);
+}
+
 std::vector<Vec2> moat_wall_outline(const Building3DConfig& b, int side) {
   const MoatWalls3DConfig& w = b.walls;
-  const ConvexPolygon slab = polygon_of(b.base.plan);
+  const std::vector<Level3D> levels = levels3d(b);
+  const ConvexPolygon slab =
+      polygon_of(levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan);
   const Vec2 lo = slab.box_min(), hi = slab.box_max();
   const double g = w.gap[side], t = w.thickness, e = w.extension;
   double x0, x1, y0, y1;
@@ -84,13 +91,11 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
                              .building = static_cast<int>(i),
                              .wall_side = -1});
     };
-    double z = 0.0;
-    if (b.isolated) add_slab("base", 0.0, b.base);
-    for (std::size_t k = 0; k < b.storeys.size(); ++k) {
-      z += b.storeys[k].height;
-      add_slab("floor " + std::to_string(k + 1), z, b.storeys[k].floor);
-    }
+    const std::vector<Level3D> levels = levels3d(b);
+    for (const Level3D& level : levels) add_slab(level.name, level.elevation, *level.diaphragm);
     if (!b.isolated) continue;
+    // The walls stand at the level they face (the base slab unless walls.level says otherwise).
+    const double wall_elevation = levels.at(static_cast<std::size_t>(walls_level3d(b))).elevation;
     for (int side = 0; side < 4; ++side) {
       if (!b.walls.present[side]) continue;
       const std::vector<Vec2> outline = moat_wall_outline(b, side);
@@ -99,7 +104,7 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
       SiteBody w{.structure = std::string("wall ") + MoatWalls3DConfig::kSideNames[side],
                  .level = "wall",
                  .role = "wall",
-                 .elevation = 0.0,
+                 .elevation = wall_elevation,
                  .height = b.walls.height,
                  .plan_W = polygon_of(placed(b, outline)),
                  .p_WO = {0.0, 0.0},
@@ -234,7 +239,7 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
     for (const SiteBody* side : {&bodies[pair.a], &bodies[pair.b]}) {
       const int u = find_dof(model, side->dof_label_u);
       for (StructureInfo& s : model.structures)
-        if (s.has_base && u >= 0 && u != s.level_dofs[0] &&
+        if (s.has_base && u >= 0 && u != s.level_dofs[s.base_level] &&
             std::find(s.level_dofs.begin(), s.level_dofs.end(), u) != s.level_dofs.end())
           s.upper_contact_elements.push_back(static_cast<int>(model.elements.size()));
     }
