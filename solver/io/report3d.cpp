@@ -423,7 +423,7 @@ void print_modes3d(std::ostream& out, const ModelConfig& config) {
       show("fixed-base superstructure (storeys " + std::to_string(b.isolation_level + 1) + ".." +
                std::to_string(b.storeys.size()) + ", fixed at the base slab)",
            linear_model3d(b, false, true));
-      show("fixed-base substructure (storeys 1.." + k + ")",
+      show("fixed-base substructure (" + (k == "1" ? "storey 1" : "storeys 1.." + k) + ")",
            linear_model3d(substructure3d(b), false, true));
     } else {
       show("fixed-base superstructure", linear_model3d(b, false, true));

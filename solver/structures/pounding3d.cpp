@@ -234,14 +234,20 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
       c.mass_2 = bodies[pair.b].mass;
       law.normal_law = make_impact_law(c);
     }
-    // A contact above an isolated structure's base slab is not part of its base shear
-    // (StructureInfo::upper_contact_elements).
+    // A contact on a level other than an isolated structure's base slab is not part of its base
+    // shear (StructureInfo::upper_contact_elements); nor is one on a base slab raised above a
+    // storey by anything but its moat walls (a neighbour's floor is no foundation).
+    const bool with_wall = bodies[pair.a].role == "wall" || bodies[pair.b].role == "wall";
     for (const SiteBody* side : {&bodies[pair.a], &bodies[pair.b]}) {
       const int u = find_dof(model, side->dof_label_u);
-      for (StructureInfo& s : model.structures)
-        if (s.has_base && u >= 0 && u != s.level_dofs[s.base_level] &&
-            std::find(s.level_dofs.begin(), s.level_dofs.end(), u) != s.level_dofs.end())
+      for (StructureInfo& s : model.structures) {
+        if (!s.has_base || u < 0 ||
+            std::find(s.level_dofs.begin(), s.level_dofs.end(), u) == s.level_dofs.end())
+          continue;
+        const bool on_base = u == s.level_dofs[s.base_level];
+        if (!on_base || (s.base_level > 0 && !with_wall))
           s.upper_contact_elements.push_back(static_cast<int>(model.elements.size()));
+      }
     }
     model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(bodies[pair.a]),
                                                               body(bodies[pair.b]), law));
