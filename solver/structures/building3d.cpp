@@ -299,12 +299,14 @@ void add_building3d(Model& model, const Building3DConfig& b) {
       for (int i = 0; i < nf; i += 3) T.block<3, 3>(i, base) = -Eigen::Matrix3d::Identity();
       C = T.transpose() * c_s * T;
       // Substructure (documented choice, docs/isolation-level-3d.md): Rayleigh of the fixed-base
-      // substructure at the same ratios and modes, its mode_b clipped to its mode count.
+      // substructure at the same ratios and modes, clipped to its mode count (1 and 3k if they
+      // then coincide).
       if (base > 0) {
         const Assembly sub = assemble(substructure3d(b));
         Damping3DConfig d_sub = d;
+        d_sub.mode_a = std::min(d.mode_a, base);  // base = 3k: the substructure's mode count
         d_sub.mode_b = std::min(d.mode_b, base);
-        if (d_sub.mode_a == d_sub.mode_b) d_sub.mode_a = 1, d_sub.mode_b = 2;
+        if (d_sub.mode_a == d_sub.mode_b) d_sub.mode_a = 1, d_sub.mode_b = base;
         C.topLeftCorner(base, base) +=
             rayleigh(sub.initial_stiffness, sub.mass, sub.influence, d_sub,
                      "the fixed-base substructure of building '" + b.name + "'");
