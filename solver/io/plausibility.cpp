@@ -20,7 +20,7 @@ constexpr Dimension kMoment{2, 1, -2};      // N m
 constexpr Dimension kArea{2, 0, 0};         // m^2
 
 // clang-format off
-constexpr std::array<PlausibleRange, 48> kRanges{{
+constexpr std::array<PlausibleRange, 49> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
@@ -30,6 +30,7 @@ constexpr std::array<PlausibleRange, 48> kRanges{{
   {"thickness",    dim::kLength, 0, 20, 0.05, 3, "m", 1, "a wall thickness"},
   {"height",       dim::kLength, 0, 200, 0.2, 20, "m", 1, "a storey or wall height"},
   {"extension",    dim::kLength, 0, 100, 0, 20, "m", 1, "a wall extension beyond the slab"},
+  {"isolation_height", dim::kLength, 0, 50, 0.3, 5, "m", 1, "an isolated slab's height above its floor"},
   {"mass",         dim::kMass, 0, 1e9, 1e3, 1e8, "t", 1e3, "a floor or base-slab mass"},
   {"roof_mass",    dim::kMass, 0, 1e9, 1e3, 1e8, "t", 1e3, "a roof mass"},
   {"carried_mass", dim::kMass, 0, 1e9, 0, 1e8, "t", 1e3, "the mass one bearing carries"},
