@@ -12,7 +12,7 @@ namespace {
 
 TEST(PostSite3D, MidStoreyIsolationBearingsJoinFloorOneToTheRaisedSlab) {
   const ModelConfig config =
-      load_model_file((source_dir() / "configs/3d-mid-storey-isolation.yaml").string());
+      load_model_file((test::source_dir() / "configs/3d-mid-storey-isolation.yaml").string());
   const Site3D site = site_geometry(config);
   const int base = site.find("building/base"), floor1 = site.find("building/floor 1");
   const int floor2 = site.find("building/floor 2");
