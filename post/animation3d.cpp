@@ -146,16 +146,19 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     f.cell(3, {point_of(lo, c.p_W, z_lo), point_of(hi, c.p_W, z_hi)}, v);
   }
 
-  // Bearings: from the ground (fixed) to the underside of the base slab.
+  // Bearings: from the ground (fixed; drawn 0.6 m tall) or the top of the floor they stand on
+  // (isolated above a storey) to the underside of the base slab.
   for (const PlanBearing& b : run.site.bearings) {
     const BodyState& base = states[b.base];
+    const BodyState& lower = b.lower >= 0 ? states[b.lower] : ground;
     CellValues v;
     v.block = Block::kBearing;
     v.structure = base.structure;
     for (const ElementColumns& e : run.isolators)
       if (e.label == b.label && e.force >= 0) v.bearing_force = value_at(run, e.force, t);
     const double z_top = run.site.bodies[b.base].elevation - H;
-    f.cell(3, {point_of(ground, b.p_W, z_top - 0.6), point_of(base, b.p_W, z_top)}, v);
+    const double z_bottom = b.lower >= 0 ? run.site.bodies[b.lower].elevation : z_top - 0.6;
+    f.cell(3, {point_of(lower, b.p_W, z_bottom), point_of(base, b.p_W, z_top)}, v);
   }
 
   // Contacts in contact at t (by the event log): overlap, and the forces at the centroid.

@@ -38,10 +38,18 @@ std::string short_label(const std::string& label, const RunData& run) {
   return label;
 }
 
+// The structure's base slab (wherever it sits: isolated above a storey, it is not the lowest
+// level), else its lowest level.
+const Level* base_level(const RunData& run, const Structure& s) {
+  for (const Level& l : s.levels)
+    if (run.site.bodies[l.body].level == "base") return &l;
+  return nullptr;
+}
+
 const Structure& main_structure(const RunData& run) {
   // The first isolated structure (with a base slab), else the first.
   for (const Structure& s : run.structures)
-    if (!s.levels.empty() && run.site.bodies[s.levels.front().body].level == "base") return s;
+    if (base_level(run, s)) return s;
   return run.structures.front();
 }
 
@@ -50,11 +58,13 @@ const Structure& main_structure(const RunData& run) {
 std::vector<CornerDrift> corner_drifts(const RunData& run) {
   std::vector<CornerDrift> out;
   for (const Structure& s : run.structures) {
-    const bool isolated = run.site.bodies[s.levels.front().body].level == "base";
-    for (std::size_t k = isolated ? 1 : 0; k < s.levels.size(); ++k) {
+    for (std::size_t k = 0; k < s.levels.size(); ++k) {
       const Level& hi = s.levels[k];
       const Level* lo = k > 0 ? &s.levels[k - 1] : nullptr;  // nullptr: the ground
       const PlanBody& body = run.site.bodies[hi.body];
+      // Storey f ends at floor f; the base slab ends the isolation layer, no storey.
+      if (body.level.rfind("floor ", 0) != 0) continue;
+      const int storey = std::atoi(body.level.c_str() + 6);
       const double h = body.elevation - (lo ? run.site.bodies[lo->body].elevation : 0.0);
       CornerDrift best;
       for (std::size_t c = 0; c < body.plan_W.size(); ++c) {
@@ -62,8 +72,7 @@ std::vector<CornerDrift> corner_drifts(const RunData& run) {
         PlanHistory down;
         if (lo) down = point_history(run, *lo, body.plan_W[c], false);
         CornerDrift d;
-        d.label = s.name + "/story " + std::to_string(k + (isolated ? 0 : 1)) + " corner " +
-                  std::to_string(c + 1);
+        d.label = s.name + "/story " + std::to_string(storey) + " corner " + std::to_string(c + 1);
         for (std::size_t r = 0; r < run.rows(); ++r) {
           const double dx = up.x[r] - (lo ? down.x[r] : 0.0), dy = up.y[r] - (lo ? down.y[r] : 0.0);
           d.ratio.push_back(std::hypot(dx, dy) / h);
@@ -80,7 +89,7 @@ std::vector<CornerDrift> corner_drifts(const RunData& run) {
 std::vector<NamedFigure> run_figures3d(const RunData& run) {
   const std::vector<double>& t = run.time();
   const Structure& main = main_structure(run);
-  const Level& base = main.levels.front();
+  const Level& base = base_level(run, main) ? *base_level(run, main) : main.levels.front();
   const PlanBody& base_body = run.site.bodies[base.body];
   std::vector<NamedFigure> out;
 

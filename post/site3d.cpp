@@ -1,5 +1,5 @@
 // Plan geometry of a 3D model at rest (see site3d.h). Slabs, columns and bearings from the
-// buildings (levels bottom to top, base slab at 0, floor k at the sum of storeys 1..k, outlines
+// buildings (levels bottom to top as levels3d.h orders and raises them, outlines
 // placed in W by the building's position and rotation); walls from the solver's site_bodies()
 // (solver/structures/pounding3d.h), whose slabs must be these (checked: one geometry).
 #include "post/site3d.h"
@@ -10,6 +10,7 @@
 
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
+#include "solver/structures/levels3d.h"
 #include "solver/structures/pounding3d.h"
 
 namespace isopound::post {
@@ -52,24 +53,33 @@ Site3D site_geometry(const ModelConfig& config) {
       site.bodies.push_back(std::move(body));
       return static_cast<int>(site.bodies.size()) - 1;
     };
-    int below = b.isolated ? add_level(b.base, "base", 0.0) : -1;
+    // Levels in elevation order (levels3d.h); storey s stands on the level under it.
+    const std::vector<Level3D> levels = levels3d(b);
+    std::vector<int> body_of;
+    for (const Level3D& level : levels)
+      body_of.push_back(add_level(*level.diaphragm, level.name, level.elevation));
     if (b.isolated) {
+      const int base = body_of[static_cast<std::size_t>(base_level3d(b))];
+      const int on = bearing_lower_level3d(b);
+      const int lower = on >= 0 ? body_of[static_cast<std::size_t>(on)] : -1;
       const auto add_bearing = [&](const std::string& label, Vec2 p_B) {
-        site.bearings.push_back({b.name + "/bearing " + label, to_plan(b, p_B), below});
+        site.bearings.push_back({b.name + "/bearing " + label, to_plan(b, p_B), base, lower});
       };
       if (b.bearings.empty() && !b.storeys.empty())
-        for (const Column3DConfig& c : b.storeys.front().columns) add_bearing(c.label, c.position);
+        for (const Column3DConfig& c :
+             b.storeys.at(static_cast<std::size_t>(b.isolation_level)).columns)
+          add_bearing(c.label, c.position);
       for (const Bearing3DConfig& c : b.bearings) add_bearing(c.label, c.position);
     }
-    double z = 0.0;
     for (std::size_t s = 0; s < b.storeys.size(); ++s) {
       const Storey3DConfig& storey = b.storeys[s];
-      z += storey.height;
-      const int upper = add_level(storey.floor, "floor " + std::to_string(s + 1), z);
+      const int floor = static_cast<int>(s) + 1;
+      const int upper = body_of[static_cast<std::size_t>(floor_level3d(b, floor))];
+      const int under = storey_lower_level3d(b, floor);
+      const int below = under >= 0 ? body_of[static_cast<std::size_t>(under)] : -1;
       for (const Column3DConfig& c : storey.columns)
-        site.columns.push_back({b.name + "/story " + std::to_string(s + 1) + "/" + c.label,
+        site.columns.push_back({b.name + "/story " + std::to_string(floor) + "/" + c.label,
                                 to_plan(b, c.position), below, upper, storey.height});
-      below = upper;
     }
   }
   for (const SiteBody& b : site_bodies(config)) {

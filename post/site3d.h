@@ -16,7 +16,7 @@ struct PlanBody {
   std::string structure;     // "building", "east-neighbour", "wall east"
   std::string level;         // "base", "floor 1", ..., "wall"
   std::string role;          // "slab" | "wall"
-  double elevation = 0.0;    // m: a slab's level (base slab 0); a wall's base (0)
+  double elevation = 0.0;    // m: a slab's level (levels3d.h); a wall's top (its level's)
   double height = 0.0;       // m: a wall's height; a slab 0
   std::vector<Vec2> plan_W;  // outline, counter-clockwise (validated as a ConvexPolygon)
   Vec2 p_WCM;                // centre of mass at rest (slabs; walls: centroid)
@@ -39,7 +39,8 @@ struct PlanColumn {
 struct PlanBearing {
   std::string label;  // "building/bearing A1" (the history label of its outputs)
   Vec2 p_W;
-  int base = -1;  // body index of the base slab
+  int base = -1;   // body index of the base slab
+  int lower = -1;  // body index of the floor it stands on (isolated above a storey), -1: ground
 };
 
 struct Site3D {

@@ -38,7 +38,8 @@ void check_structures(const ScannedModel& model, const Site& site,
     for (std::size_t s = 0; s + 1 < p.storeys.size(); ++s) {
       const StoreyProperties& lo = p.storeys[s];
       const StoreyProperties& hi = p.storeys[s + 1];
-      if (lo.storey == 0) continue;  // the isolation layer is meant to be soft
+      // The isolation layer (first, or between storeys k and k + 1) is meant to be soft.
+      if (lo.storey == 0 || hi.storey == 0) continue;
       for (const auto& [axis, k_lo, k_hi] :
            {std::tuple{"x", lo.k_x, hi.k_x}, std::tuple{"y", lo.k_y, hi.k_y}}) {
         const double ratio = std::max(k_lo / k_hi, k_hi / k_lo);

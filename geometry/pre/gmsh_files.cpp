@@ -167,10 +167,12 @@ GmshFile write_model(const Site& site, const std::string& dir, const std::string
         if (s.structure == site.ground_columns_structure[i]) name = s.name;
       add_columns(geometry, {site.ground_columns[i]}, name + "/ground", 0.0, groups);
     }
-    for (const PlanWall& w : site.walls)
-      groups.add(w.structure + "/base/wall", 2,
-                 geometry.polygon(w.plan_W, 0.0, slab_size(w.plan_W)));
   }
+  // Walls at the level they face (the base slab's, at the ground unless isolated above a storey).
+  for (const PlanWall& w : site.walls)
+    if (keep(w.elevation))
+      groups.add(w.structure + "/base/wall", 2,
+                 geometry.polygon(w.plan_W, w.elevation, slab_size(w.plan_W)));
   gmsh::model::geo::synchronize();
   for (const SlabWithPoints& slab : slabs) slab.embed();
   GmshFile file{stem, elevation, groups.create()};
@@ -204,7 +206,9 @@ std::vector<GmshFile> write_gmsh_files(const Site& site, const std::string& dir)
     std::map<long, double> levels;
     for (const PlanSlab& s : site.slabs)
       levels.emplace(std::lround(s.elevation * 100), s.elevation);
-    if (!site.ground_columns.empty() || !site.walls.empty()) levels.emplace(0L, 0.0);
+    if (!site.ground_columns.empty()) levels.emplace(0L, 0.0);
+    for (const PlanWall& w : site.walls)
+      levels.emplace(std::lround(w.elevation * 100), w.elevation);
     std::vector<GmshFile> files;
     for (const auto& [cm, z] : levels) {
       char stem[64];

@@ -158,7 +158,11 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
       cm = cm + d.mass * d.p_WM;
     }
     cm = (1.0 / m) * cm;
-    const Point2 s = px(p.storeys.front().p_WS), c = px(cm);
+    // The isolation layer's centre of stiffness (wherever it sits), else storey 1's.
+    const StoreyProperties* stiff = &p.storeys.front();
+    for (const StoreyProperties& st : p.storeys)
+      if (st.storey == 0) stiff = &st;
+    const Point2 s = px(stiff->p_WS), c = px(cm);
     std::vector<Point2> frame = square(s, 10);
     frame.push_back(frame.front());
     f.lines.push_back({frame, kStiffnessColour, 3});

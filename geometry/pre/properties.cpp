@@ -9,6 +9,7 @@
 
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
+#include "solver/structures/levels3d.h"
 
 namespace isopound::pre {
 namespace {
@@ -66,26 +67,16 @@ std::vector<StructureProperties> structure_properties(const ModelConfig& config)
     StructureProperties p;
     p.name = b.name;
     p.isolated = b.isolated;
+    // Levels in elevation order (levels3d.h): the base slab over floor k when isolated above a
+    // storey.
+    const std::vector<Level3D> levels_B = levels3d(b);
     std::vector<Diaphragm3DConfig> levels;
-    std::vector<std::string> names;
-    std::vector<double> elevations;
-    if (b.isolated) {
-      levels.push_back(diaphragm_in_plan(b, b.base));
-      names.push_back("base");
-      elevations.push_back(0.0);
-    }
-    double z = 0.0;
-    for (std::size_t s = 0; s < b.storeys.size(); ++s) {
-      z += b.storeys[s].height;
-      levels.push_back(diaphragm_in_plan(b, b.storeys[s].floor));
-      names.push_back("floor " + std::to_string(s + 1));
-      elevations.push_back(z);
-    }
+    for (const Level3D& level : levels_B) levels.push_back(diaphragm_in_plan(b, *level.diaphragm));
     std::vector<Eigen::Matrix3d> masses;
     for (std::size_t l = 0; l < levels.size(); ++l) {
       DiaphragmProperties d;
-      d.level = names[l];
-      d.elevation = elevations[l];
+      d.level = levels_B[l].name;
+      d.elevation = levels_B[l].elevation;
       d.mass = levels[l].mass;
       d.exact = area_properties(ConvexPolygon(std::span<const Vec2>(levels[l].plan)));
       d.radius_of_gyration = std::sqrt(d.exact.radius_of_gyration_sq());
@@ -93,26 +84,33 @@ std::vector<StructureProperties> structure_properties(const ModelConfig& config)
       mass_centre(masses.back(), d.p_WM, d.mass_radius_of_gyration);
       p.diaphragms.push_back(d);
     }
-    const std::size_t first_floor = b.isolated ? 1 : 0;
+    const auto storey_k = [&](std::size_t s) {
+      return storey_stiffness(columns_in_plan(b, b.storeys[s].columns), b.storeys[s].height,
+                              b.column_coupling);
+    };
+    StoreyProperties isolation;
     if (b.isolated) {
-      // Bearings at K_post: the base block of the isolated linear model less storey 1's columns.
+      // Bearings at K_post: the base slab's block of the isolated linear model less the columns
+      // of the storey standing on it (storey k + 1).
+      const int base = base_level3d(b);
       const LinearModel3D lin = linear_model3d(b, false, false);
-      const Eigen::Matrix3d k = lin.stiffness.topLeftCorner<3, 3>() -
-                                storey_stiffness(columns_in_plan(b, b.storeys[0].columns),
-                                                 b.storeys[0].height, b.column_coupling);
+      const Eigen::Matrix3d k =
+          lin.stiffness.block<3, 3>(3 * base, 3 * base) - storey_k(static_cast<std::size_t>(base));
       Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
-      for (const Eigen::Matrix3d& mi : masses) m += mi;
-      StoreyProperties s = storey_properties(k, m);
-      s.storey = 0;
-      s.label = "isolation";
-      p.storeys.push_back(s);
+      for (std::size_t l = static_cast<std::size_t>(base); l < masses.size(); ++l) m += masses[l];
+      isolation = storey_properties(k, m);
+      isolation.storey = 0;
+      isolation.label = "isolation";
     }
     for (std::size_t s = 0; s < b.storeys.size(); ++s) {
-      const Eigen::Matrix3d k = storey_stiffness(columns_in_plan(b, b.storeys[s].columns),
-                                                 b.storeys[s].height, b.column_coupling);
-      StoreyProperties sp = storey_properties(k, masses[first_floor + s]);
-      sp.storey = static_cast<int>(s + 1);
-      sp.label = "storey " + std::to_string(s + 1);
+      // The isolation layer in its place: between storey k and storey k + 1.
+      if (b.isolated && s == static_cast<std::size_t>(b.isolation_level))
+        p.storeys.push_back(isolation);
+      const int floor = static_cast<int>(s) + 1;
+      StoreyProperties sp =
+          storey_properties(storey_k(s), masses[static_cast<std::size_t>(floor_level3d(b, floor))]);
+      sp.storey = floor;
+      sp.label = "storey " + std::to_string(floor);
       p.storeys.push_back(sp);
     }
     out.push_back(p);

@@ -17,14 +17,17 @@ constexpr const char* kPlanUnits[] = {"N", "m", "-", "N", "N", "m", "m", "-", "-
 }  // namespace
 
 BearingLink::BearingLink(std::string label, DiaphragmDofs dofs, Eigen::Vector2d p_OB,
-                         std::unique_ptr<BiaxialMaterial> law)
+                         std::unique_ptr<BiaxialMaterial> law, DiaphragmDofs lower)
     : label_(std::move(label)),
       dofs_(dofs),
+      lower_(lower),
+      has_lower_(lower.ux >= 0 || lower.uy >= 0 || lower.theta >= 0),
       p_OB_(p_OB),
       law_(std::move(law)),
       coupled_(dynamic_cast<CoupledBoucWenMaterial*>(law_.get())),
       planar_(dofs.uy < 0 && dofs.theta < 0),
-      consecutive_(dofs.ux >= 0 && dofs.uy == dofs.ux + 1 && dofs.theta == dofs.ux + 2) {
+      consecutive_(!has_lower_ && dofs.ux >= 0 && dofs.uy == dofs.ux + 1 &&
+                   dofs.theta == dofs.ux + 2) {
   if (!law_) throw std::invalid_argument("bearing '" + label_ + "': no law");
   if (dofs.ux < 0 && dofs.uy < 0 && dofs.theta < 0)
     throw std::invalid_argument("bearing '" + label_ + "': no diaphragm DOF");
@@ -38,6 +41,17 @@ Eigen::Vector2d BearingLink::deformation_of(const Eigen::VectorXd& u) const {
     const double theta = u[dofs_.theta];
     d[0] -= p_OB_.y() * theta;
     d[1] += p_OB_.x() * theta;
+  }
+  if (has_lower_) {
+    Eigen::Vector2d d_lower = Eigen::Vector2d::Zero();
+    if (lower_.ux >= 0) d_lower[0] += u[lower_.ux];
+    if (lower_.uy >= 0) d_lower[1] += u[lower_.uy];
+    if (lower_.theta >= 0) {
+      const double theta = u[lower_.theta];
+      d_lower[0] -= p_OB_.y() * theta;
+      d_lower[1] += p_OB_.x() * theta;
+    }
+    d -= d_lower;
   }
   return d;
 }
@@ -174,6 +188,11 @@ void BearingLink::scatter(const Eigen::Vector2d& F, Eigen::VectorXd& f) const {
   if (dofs_.ux >= 0) f[dofs_.ux] += F[0];
   if (dofs_.uy >= 0) f[dofs_.uy] += F[1];
   if (dofs_.theta >= 0) f[dofs_.theta] += p_OB_.x() * F[1] - p_OB_.y() * F[0];
+  if (has_lower_) {
+    if (lower_.ux >= 0) f[lower_.ux] -= F[0];
+    if (lower_.uy >= 0) f[lower_.uy] -= F[1];
+    if (lower_.theta >= 0) f[lower_.theta] -= p_OB_.x() * F[1] - p_OB_.y() * F[0];
+  }
 }
 
 void BearingLink::add_force(Eigen::VectorXd& f) const {
@@ -217,15 +236,17 @@ void BearingLink::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const 
     }
     return;
   }
-  // Columns of T for (ux, uy, theta).
-  const int dof[3] = {dofs_.ux, dofs_.uy, dofs_.theta};
+  // Columns of T for (ux, uy, theta); with a lower diaphragm B = [T, -T] over both.
+  const int dof[6] = {dofs_.ux, dofs_.uy, dofs_.theta, lower_.ux, lower_.uy, lower_.theta};
   Eigen::Matrix<double, 2, 3> T;
   T << 1.0, 0.0, -p_OB_.y(), 0.0, 1.0, p_OB_.x();
   const Eigen::Matrix3d kt = T.transpose() * k * T;
-  for (int a = 0; a < 3; ++a) {
+  const int n = has_lower_ ? 6 : 3;
+  for (int a = 0; a < n; ++a) {
     if (dof[a] < 0) continue;
-    for (int b = 0; b < 3; ++b)
-      if (dof[b] >= 0) K(dof[a], dof[b]) += kt(a, b);
+    for (int b = 0; b < n; ++b)
+      if (dof[b] >= 0)
+        K(dof[a], dof[b]) += (a < 3) == (b < 3) ? kt(a % 3, b % 3) : -kt(a % 3, b % 3);
   }
 }
 

@@ -1,5 +1,7 @@
-// A bearing between the ground and a rigid diaphragm at plan position p = (x, y) relative to
-// the diaphragm's DOF origin: deformation d = (u - y theta, v + x theta), force F(d) on the slab.
+// A bearing between the ground (or a lower rigid diaphragm: a building isolated above a storey)
+// and a rigid diaphragm at plan position p = (x, y) relative to the diaphragms' DOF origin:
+// deformation d = T (q - q_lower) = (u - y theta, v + x theta) relative to the lower diaphragm,
+// force F(d) on the slab and -F(d) on the lower diaphragm.
 #pragma once
 
 #include <Eigen/Dense>
@@ -27,8 +29,9 @@ struct DiaphragmDofs {
 // "force_x", "force_y", "deformation_x", "deformation_y", "z_x", "z_y".
 class BearingLink final : public Element {
  public:
+  // lower: the diaphragm under the bearing (DiaphragmDofs{}: the ground).
   BearingLink(std::string label, DiaphragmDofs dofs, Eigen::Vector2d p_OB,
-              std::unique_ptr<BiaxialMaterial> law);
+              std::unique_ptr<BiaxialMaterial> law, DiaphragmDofs lower = {});
 
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
   // Bearings with the coupled Bouc-Wen law form batches (Element::batch_key): their n = 2
@@ -51,7 +54,7 @@ class BearingLink final : public Element {
   bool has_events() const override { return false; }
   void add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const override;
   bool add_dofs(std::vector<int>& dofs) const override {
-    for (const int d : {dofs_.ux, dofs_.uy, dofs_.theta})
+    for (const int d : {dofs_.ux, dofs_.uy, dofs_.theta, lower_.ux, lower_.uy, lower_.theta})
       if (d >= 0) dofs.push_back(d);
     return true;
   }
@@ -71,7 +74,8 @@ class BearingLink final : public Element {
 
   const BiaxialMaterial& law() const { return *law_; }
   const Eigen::Vector2d& position() const { return p_OB_; }
-  // Bearing deformation (m) and its rate from the DOFs: d = T u over the DOFs present.
+  // Bearing deformation (m) and its rate from the DOFs: d = T (u - u_lower) over the DOFs
+  // present.
   Eigen::Vector2d deformation_of(const Eigen::VectorXd& u) const;
 
  private:
@@ -106,11 +110,15 @@ class BearingLink final : public Element {
 
   std::string label_;
   DiaphragmDofs dofs_;
+  DiaphragmDofs lower_;  // the diaphragm under the bearing; all -1: the ground
+  bool has_lower_;
   Eigen::Vector2d p_OB_;
   std::unique_ptr<BiaxialMaterial> law_;
   CoupledBoucWenMaterial* coupled_;  // law_ when it is one, else null
   bool planar_;
-  bool consecutive_;  // the three DOFs are present and consecutive (a 3D diaphragm)
+  // The three DOFs are present and consecutive (a 3D diaphragm) and the bearing stands on the
+  // ground: the diaphragm-run fast paths; a bearing on a lower diaphragm takes the general ones.
+  bool consecutive_;
 };
 
 }  // namespace isopound

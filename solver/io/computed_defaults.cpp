@@ -32,14 +32,18 @@ std::string number(double value, const char* unit) {
   return text;
 }
 
-double total_mass3d(const Building3DConfig& b) {
+// The mass the bearings carry: the base slab and the floors above it (levels3d.h).
+double isolated_mass3d(const Building3DConfig& b) {
   double m = b.isolated ? b.base.mass : 0.0;
-  for (const Storey3DConfig& s : b.storeys) m += s.floor.mass;
+  for (std::size_t s = static_cast<std::size_t>(b.isolation_level); s < b.storeys.size(); ++s)
+    m += b.storeys[s].floor.mass;
   return m;
 }
 
 std::size_t bearing_count(const Building3DConfig& b) {
-  return b.bearings.empty() ? b.storeys.front().columns.size() : b.bearings.size();
+  return b.bearings.empty()
+             ? b.storeys.at(static_cast<std::size_t>(b.isolation_level)).columns.size()
+             : b.bearings.size();
 }
 
 // The computed value of one default with its rule, or "" when the default is a plain value.
@@ -78,11 +82,13 @@ std::string computed(const ModelConfig& config, const std::string& key, double r
     return "rigid (0: an immovable wall; its mass enters only the impact damping)";
   if (b && ends_with(key, "carried_mass")) {
     const std::size_t n = bearing_count(*b);
-    const double share = total_mass3d(*b) / static_cast<double>(n);
+    const double share = isolated_mass3d(*b) / static_cast<double>(n);
     if (key.find("bearings[") != std::string::npos && b->bearing.carried_mass > 0)
       return number(b->bearing.carried_mass, "kg") + " (computed: bearing.carried_mass)";
-    return number(share, "kg") + " (computed: the building's mass / " + std::to_string(n) +
-           " bearings)";
+    return number(share, "kg") +
+           (b->isolation_level > 0 ? " (computed: the mass above the bearings / "
+                                   : " (computed: the building's mass / ") +
+           std::to_string(n) + " bearings)";
   }
   if (b && ends_with(key, "polar_moment")) {
     const char* rule = b->polar_moment_rule == EccentricPolarMoment::kThesis

@@ -359,7 +359,7 @@ void check_bumper_span(const InputNode& walls_node, const Building3DConfig& b) {
 MoatWalls3DConfig read_walls3d(const InputNode& node) {
   using W = MoatWalls3DConfig;
   node.expect_keys({"sides", "gap", "thickness", "height", "extension", "mass_per_length", "model",
-                    "E", "nu", "damping", "bumper"});
+                    "E", "nu", "damping", "bumper", "level"});
   W w;
   const auto side_of = [](const InputNode& n) {
     return n.choice<int>(
@@ -411,10 +411,27 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
 }
 
 Building3DConfig read_building3d(const InputNode& node) {
-  node.expect_keys({"name", "position", "rotation", "isolated", "plan", "grid", "columns",
-                    "storeys", "base", "eccentricity", "bearing", "bearings", "damping",
-                    "polar_moment_rule", "column_coupling", "walls", "adjacent", "p_delta",
-                    "elastic_limit_drift_ratio"});
+  node.expect_keys({"name",
+                    "position",
+                    "rotation",
+                    "isolated",
+                    "plan",
+                    "grid",
+                    "columns",
+                    "storeys",
+                    "base",
+                    "eccentricity",
+                    "bearing",
+                    "bearings",
+                    "damping",
+                    "polar_moment_rule",
+                    "column_coupling",
+                    "walls",
+                    "adjacent",
+                    "p_delta",
+                    "elastic_limit_drift_ratio",
+                    "isolation_level",
+                    "isolation_height"});
   Building3DConfig b;
   if (const auto n = node.find("name")) {
     b.name = n->string();
@@ -522,6 +539,29 @@ Building3DConfig read_building3d(const InputNode& node) {
     storeys.read_quantity("roof_mass", dim::kMass, Bound::kPositive, b.storeys.back().floor.mass);
   }
 
+  // Isolation level (levels3d.h): the bearings on floor k, at least one storey above them.
+  if (b.isolated) {
+    const int storeys_count = static_cast<int>(b.storeys.size());
+    if (const auto k = node.find("isolation_level")) {
+      if (storeys_count < 2 && k->integer(0, std::numeric_limits<int>::max()) > 0)
+        k->fail("the building has 1 storey: only isolation_level 0 (on the ground) is possible");
+      b.isolation_level = k->integer(0, storeys_count - 1);
+    }  // absent: on the ground, today's model (not listed as a default: outputs unchanged)
+    if (const auto h = node.find("isolation_height")) {
+      if (b.isolation_level == 0)
+        h->fail("only used with isolation_level > 0 (the base slab's height above that floor)");
+      b.isolation_height = h->quantity(dim::kLength, Bound::kPositive);
+    } else if (b.isolation_level > 0) {
+      node.fail_at_key("isolation_height",
+                       "required with isolation_level > 0: the base slab's height above floor " +
+                           std::to_string(b.isolation_level));
+    }
+  } else {
+    for (const char* key : {"isolation_level", "isolation_height"})
+      if (const auto n = node.find(key))
+        n->fail("not allowed for a fixed-base building (isolated: false)");
+  }
+
   // Base slab and bearings.
   if (b.isolated) {
     const InputNode base = node.required("base");
@@ -559,6 +599,17 @@ Building3DConfig read_building3d(const InputNode& node) {
           "building has none (model a wall next to it as its own structure)");
     b.walls = read_walls3d(*w);
     check_bumper_span(*w, b);
+    // The level the walls face (levels3d.h order); default the base slab.
+    if (const auto l = w->find("level")) {
+      const int levels = static_cast<int>(b.storeys.size()) + 1;
+      const int level =
+          l->integer(std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+      if (level < 0 || level >= levels)
+        l->fail("no level " + std::to_string(level) + ": the building's levels are 0.." +
+                std::to_string(levels - 1) + " (bottom to top, the base slab is level " +
+                std::to_string(b.isolation_level) + ")");
+      b.walls_level = level;
+    }
   }
   if (!b.isolated && b.damping.type == Damping3DConfig::Type::kNonClassical) {
     // Fixed base: the superstructure Rayleigh alone.

@@ -15,6 +15,7 @@
 #include "solver/io/report_columns3d.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/pounding3d.h"
+#include "solver/structures/levels3d.h"
 
 namespace isopound {
 namespace {
@@ -146,6 +147,8 @@ nlohmann::json summary3d_json(const JobResult& job) {
       bearings.push_back(je);
     }
     jb["bearings"] = bearings;
+    // Isolated above a storey (levels3d.h): the bearings' deformation is relative to floor k.
+    if (s.has_base && s.base_level > 0) jb["isolation_level"] = s.base_level;
     if (s.has_base) {  // everything reaching the foundation (analysis.h), in x, y and resultant
       const std::size_t si = static_cast<std::size_t>(&s - model.structures.data());
       jb["base_shear"] = {{"x", peak_json(r.base_shear[si], "N")},
@@ -395,9 +398,13 @@ void print_summary3d(std::ostream& out, const JobResult& job) {
       if (br.contains("force")) f = std::max(f, br["force"]["value"].get<double>());
     }
     if (b["bearings"].empty()) continue;  // a fixed-base building
+    const std::string on =
+        b.contains("isolation_level")
+            ? " (on floor " + std::to_string(b["isolation_level"].get<int>()) + ")"
+            : std::string();
     std::snprintf(line, sizeof line,
-                  "  bearings (%zu): peak resultant deformation %.2f cm, force %.1f kN\n",
-                  b["bearings"].size(), 100 * d, f / 1e3);
+                  "  bearings (%zu)%s: peak resultant deformation %.2f cm, force %.1f kN\n",
+                  b["bearings"].size(), on.c_str(), 100 * d, f / 1e3);
     out << line;
     if (b.contains("base_shear")) {
       const auto& v = b["base_shear"];
@@ -436,7 +443,18 @@ void print_modes3d(std::ostream& out, const ModelConfig& config) {
         out << line;
       }
     };
-    show("fixed-base superstructure", linear_model3d(b, false, true));
+    if (b.isolated && b.isolation_level > 0) {
+      // Isolated above storey k: the superstructure fixed at the base slab, the substructure
+      // fixed at the ground, and the whole building with its bearings between floor k and base.
+      const std::string k = std::to_string(b.isolation_level);
+      show("fixed-base superstructure (storeys " + std::to_string(b.isolation_level + 1) + ".." +
+               std::to_string(b.storeys.size()) + ", fixed at the base slab)",
+           linear_model3d(b, false, true));
+      show("fixed-base substructure (" + (k == "1" ? "storey 1" : "storeys 1.." + k) + ")",
+           linear_model3d(substructure3d(b), false, true));
+    } else {
+      show("fixed-base superstructure", linear_model3d(b, false, true));
+    }
     if (b.isolated) {
       show("isolated, bearings at their post-yield stiffness", linear_model3d(b, false, false));
       show("isolated, bearings at their initial stiffness", linear_model3d(b, true, false));

@@ -10,6 +10,8 @@
 
 #include "geometry/overlap.h"
 #include "solver/structures/config3d.h"
+#include "solver/structures/levels3d.h"
+#include "solver/structures/pounding3d.h"
 
 namespace isopound {
 namespace {
@@ -70,12 +72,16 @@ Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
 void check_placement(const Building3DConfig& b, const StructureMarks& m, ProblemList& problems) {
   if (b.isolated && !b.bearings.empty()) {
     for (std::size_t k = 0; k < b.bearings.size(); ++k) {
-      if (inside(b.base.plan, b.bearings[k].position)) continue;
+      const std::size_t on = static_cast<std::size_t>(b.isolation_level);  // floor k, 1-based
+      if (inside(b.base.plan, b.bearings[k].position) &&
+          (on == 0 || inside(b.storeys[on - 1].floor.plan, b.bearings[k].position)))
+        continue;
       const InputNode& where = k < m.bearing_at.size() && m.bearing_at[k] ? *m.bearing_at[k]
                                : m.bearings                               ? *m.bearings
                                                                           : *m.item;
       problems.error_at(where, "",
-                        "bearing " + b.bearings[k].label + " is outside the base slab's plan");
+                        "bearing " + b.bearings[k].label + " is outside the base slab's plan" +
+                            (on > 0 ? " or floor " + std::to_string(on) + "'s" : ""));
     }
   }
   // Short form: every storey alike; storey 1 stands for all (one message per column).
@@ -83,12 +89,14 @@ void check_placement(const Building3DConfig& b, const StructureMarks& m, Problem
   const std::size_t storeys =
       short_form ? std::min<std::size_t>(1, b.storeys.size()) : b.storeys.size();
   for (std::size_t s = 0; s < storeys; ++s) {
+    // The storey over the isolation (k + 1) stands on the base slab.
+    const bool on_base = b.isolated && s == static_cast<std::size_t>(b.isolation_level);
     const std::vector<Vec2>* below =
-        s > 0 ? &b.storeys[s - 1].floor.plan : (b.isolated ? &b.base.plan : nullptr);
+        on_base ? &b.base.plan : (s > 0 ? &b.storeys[s - 1].floor.plan : nullptr);
     const std::vector<Column3DConfig>& columns = b.storeys[s].columns;
     for (std::size_t k = 0; k < columns.size(); ++k) {
       const Column3DConfig& c = columns[k];
-      if (s == 0 && b.isolated && b.bearings.empty() && !inside(b.base.plan, c.position)) {
+      if (on_base && b.bearings.empty() && !inside(b.base.plan, c.position)) {
         problems.error_at(
             column_node(m, s, k), "",
             "column " + c.label + " (and the bearing under it) is outside the base slab's plan");
@@ -194,8 +202,9 @@ std::vector<ColumnSpan> column_spans(const ModelConfig& config, const Site& site
     add(structure, 1, site.ground_columns[k], 0.0, elevation_of(structure, 0));
   }
   for (const PlanSlab& s : site.slabs) {
-    const bool isolated = config.structures3d.at(static_cast<std::size_t>(s.structure)).isolated;
-    const int storey = s.level_index + (isolated ? 1 : 2);
+    // The storey standing on level l (levels3d.h): l + 2 under the base slab, l + 1 from it up.
+    const int base = base_level3d(config.structures3d.at(static_cast<std::size_t>(s.structure)));
+    const int storey = s.level_index + (base >= 0 && s.level_index >= base ? 1 : 2);
     for (const PlanColumn& c : s.columns)
       add(s.structure, storey, c, s.elevation, elevation_of(s.structure, s.level_index + 1));
   }
@@ -441,11 +450,13 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
   for (const PlanWall& w : site.walls) {
     const StructureMarks& m = marks.at(static_cast<std::size_t>(w.building));
     const InputNode& where = m.walls ? *m.walls : *m.item;
+    // The level the walls face (the base slab unless walls.level says otherwise).
+    const int faced = walls_level3d(config.structures3d.at(static_cast<std::size_t>(w.building)));
     for (const PlanSlab& s : site.slabs) {
-      if (s.structure == w.building && s.level == "base") {
+      if (s.structure == w.building && s.level_index == faced) {
         const Separation sep = separation_of(polygon(s.plan_W), polygon(w.plan_W));
         Clearance c;
-        c.a = s.name + "/base";
+        c.a = s.name + "/" + s.level;
         c.b = w.name;
         c.structure_a = c.structure_b = w.building;
         c.side = w.side;
@@ -454,11 +465,13 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
         if (sep.distance > 0) closest_points(s.plan_W, w.plan_W, c.p_WA, c.p_WB);
         clearances.push_back(c);
         if (std::abs(sep.distance - w.declared_gap) > limits.gap_tolerance)
-          problems.error_at(where, "gap",
-                            "the " + w.side + " wall of '" + w.structure + "' stands " +
-                                metres(sep.distance) + " from its base slab (measured), not at " +
-                                "the declared gap of " + metres(w.declared_gap));
-      } else if (s.structure != w.building && s.elevation <= w.height + limits.level_tolerance) {
+          problems.error_at(
+              where, "gap",
+              "the " + w.side + " wall of '" + w.structure + "' stands " + metres(sep.distance) +
+                  " from its " + (s.level == "base" ? std::string("base slab") : s.level) +
+                  " (measured), not at " + "the declared gap of " + metres(w.declared_gap));
+      } else if (s.structure != w.building && s.elevation >= w.elevation - limits.level_tolerance &&
+                 s.elevation <= w.elevation + w.height + limits.level_tolerance) {
         const Overlap o = overlap_of(polygon(s.plan_W), polygon(w.plan_W));
         if (o.area > kNoArea)
           problems.error_at(where, "",
@@ -466,7 +479,17 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
                                 " of '" + s.name + "' at rest (" + fmt("%.3f m2", o.area) + ")");
       }
     }
-    for (std::size_t k = 0; k < site.ground_columns.size(); ++k) {
+    // A wall raised to a level above the ground (isolated above a storey): no column whose
+    // storey spans the wall's height [elevation - height, elevation] may stand in it.
+    if (w.elevation > limits.level_tolerance)
+      for (const ColumnSpan& c : spans)
+        if (c.z_top > w.elevation - w.height + limits.level_tolerance &&
+            c.z_bottom < w.elevation - limits.level_tolerance &&
+            overlap_of(polygon(c.outline_W), polygon(w.plan_W)).area > 0)
+          problems.error_at(where, "",
+                            "the " + w.side + " wall of '" + w.structure + "' cuts " + c.label);
+    for (std::size_t k = 0; k < site.ground_columns.size() && w.elevation <= limits.level_tolerance;
+         ++k) {
       const Overlap o = overlap_of(polygon(site.ground_columns[k].outline_W()), polygon(w.plan_W));
       if (o.area > 0)
         problems.error_at(where, "",
@@ -497,7 +520,11 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
             partner = &b;
           }
         if (!partner || dz < limits.level_tolerance) continue;
-        const int storey = a.level_index - (config.structures3d[i].isolated ? 1 : 0);
+        // The storey under floor f (0-based f - 1); the base slab: the building's entry.
+        const int base = base_level3d(config.structures3d[i]);
+        const int storey = a.level_index == base
+                               ? -1
+                               : a.level_index - (base >= 0 && a.level_index > base ? 1 : 0);
         const InputNode& where =
             storey >= 0 ? storey_node(marks[i], static_cast<std::size_t>(storey)) : *marks[i].item;
         problems.error_at(where, "",

@@ -12,9 +12,10 @@ BearingStiffness bearing_stiffness(const BearingConfig& c, double m) {
 
 std::unique_ptr<Element> make_bearing_element(const std::string& label, DiaphragmDofs dofs,
                                               const Eigen::Vector2d& p_OB,
-                                              const BearingConfig& config, double carried_mass) {
+                                              const BearingConfig& config, double carried_mass,
+                                              DiaphragmDofs lower) {
   return std::make_unique<BearingLink>(label, dofs, p_OB,
-                                       make_bearing_material(config, carried_mass));
+                                       make_bearing_material(config, carried_mass), lower);
 }
 
 }  // namespace isopound

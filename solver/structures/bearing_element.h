@@ -1,5 +1,6 @@
 // The element of one 3D bearing: BearingLink with make_bearing_material's law,
-// between the ground and a diaphragm at plan position p: d = (u - y theta, v + x theta), f = T^T F.
+// between the ground (or a lower diaphragm) and a diaphragm at plan position p: d = (u - y theta, v
+// + x theta), f = T^T F.
 #pragma once
 
 #include <Eigen/Dense>
@@ -14,10 +15,12 @@
 namespace isopound {
 
 // The bearing element for a bearing carrying `carried_mass` at p_OB (relative to the DOFs'
-// origin). Throws std::invalid_argument naming the parameter if the law is invalid.
+// origin), on the diaphragm `lower` (DiaphragmDofs{}: the ground). Throws std::invalid_argument
+// naming the parameter if the law is invalid.
 std::unique_ptr<Element> make_bearing_element(const std::string& label, DiaphragmDofs dofs,
                                               const Eigen::Vector2d& p_OB,
-                                              const BearingConfig& config, double carried_mass);
+                                              const BearingConfig& config, double carried_mass,
+                                              DiaphragmDofs lower = {});
 
 // The bearing's secant stiffnesses in each direction (N/m), for damping and modes: post-yield
 // K_post (friction pendulum: W/R) and initial K_el (friction pendulum: mu_slow W / u_y + W/R).

@@ -2,6 +2,7 @@
 // levels, diaphragm masses about the plan origin, bearings at their plan positions, damping.
 #include "solver/structures/building3d.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "solver/core/modes.h"
 #include "solver/structures/bearing_element.h"
 #include "solver/structures/column_element.h"
+#include "solver/structures/levels3d.h"
 #include "solver/structures/rayleigh_modes.h"
 
 namespace isopound {
@@ -29,7 +31,7 @@ Vec2 rotate(double angle, Vec2 v) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 
-// One building's levels (base slab if isolated, then floors), three DOFs each, in plan frame.
+// One building's levels (levels3d.h order), three DOFs each, in the plan frame.
 struct Assembly {
   // Over the building's DOFs. stiffness: what the model's matrix holds (yielding columns' shear
   // is in their elements, P-Delta included); initial_stiffness: every column elastic, no P-Delta
@@ -41,6 +43,8 @@ struct Assembly {
   std::vector<std::string> bearing_labels;
   std::vector<double> bearing_masses;
   double total_mass = 0.0;
+  double isolated_mass = 0.0;                 // the base slab and the levels above it
+  int bearing_upper = 0, bearing_lower = -1;  // building DOF of the base slab, of the level under
 };
 
 // A storey's 3 x 3 matrix k between levels upper and lower (< 0: the ground): [k, -k; -k, k].
@@ -53,13 +57,17 @@ void add_storey(Eigen::MatrixXd& K, int upper, int lower, const Eigen::Matrix3d&
   }
 }
 
-Assembly assemble(const Building3DConfig& b, bool with_base) {
+// The building's levels (levels3d.h order), storeys and bearing positions. A fixed-base building
+// (isolated false) has no base slab: superstructure3d() and substructure3d() give its parts.
+Assembly assemble(const Building3DConfig& b) {
   if (b.storeys.empty()) throw std::invalid_argument("building '" + b.name + "' has no storeys");
   Assembly a;
-  if (with_base) a.levels_W.push_back(diaphragm_in_plan(b, b.base));
-  for (const Storey3DConfig& s : b.storeys) a.levels_W.push_back(diaphragm_in_plan(b, s.floor));
+  const std::vector<Level3D> levels_B = levels3d(b);
+  for (const Level3D& level : levels_B)
+    a.levels_W.push_back(diaphragm_in_plan(b, *level.diaphragm));
   const int levels = static_cast<int>(a.levels_W.size());
   const int n = 3 * levels;
+  const int base = base_level3d(b);
   a.mass.setZero(n, n);
   a.stiffness.setZero(n, n);
   a.initial_stiffness.setZero(n, n);
@@ -70,28 +78,32 @@ Assembly assemble(const Building3DConfig& b, bool with_base) {
     a.total_mass += m(0, 0);
     a.influence(3 * l, 0) = 1.0;
     a.influence(3 * l + 1, 1) = 1.0;
-    const std::string level =
-        b.name + "/" + (with_base && l == 0 ? "base" : "floor " + std::to_string(l + !with_base));
+    const std::string level = b.name + "/" + levels_B[l].name;
     a.dofs.push_back({level + " (x)", 0, l, DofKind::kTranslationX, 1.0});
     a.dofs.push_back({level + " (y)", 0, l, DofKind::kTranslationY, 1.0});
     a.dofs.push_back({level + " (theta)", 0, l, DofKind::kRotation, std::sqrt(m(2, 2) / m(0, 0))});
   }
-  const int first_floor = with_base ? 1 : 0;
+  // The mass the bearings carry: the base slab and the levels above it.
+  if (base >= 0)
+    for (int l = base; l < levels; ++l) a.isolated_mass += a.mass(3 * l, 3 * l);
   for (std::size_t s = 0; s < b.storeys.size(); ++s) {
     const Storey3DConfig& storey = b.storeys[s];
     if (!(storey.height > 0))
       throw std::invalid_argument("storey " + std::to_string(s + 1) + ": height must be > 0");
     const StoreyStiffness k = storey_stiffness_split(columns_in_plan(b, storey.columns),
                                                      storey.height, b.column_coupling);
-    const int upper = 3 * (first_floor + static_cast<int>(s));
-    const int lower = upper - 3;  // < 0: the ground
+    const int storey_number = static_cast<int>(s) + 1;
+    const int upper = 3 * floor_level3d(b, storey_number);
+    const int lower = 3 * storey_lower_level3d(b, storey_number);  // < 0: the ground
     add_storey(a.stiffness, upper, lower, k.matrix);
     add_storey(a.initial_stiffness, upper, lower, k.initial);
     if (b.p_delta) add_storey(a.stiffness, upper, lower, p_delta_stiffness(b, s));
   }
-  if (with_base) {
+  if (base >= 0) {
+    a.bearing_upper = 3 * base;
+    a.bearing_lower = 3 * bearing_lower_level3d(b);
     if (b.bearings.empty()) {
-      for (const Column3DConfig& c : b.storeys.front().columns) {
+      for (const Column3DConfig& c : b.storeys.at(static_cast<std::size_t>(base)).columns) {
         a.bearing_positions_W.push_back(to_plan(b, c.position));
         a.bearing_labels.push_back(c.label);
         a.bearing_masses.push_back(0.0);
@@ -105,20 +117,21 @@ Assembly assemble(const Building3DConfig& b, bool with_base) {
     }
     if (a.bearing_positions_W.empty())
       throw std::invalid_argument("building '" + b.name + "': an isolated building needs bearings");
-    const double share = a.total_mass / static_cast<double>(a.bearing_positions_W.size());
+    const double share = a.isolated_mass / static_cast<double>(a.bearing_positions_W.size());
     for (double& m : a.bearing_masses)
       if (m == 0.0) m = b.bearing.carried_mass > 0 ? b.bearing.carried_mass : share;
   }
   return a;
 }
 
-// Linear springs (k in x and y) at the bearings, added to the base slab's block (DOFs 0..2).
+// Linear springs (k in x and y) at the bearings, between the base slab's block and the block of
+// the level under the bearings (the ground when that is < 0): B^T k B with B = [T, -T].
 void add_bearing_springs(Eigen::MatrixXd& K, const Assembly& a,
                          const std::vector<double>& stiffness) {
   for (std::size_t j = 0; j < a.bearing_positions_W.size(); ++j) {
     const Eigen::Matrix3d T = point_transform(a.bearing_positions_W[j]);
     const Eigen::Vector3d k(stiffness[j], stiffness[j], 0.0);
-    K.topLeftCorner<3, 3>() += T.transpose() * k.asDiagonal() * T;
+    add_storey(K, a.bearing_upper, a.bearing_lower, T.transpose() * k.asDiagonal() * T);
   }
 }
 
@@ -241,7 +254,8 @@ Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& d, EccentricPolarMoment 
 }
 
 void add_building3d(Model& model, const Building3DConfig& b) {
-  const Assembly a = assemble(b, b.isolated);
+  const Assembly a = assemble(b);
+  const std::vector<Level3D> levels_B = levels3d(b);
   const int offset = model.size();
   const int nb = static_cast<int>(a.dofs.size());
   const int structure = static_cast<int>(model.structures.size());
@@ -253,6 +267,7 @@ void add_building3d(Model& model, const Building3DConfig& b) {
   StructureInfo info;
   info.name = b.name;
   info.has_base = b.isolated;
+  if (b.isolated) info.base_level = b.isolation_level;
   for (Dof d : a.dofs) {
     d.structure = structure;
     model.dofs.push_back(d);
@@ -272,21 +287,34 @@ void add_building3d(Model& model, const Building3DConfig& b) {
       add_bearing_springs(K, a, bearing_stiffnesses(b, a, d.initial_bearing_stiffness));
     C = rayleigh(K, a.mass, a.influence, d, "building '" + b.name + "'");
   } else if (d.type == Damping3DConfig::Type::kNonClassical) {
-    const Assembly s = b.isolated ? assemble(b, false) : a;
+    const Assembly s = b.isolated ? assemble(superstructure3d(b)) : a;
     const Eigen::MatrixXd c_s =
         rayleigh(s.initial_stiffness, s.mass, s.influence, d,
                  "the fixed-base superstructure of building '" + b.name + "'");
     if (b.isolated) {
-      // Relative to the base slab: w_i = q_i - q_base, C = T^T C_s T.
-      const int nf = nb - 3;
+      // Superstructure relative to the base slab: w_i = q_i - q_base, C = T^T C_s T.
+      const int nf = static_cast<int>(s.dofs.size()), base = a.bearing_upper;
       Eigen::MatrixXd T = Eigen::MatrixXd::Zero(nf, nb);
       T.rightCols(nf).setIdentity();
-      for (int i = 0; i < nf; i += 3) T.block<3, 3>(i, 0) = -Eigen::Matrix3d::Identity();
+      for (int i = 0; i < nf; i += 3) T.block<3, 3>(i, base) = -Eigen::Matrix3d::Identity();
       C = T.transpose() * c_s * T;
+      // Substructure (documented choice, docs/isolation-level-3d.md): Rayleigh of the fixed-base
+      // substructure at the same ratios and modes, clipped to its mode count (1 and 3k if they
+      // then coincide).
+      if (base > 0) {
+        const Assembly sub = assemble(substructure3d(b));
+        Damping3DConfig d_sub = d;
+        d_sub.mode_a = std::min(d.mode_a, base);  // base = 3k: the substructure's mode count
+        d_sub.mode_b = std::min(d.mode_b, base);
+        if (d_sub.mode_a == d_sub.mode_b) d_sub.mode_a = 1, d_sub.mode_b = base;
+        C.topLeftCorner(base, base) +=
+            rayleigh(sub.initial_stiffness, sub.mass, sub.influence, d_sub,
+                     "the fixed-base substructure of building '" + b.name + "'");
+      }
       double carried = 0.0;
       for (double m : a.bearing_masses) carried += m;
       const double omega_b = 2.0 * std::numbers::pi / b.bearing.period;
-      const double c_b = 2.0 * d.isolation_ratio * a.total_mass * omega_b;
+      const double c_b = 2.0 * d.isolation_ratio * a.isolated_mass * omega_b;
       std::vector<double> c_j;
       for (double m : a.bearing_masses) c_j.push_back(c_b * m / carried);
       add_bearing_springs(C, a, c_j);
@@ -300,17 +328,26 @@ void add_building3d(Model& model, const Building3DConfig& b) {
   if (b.isolated) {
     for (std::size_t j = 0; j < a.bearing_positions_W.size(); ++j) {
       const Vec2 p = a.bearing_positions_W[j];
+      const int upper = offset + a.bearing_upper, lower = offset + a.bearing_lower;
       model.elements.push_back(make_bearing_element(
-          b.name + "/bearing " + a.bearing_labels[j], {offset, offset + 1, offset + 2},
-          Eigen::Vector2d(p.x, p.y), b.bearing, a.bearing_masses[j]));
+          b.name + "/bearing " + a.bearing_labels[j], {upper, upper + 1, upper + 2},
+          Eigen::Vector2d(p.x, p.y), b.bearing, a.bearing_masses[j],
+          a.bearing_lower >= 0 ? DiaphragmDofs{lower, lower + 1, lower + 2} : DiaphragmDofs{}));
     }
   }
 
   // Yielding columns: their shear as elements between the levels they join.
-  const int first_floor = b.isolated ? 1 : 0;
+  // Building DOF of the level over storey s (0-based) and of the level under it (< 0: ground).
+  const auto storey_upper = [&](std::size_t s) {
+    return 3 * floor_level3d(b, static_cast<int>(s) + 1);
+  };
+  const auto storey_lower = [&](std::size_t s) {
+    const int l = storey_lower_level3d(b, static_cast<int>(s) + 1);
+    return l < 0 ? -1 : offset + 3 * l;
+  };
   for (std::size_t s = 0; s < b.storeys.size(); ++s) {
-    const int upper = offset + 3 * (first_floor + static_cast<int>(s));
-    const int lower = s == 0 && !b.isolated ? -1 : upper - 3;
+    const int upper = offset + storey_upper(s);
+    const int lower = storey_lower(s);
     for (const Column3DConfig& c : columns_in_plan(b, b.storeys[s].columns)) {
       if (!c.hysteresis.yields()) continue;
       model.elements.push_back(make_column_element(
@@ -333,9 +370,7 @@ void add_building3d(Model& model, const Building3DConfig& b) {
     const Diaphragm3DConfig& lev = a.levels_W[l];
     const Vec2 cm = centre_of_mass(lev);
     const int dof = offset + 3 * static_cast<int>(l);
-    const std::string level =
-        b.name + "/" +
-        (b.isolated && l == 0 ? std::string("base") : "floor " + std::to_string(l + !b.isolated));
+    const std::string level = b.name + "/" + levels_B[l].name;
     std::vector<std::pair<std::string, Vec2>> points{{"CM", cm}};
     for (std::size_t k = 0; k < lev.plan.size(); ++k)
       points.push_back({"corner " + std::to_string(k + 1), lev.plan[k]});
@@ -350,8 +385,8 @@ void add_building3d(Model& model, const Building3DConfig& b) {
       }
   }
   for (std::size_t s = 0; s < b.storeys.size(); ++s) {
-    const int upper = offset + 3 * (first_floor + static_cast<int>(s));
-    const int lower = s == 0 && !b.isolated ? -1 : upper - 3;
+    const int upper = offset + storey_upper(s);
+    const int lower = storey_lower(s);
     for (const Column3DConfig& c : b.storeys[s].columns) {
       PlanProbe probe;
       probe.label = b.name + "/story " + std::to_string(s + 1) + "/" + c.label;
@@ -367,7 +402,7 @@ void add_building3d(Model& model, const Building3DConfig& b) {
     for (const Column3DConfig& c : storey.columns) inelastic = inelastic || c.hysteresis.yields();
   if (inelastic) {
     for (std::size_t s = 0; s < b.storeys.size(); ++s) {
-      const int upper = 3 * (first_floor + static_cast<int>(s));  // building DOF of the level
+      const int upper = storey_upper(s);  // building DOF of the level
       PlanProbe probe;
       probe.label = b.name + "/" + kStoreyShearPart + "/story " + std::to_string(s + 1);
       probe.quantity = PlanProbe::Quantity::kAbsoluteAcceleration;
@@ -389,7 +424,7 @@ void add_building3d(Model& model, const Building3DConfig& b) {
 
 LinearModel3D linear_model3d(const Building3DConfig& b, bool initial, bool fixed_base) {
   const bool with_base = b.isolated && !fixed_base;
-  const Assembly a = assemble(b, with_base);
+  const Assembly a = assemble(with_base ? b : superstructure3d(b));
   LinearModel3D m{a.mass, a.initial_stiffness, a.influence, a.dofs};
   if (with_base) add_bearing_springs(m.stiffness, a, bearing_stiffnesses(b, a, initial));
   return m;

@@ -149,14 +149,22 @@ struct Building3DConfig {
   Vec2 position;          // m: where the building frame's origin sits in the model's plan frame
   double rotation = 0.0;  // rad, counter-clockwise, of the building frame
   bool isolated = true;
-  Diaphragm3DConfig base;  // isolated only
+  // Isolation at any storey (issue 27 item 2, solver/structures/levels3d.h): the bearings sit on
+  // floor isolation_level (0: on the ground), the base slab isolation_height above that floor;
+  // storeys 1..isolation_level are the fixed-base substructure. Isolated only.
+  int isolation_level = 0;
+  double isolation_height = 0.0;  // m, > 0 when isolation_level > 0
+  Diaphragm3DConfig base;         // isolated only: the isolated slab
   std::vector<Storey3DConfig> storeys;
-  BearingConfig bearing;                  // the law of every bearing
-  std::vector<Bearing3DConfig> bearings;  // isolated only; empty: one under each storey-1 column
+  BearingConfig bearing;  // the law of every bearing
+  // Isolated only; empty: one under each column of storey isolation_level + 1.
+  std::vector<Bearing3DConfig> bearings;
   Damping3DConfig damping;
   EccentricPolarMoment polar_moment_rule = EccentricPolarMoment::kThesis;
   ColumnCoupling column_coupling = ColumnCoupling::kThesis;
   MoatWalls3DConfig walls;  // isolated only
+  // Index (levels3d order, 0 = lowest) of the level the moat walls face; -1: the base slab.
+  int walls_level = -1;
   Adjacency3DConfig adjacent;
   // Storey geometric stiffness from the gravity load above (building3d.h, p_delta_stiffness).
   bool p_delta = false;

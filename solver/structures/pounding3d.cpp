@@ -10,6 +10,7 @@
 #include "solver/elements/polygon_contact.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/bumper_layer3d.h"
+#include "solver/structures/levels3d.h"
 
 namespace isopound {
 
@@ -42,9 +43,15 @@ Vec2 wall_normal_W(const Building3DConfig& b, int side) {
 
 }  // namespace
 
+int walls_level3d(const Building3DConfig& b) {
+  return b.walls_level >= 0 ? b.walls_level : base_level3d(b);
+}
+
 std::vector<Vec2> moat_wall_outline(const Building3DConfig& b, int side) {
   const MoatWalls3DConfig& w = b.walls;
-  const ConvexPolygon slab = polygon_of(b.base.plan);
+  const std::vector<Level3D> levels = levels3d(b);
+  const ConvexPolygon slab =
+      polygon_of(levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan);
   const Vec2 lo = slab.box_min(), hi = slab.box_max();
   const double g = w.gap[side], t = w.thickness, e = w.extension;
   double x0, x1, y0, y1;
@@ -85,13 +92,11 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
                              .building = static_cast<int>(i),
                              .wall_side = -1});
     };
-    double z = 0.0;
-    if (b.isolated) add_slab("base", 0.0, b.base);
-    for (std::size_t k = 0; k < b.storeys.size(); ++k) {
-      z += b.storeys[k].height;
-      add_slab("floor " + std::to_string(k + 1), z, b.storeys[k].floor);
-    }
+    const std::vector<Level3D> levels = levels3d(b);
+    for (const Level3D& level : levels) add_slab(level.name, level.elevation, *level.diaphragm);
     if (!b.isolated) continue;
+    // The walls stand at the level they face (the base slab unless walls.level says otherwise).
+    const double wall_elevation = levels.at(static_cast<std::size_t>(walls_level3d(b))).elevation;
     for (int side = 0; side < 4; ++side) {
       if (!b.walls.present[side]) continue;
       const std::vector<Vec2> outline = moat_wall_outline(b, side);
@@ -100,7 +105,7 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
       SiteBody w{.structure = std::string("wall ") + MoatWalls3DConfig::kSideNames[side],
                  .level = "wall",
                  .role = "wall",
-                 .elevation = 0.0,
+                 .elevation = wall_elevation,
                  .height = b.walls.height,
                  .plan_W = polygon_of(placed(b, outline)),
                  .p_WO = {0.0, 0.0},
@@ -266,14 +271,20 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
       c.mass_2 = bodies[pair.b].mass;
       law.normal_law = make_impact_law(c);
     }
-    // A contact above an isolated structure's base slab is not part of its base shear
-    // (StructureInfo::upper_contact_elements).
+    // A contact on a level other than an isolated structure's base slab is not part of its base
+    // shear (StructureInfo::upper_contact_elements); nor is one on a base slab raised above a
+    // storey by anything but its moat walls (a neighbour's floor is no foundation).
+    const bool with_wall = bodies[pair.a].role == "wall" || bodies[pair.b].role == "wall";
     for (const SiteBody* side : {&bodies[pair.a], &bodies[pair.b]}) {
       const int u = find_dof(model, side->dof_label_u);
-      for (StructureInfo& s : model.structures)
-        if (s.has_base && u >= 0 && u != s.level_dofs[0] &&
-            std::find(s.level_dofs.begin(), s.level_dofs.end(), u) != s.level_dofs.end())
+      for (StructureInfo& s : model.structures) {
+        if (!s.has_base || u < 0 ||
+            std::find(s.level_dofs.begin(), s.level_dofs.end(), u) == s.level_dofs.end())
+          continue;
+        const bool on_base = u == s.level_dofs[s.base_level];
+        if (!on_base || (s.base_level > 0 && !with_wall))
           s.upper_contact_elements.push_back(static_cast<int>(model.elements.size()));
+      }
     }
     model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(bodies[pair.a]),
                                                               body(bodies[pair.b]), law));

@@ -17,13 +17,14 @@ namespace isopound {
 
 // One polygon body at rest, in the model's plan frame W (SI).
 struct SiteBody {
-  std::string structure;   // "building", "east-neighbour", "wall east"
-  std::string level;       // "base", "floor 1", ..., "wall"
-  std::string role;        // "slab" | "wall"
-  double elevation = 0.0;  // m: a slab's level above the ground (base slab 0); a wall's base 0
-  double height = 0.0;     // m: a wall's height; a slab 0
-  ConvexPolygon plan_W;    // outline at rest
-  Vec2 p_WO;               // DOF origin at rest (every 3D DOF sits at the plan origin)
+  std::string structure;  // "building", "east-neighbour", "wall east"
+  std::string level;      // "base", "floor 1", ..., "wall"
+  std::string role;       // "slab" | "wall"
+  // m: a slab's level above the ground (levels3d.h); a wall's top, flush with the level it faces
+  double elevation = 0.0;
+  double height = 0.0;   // m: a wall's height; a slab 0
+  ConvexPolygon plan_W;  // outline at rest
+  Vec2 p_WO;             // DOF origin at rest (every 3D DOF sits at the plan origin)
   // Prefixes of the DOF labels and history columns, "building/floor 1 (x)"; "" for a fixed body.
   std::string dof_label_u, dof_label_v, dof_label_theta;
   double mass = 0.0;   // kg: the floor's mass, or the wall's (enters m_eff only)
@@ -35,8 +36,11 @@ struct SiteBody {
 // Every slab (base slabs and floors, bottom to top per structure) and every moat wall.
 std::vector<SiteBody> site_bodies(const ModelConfig& config);
 
-// A wall's outline in the building frame (before the building's placement).
+// A wall's outline in the building frame (before the building's placement), around the plan of
+// the level it faces.
 std::vector<Vec2> moat_wall_outline(const Building3DConfig& building, int side);
+// The level (levels3d.h index) the building's moat walls face: walls.level, else the base slab.
+int walls_level3d(const Building3DConfig& building);
 
 // A pair of bodies that may meet: indices into site_bodies(); label "A|B".
 struct ContactPair3D {

@@ -7,6 +7,7 @@
 #include "solver/core/pushover.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/column_element.h"
+#include "solver/structures/levels3d.h"
 
 namespace isopound {
 
@@ -36,17 +37,22 @@ BuildingPushoverResult run_pushover3d(const ModelConfig& config,
   Model model;
   add_building3d(model, b);
   const int n = model.size();
-  const int first_floor = b.isolated ? 1 : 0;
   const int storeys = static_cast<int>(b.storeys.size());
   const double ca = std::cos(options.angle), sa = std::sin(options.angle);
-  double height = 0.0;
-  for (const Storey3DConfig& s : b.storeys) height += s.height;
+  // Levels in elevation order (levels3d.h); the roof is the last, at the building's height.
+  const std::vector<Level3D> levels = levels3d(b);
+  const double height = levels.back().elevation;
+  // Building DOF of the level over storey s (0-based) and under it (-1: the ground).
+  const auto upper_of = [&](int s) { return 3 * floor_level3d(b, s + 1); };
+  const auto lower_of = [&](int s) {
+    const int l = storey_lower_level3d(b, s + 1);
+    return l < 0 ? -1 : 3 * l;
+  };
 
-  // Centre of mass of each level in plan; the roof is the last.
+  // Centre of mass of each level in plan.
   std::vector<Vec2> cm_W;
-  if (b.isolated) cm_W.push_back(centre_of_mass(diaphragm_in_plan(b, b.base)));
-  for (const Storey3DConfig& s : b.storeys)
-    cm_W.push_back(centre_of_mass(diaphragm_in_plan(b, s.floor)));
+  for (const Level3D& level : levels)
+    cm_W.push_back(centre_of_mass(diaphragm_in_plan(b, *level.diaphragm)));
   const int roof = 3 * (static_cast<int>(cm_W.size()) - 1);
 
   PushoverOptions o;
@@ -64,16 +70,12 @@ BuildingPushoverResult run_pushover3d(const ModelConfig& config,
 
   std::vector<YieldingColumn> yielding;
   for (int s = 0; s < storeys; ++s) {
-    const int upper = 3 * (first_floor + s);
+    const int upper = upper_of(s);
     const auto columns_W = columns_in_plan(b, b.storeys[s].columns);
     for (const Column3DConfig& c : columns_W) {
       if (!c.hysteresis.yields()) continue;
       const ColumnYield y = column_yield(c, b.storeys[s].height);
-      yielding.push_back({upper,
-                          s == 0 && !b.isolated ? -1 : upper - 3,
-                          c.position,
-                          c.orientation,
-                          {y.drift[0], y.drift[1]}});
+      yielding.push_back({upper, lower_of(s), c.position, c.orientation, {y.drift[0], y.drift[1]}});
     }
   }
 
@@ -97,9 +99,9 @@ BuildingPushoverResult run_pushover3d(const ModelConfig& config,
     std::vector<double> row = {step.control, step.control / height, ca * base_x + sa * base_y,
                                base_x, base_y};
     for (int s = 0; s < storeys; ++s) {
-      const int upper = 3 * (first_floor + s);
-      const int lower = s == 0 && !b.isolated ? -1 : upper - 3;
-      const Vec2 p = cm_W[first_floor + s];
+      const int upper = upper_of(s);
+      const int lower = lower_of(s);
+      const Vec2 p = cm_W[static_cast<std::size_t>(upper / 3)];
       const Vec2 du = point_displacement(step.u, upper, p);
       const Vec2 dl = point_displacement(step.u, lower, p);
       const double drift = ca * (du.x - dl.x) + sa * (du.y - dl.y);

@@ -7,6 +7,7 @@
 
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
+#include "solver/structures/levels3d.h"
 #include "solver/structures/pounding3d.h"  // site_bodies(): walls as the solver builds them
 
 namespace isopound {
@@ -59,34 +60,35 @@ Site site_plan(const ModelConfig& config) {
   for (std::size_t i = 0; i < config.structures3d.size(); ++i) {
     const Building3DConfig& b = config.structures3d[i];
     const int index = static_cast<int>(i);
-    double z = 0.0;
-    int level = 0;
-    if (b.isolated) {
-      PlanSlab base = plan_slab(index, b, b.base, "base", level++, 0.0);
-      if (b.bearings.empty()) {
-        for (const Column3DConfig& c : b.storeys.front().columns)
-          base.bearings.push_back({c.label, to_plan(b, c.position)});
-      } else {
-        for (const Bearing3DConfig& br : b.bearings)
-          base.bearings.push_back({br.label, to_plan(b, br.position)});
+    const std::vector<Level3D> levels = levels3d(b);
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+      const Level3D& level = levels[l];
+      PlanSlab slab =
+          plan_slab(index, b, *level.diaphragm, level.name, static_cast<int>(l), level.elevation);
+      // The storey standing on this slab: floor f carries storey f + 1 (none on floor k, which
+      // carries the bearings), the base slab storey k + 1.
+      const int above = level.floor == 0 ? b.isolation_level + 1 : level.floor + 1;
+      if (level.floor == 0) {
+        if (b.bearings.empty()) {
+          for (const Column3DConfig& c : b.storeys.at(static_cast<std::size_t>(above - 1)).columns)
+            slab.bearings.push_back({c.label, to_plan(b, c.position)});
+        } else {
+          for (const Bearing3DConfig& br : b.bearings)
+            slab.bearings.push_back({br.label, to_plan(b, br.position)});
+        }
       }
-      for (const Column3DConfig& c : b.storeys.front().columns)
-        base.columns.push_back(plan_column(b, c));
-      site.slabs.push_back(base);
-    } else {
+      const bool carries_bearings =
+          b.isolated && level.floor != 0 && level.floor == b.isolation_level;
+      if (above <= static_cast<int>(b.storeys.size()) && !carries_bearings)
+        for (const Column3DConfig& c : b.storeys[static_cast<std::size_t>(above - 1)].columns)
+          slab.columns.push_back(plan_column(b, c));
+      site.slabs.push_back(slab);
+    }
+    if (storey_on_ground3d(b, 0)) {
       for (const Column3DConfig& c : b.storeys.front().columns) {
         site.ground_columns.push_back(plan_column(b, c));
         site.ground_columns_structure.push_back(index);
       }
-    }
-    for (std::size_t s = 0; s < b.storeys.size(); ++s) {
-      z += b.storeys[s].height;
-      PlanSlab floor =
-          plan_slab(index, b, b.storeys[s].floor, "floor " + std::to_string(s + 1), level++, z);
-      if (s + 1 < b.storeys.size())
-        for (const Column3DConfig& c : b.storeys[s + 1].columns)
-          floor.columns.push_back(plan_column(b, c));
-      site.slabs.push_back(floor);
     }
   }
   for (const SiteBody& body : site_bodies(config)) {
@@ -95,6 +97,7 @@ Site site_plan(const ModelConfig& config) {
     w.name = body.structure;  // "wall east"
     w.side = MoatWalls3DConfig::kSideNames.at(static_cast<std::size_t>(body.wall_side));
     w.height = body.height;
+    w.elevation = body.elevation;
     w.building = body.building;
     for (Vec2 p : body.plan_W.vertices()) w.plan_W.push_back(p);
     const Building3DConfig& b = config.structures3d.at(static_cast<std::size_t>(w.building));

@@ -1,6 +1,7 @@
 // The site in plan as isopound-pre draws and meshes it: every slab (base slab and floors) of every
 // 3D structure, its columns and bearings, and the walls, in the model's plan frame W (SI).
-// Elevations: the base slab of an isolated building at 0, floor k at the sum of storey heights.
+// Elevations and level order as levels3d.h: an isolated building's base slab at 0 (or
+// isolation_height above floor isolation_level), floor f at the sum of the heights below it.
 #pragma once
 
 #include <string>
@@ -36,7 +37,7 @@ struct PlanSlab {
   double mass = 0.0;                  // kg
   Vec2 p_WM;                          // centre of mass
   std::vector<PlanColumn> columns;    // the columns standing on this slab (the storey above)
-  std::vector<PlanBearing> bearings;  // base slab only
+  std::vector<PlanBearing> bearings;  // base slab only (they stand on the level under it)
 };
 
 struct PlanWall {
@@ -46,12 +47,14 @@ struct PlanWall {
   std::string side;           // "east", ...
   double declared_gap = 0.0;  // m, as written
   double height = 0.0;
+  double elevation = 0.0;  // m: its top, flush with the level it faces (the base slab's)
   std::vector<Vec2> plan_W;
 };
 
 struct Site {
   std::vector<PlanSlab> slabs;
-  std::vector<PlanColumn> ground_columns;  // storey-1 columns of fixed-base buildings (z = 0)
+  // Storey-1 columns standing on the ground (z = 0): fixed-base buildings and substructures.
+  std::vector<PlanColumn> ground_columns;
   std::vector<int> ground_columns_structure;
   std::vector<PlanWall> walls;
 };

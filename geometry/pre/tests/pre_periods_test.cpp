@@ -7,7 +7,8 @@ namespace isopound::pre::test {
 namespace {
 
 TEST(PrePeriods, SameTableAsIsopoundModes) {
-  for (const char* config : {"configs/neighbour-example.yaml", "configs/3d-eccentric-v30.yaml"}) {
+  for (const char* config : {"configs/neighbour-example.yaml", "configs/3d-eccentric-v30.yaml",
+                             "configs/3d-mid-storey-isolation.yaml"}) {
     const std::string model = (source_dir() / config).string();
     const auto modes = ::isopound::test::run_isopound("modes " + model);
     ASSERT_EQ(modes.exit_code, 0) << modes.output;

@@ -149,3 +149,30 @@ TEST(PreGeometry, ClosestPointsOfFacingEdgesAreTheMiddleOfTheirCommonStretch) {
 
 }  // namespace
 }  // namespace isopound::pre::test
+
+namespace isopound::pre::test {
+namespace {
+
+// configs/3d-mid-storey-isolation.yaml: isolated above storey 1 (4 m podium, slab 1.5 m above
+// floor 1). Levels in elevation order; the isolation layer between storeys 1 and 2, its
+// stiffness the 16 bearings' K_post = m (2 pi / T_b)^2 with m the 1270 t above them.
+TEST(PreProperties, MidStoreyIsolationLevelsAndLayerInPlace) {
+  const auto p = properties_of((source_dir() / "configs/3d-mid-storey-isolation.yaml").string());
+  ASSERT_EQ(p.size(), 2u);
+  const char* levels[] = {"floor 1", "base", "floor 2", "floor 3", "floor 4"};
+  const double z[] = {4.0, 5.5, 8.7, 11.9, 15.1};
+  ASSERT_EQ(p[0].diaphragms.size(), 5u);
+  for (std::size_t l = 0; l < 5; ++l) {
+    EXPECT_EQ(p[0].diaphragms[l].level, levels[l]);
+    EXPECT_NEAR(p[0].diaphragms[l].elevation, z[l], 1e-12);
+  }
+  const char* storeys[] = {"storey 1", "isolation", "storey 2", "storey 3", "storey 4"};
+  ASSERT_EQ(p[0].storeys.size(), 5u);
+  for (std::size_t s = 0; s < 5; ++s) EXPECT_EQ(p[0].storeys[s].label, storeys[s]);
+  const double k_b = 1270e3 * std::pow(2.0 * std::acos(-1.0) / 2.0, 2);
+  EXPECT_NEAR(p[0].storeys[1].k_x, k_b, 1e-9 * k_b);
+  EXPECT_NEAR(p[0].storeys[1].k_y, k_b, 1e-9 * k_b);
+}
+
+}  // namespace
+}  // namespace isopound::pre::test
