@@ -573,11 +573,6 @@ BuildingConfig read_building(const InputNode& node) {
   if (b.isolated) {
     const auto isolator = node.find("isolator");
     b.isolator = read_isolator(isolator ? *isolator : node.empty_child("isolator"));
-    if (b.isolation_level > 0 && b.isolator.model == IsolatorConfig::Model::kFrictionPendulum)
-      node.required("isolation_level")
-          .fail(
-              "a friction pendulum isolator stands on the ground in 2D (isolation_level 0); "
-              "use linear, bilinear or bouc_wen isolators above a storey");
   }
   read_damping(node, b);
   if (const auto walls = node.find("walls")) {

@@ -171,15 +171,14 @@ void add_building(Model& model, const BuildingConfig& b) {
     const int bottom = k > 0 ? floor_dof(k - 1) : -1;  // -1: the ground
     info.isolator_element = static_cast<int>(model.elements.size());
     if (b.isolator.model == IsolatorConfig::Model::kFrictionPendulum) {
-      if (k > 0)
-        throw std::invalid_argument("building '" + b.name +
-                                    "': a friction pendulum isolator needs isolation_level 0");
-      // Rate dependent, so not a uniaxial law: the biaxial bearing acting along x only.
-      DiaphragmDofs dofs;
+      // Rate dependent, so not a uniaxial law: the biaxial bearing acting along x only, on
+      // floor k (above a storey) or on the ground.
+      DiaphragmDofs dofs, lower;
       dofs.ux = base;
+      if (k > 0) lower.ux = bottom;
       model.elements.push_back(std::make_unique<BearingLink>(
           b.name + "/isolator", dofs, Eigen::Vector2d::Zero(),
-          make_bearing_material(bearing_config(b.isolator), carried)));
+          make_bearing_material(bearing_config(b.isolator), carried), lower));
     } else {
       model.elements.push_back(
           std::make_unique<UniaxialLink>(b.name + "/isolator", k > 0 ? bottom : kGround, base,
