@@ -20,7 +20,7 @@ constexpr Dimension kMoment{2, 1, -2};      // N m
 constexpr Dimension kArea{2, 0, 0};         // m^2
 
 // clang-format off
-constexpr std::array<PlausibleRange, 49> kRanges{{
+constexpr std::array<PlausibleRange, 50> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
