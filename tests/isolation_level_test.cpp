@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -22,6 +23,7 @@
 
 #include "solver/core/analysis.h"
 #include "solver/core/modes.h"
+#include "solver/elements/contact.h"
 #include "solver/io/model_input.h"
 #include "solver/io/report_modes2d.h"
 #include "solver/structures/job.h"
@@ -227,6 +229,60 @@ TEST(IsolationLevel, FrictionPendulumStandsOnTheFloorBelow) {
     peak = std::max(peak, std::abs(v[deformation]));
   }
   EXPECT_GT(peak, 0.01);
+  EXPECT_LT(job.analysis.energy.relative_error, 1e-6);
+}
+
+// Two structures isolated at different levels: the thesis building on the ground (levels at
+// 0, 3.2, 6.4, 9.6 m) and a neighbour isolated above its storey 1 (floor 1 at 3.2 m, its slab
+// 3.2 m higher at 6.4 m, floor 2 at 9.6 m). The level matching pairs them by elevation: floor 1
+// with the neighbour's floor 1, floor 2 with the neighbour's isolated slab, floor 3 with its
+// floor 2; the ground-level slab has no partner. A 2 cm gap is closed; the balance closes.
+TEST(IsolationLevel, StructuresIsolatedAtDifferentLevelsPoundLevelToLevel) {
+  const std::string yaml =
+      "building:\n"
+      "  name: a\n"
+      "  base: {mass: 340 t}\n"
+      "  floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}\n"
+      "  isolator: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}\n"
+      "neighbours:\n"
+      "  - side: right\n"
+      "    gap: 2 cm\n"
+      "    impact: {law: kelvin_voigt, k: 2500 kN/mm, e: 0.7}\n"
+      "    building:\n"
+      "      name: b\n"
+      "      base: {mass: 300 t}\n"
+      "      isolation_level: 1\n"
+      "      isolation_height: 3.2 m\n"
+      "      floors:\n"
+      "        - {mass: 400 t, stiffness: 1500 MN/m, height: 3.2 m}\n"
+      "        - {mass: 300 t, stiffness: 600 MN/m, height: 3.2 m}\n"
+      "      isolator: {model: bouc_wen, Tb: 2.5 s, QW: 5 %, uy: 1 cm}\n"
+      "      damping: {superstructure: {type: modal, ratio: 2 %}}\n"
+      "ground_motion:\n"
+      "  pulse: {amplitude: 1 m/s, period: 1.5 s, duration: 6 s, dt: 0.01 s}\n";
+  ModelConfig c = test::load_model_text(yaml);
+  c.analysis.tolerance = 1e-8;
+  c.output.histories = false;
+  const JobResult job = run_job(c);
+  std::vector<std::string> pairs;
+  int impacts = 0;
+  for (std::size_t i = 0; i < job.model.elements.size(); ++i) {
+    const std::string& label = job.model.elements[i]->label();
+    if (label.find("a~b/") != 0) continue;
+    pairs.push_back(label);
+    impacts += static_cast<int>(job.analysis.element_outputs[i][2].value);
+  }
+  ASSERT_EQ(pairs.size(), 3u);
+  EXPECT_EQ(pairs[0], "a~b/floor 1");
+  EXPECT_EQ(pairs[1], "a~b/floor 2");
+  EXPECT_EQ(pairs[2], "a~b/floor 3");
+  // The middle pair's partner is the neighbour's isolated slab (the contact's second body).
+  const auto& contact = dynamic_cast<const Contact1D&>(*job.model.elements[static_cast<std::size_t>(
+      std::find_if(job.model.elements.begin(), job.model.elements.end(),
+                   [](const auto& e) { return e->label() == "a~b/floor 2"; }) -
+      job.model.elements.begin())]);
+  EXPECT_EQ(job.model.dofs[contact.body_b().dof].label, "b/base");
+  EXPECT_GT(impacts, 0);
   EXPECT_LT(job.analysis.energy.relative_error, 1e-6);
 }
 
