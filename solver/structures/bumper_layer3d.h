@@ -1,5 +1,5 @@
-// The rubber layer of a 3D moat wall in plan (issue 27, first 3D step; plan in
-// BUMPERS-STATUS.md): a strip `thickness` deep in front of the wall's inner face, over [from, to].
+// The rubber layer of a 3D moat wall in plan (issue 27; docs/impact-laws.md, "Bumpers on moat
+// walls (3D)"): a strip `thickness` deep in front of the wall's inner face, over [from, to].
 #pragma once
 
 #include <limits>
