@@ -1,6 +1,6 @@
-// Isolation at any storey, 3D buildings (issue 27 item 2, docs/isolation-level.md, "3D buildings"): level 0
-// is today's model bit for bit; the periods of a building isolated above storey 1 against an
-// eigen-solution assembled by hand (a symmetric plan: x, y and torsion uncoupled chains); the
+// Isolation at any storey, 3D buildings (issue 27 item 2, docs/isolation-level.md, "3D buildings"):
+// level 0 is today's model bit for bit; the periods of a building isolated above storey 1 against
+// an eigen-solution assembled by hand (a symmetric plan: x, y and torsion uncoupled chains); the
 // bearing between two diaphragms (forces equal and opposite, tangent by central differences);
 // level matching with a fixed-base neighbour; the energy balance with pounding at the isolated
 // slab; bad input.

@@ -1,6 +1,6 @@
 // The 3D frames' geometry of a building isolated above a storey (issue 27 item 2,
-// docs/isolation-level.md, "3D buildings"): the base slab at its elevation, the bearings between floor k and
-// the slab, storey k + 1's columns on the slab, the substructure's on the ground.
+// docs/isolation-level.md, "3D buildings"): the base slab at its elevation, the bearings between
+// floor k and the slab, storey k + 1's columns on the slab, the substructure's on the ground.
 #include <gtest/gtest.h>
 
 #include "post/site3d.h"

@@ -421,8 +421,8 @@ ImpactLawUses read_impact(const InputNode& node, ImpactLawConfig& c) {
 // position: thickness < the smallest gap of the sides the wall has (a rubber touching at rest
 // has no impact velocity for its damping, which divides by it).
 BumperConfig read_bumper(const InputNode& node, double gap) {
-  node.expect_keys(
-      {"thickness", "law", "k", "E", "area", "e", "max_strain", "min_impact_velocity", "bottoming"});
+  node.expect_keys({"thickness", "law", "k", "E", "area", "e", "max_strain", "min_impact_velocity",
+                    "bottoming"});
   BumperConfig b;
   const InputNode thickness = node.required("thickness");
   b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);

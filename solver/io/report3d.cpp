@@ -14,8 +14,8 @@
 #include "solver/io/report.h"
 #include "solver/io/report_columns3d.h"
 #include "solver/structures/building3d.h"
-#include "solver/structures/pounding3d.h"
 #include "solver/structures/levels3d.h"
+#include "solver/structures/pounding3d.h"
 
 namespace isopound {
 namespace {

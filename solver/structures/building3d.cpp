@@ -298,9 +298,9 @@ void add_building3d(Model& model, const Building3DConfig& b) {
       T.rightCols(nf).setIdentity();
       for (int i = 0; i < nf; i += 3) T.block<3, 3>(i, base) = -Eigen::Matrix3d::Identity();
       C = T.transpose() * c_s * T;
-      // Substructure (documented choice, docs/isolation-level.md, "3D buildings"): Rayleigh of the fixed-base
-      // substructure at the same ratios and modes, clipped to its mode count (1 and 3k if they
-      // then coincide).
+      // Substructure (documented choice, docs/isolation-level.md, "3D buildings"): Rayleigh of the
+      // fixed-base substructure at the same ratios and modes, clipped to its mode count (1 and 3k
+      // if they then coincide).
       if (base > 0) {
         const Assembly sub = assemble(substructure3d(b));
         Damping3DConfig d_sub = d;

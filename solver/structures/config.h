@@ -134,7 +134,7 @@ struct NeighbourConfig {
   // Rubber on the neighbour's facing side at every pounding level pair (thickness 0: none): the
   // levels meet the rubber at gap - thickness, the concrete law acts once it bottoms out.
   BumperConfig bumper;
-  bool pounding = true;    // false: no contact elements (the unobstructed comparison)
+  bool pounding = true;  // false: no contact elements (the unobstructed comparison)
 };
 
 struct GroundMotionConfig {
