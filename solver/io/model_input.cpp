@@ -13,6 +13,7 @@
 #include <set>
 #include <vector>
 
+#include "solver/io/bumper_input.h"
 #include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input3d.h"
 #include "solver/io/site_checks.h"
@@ -415,54 +416,6 @@ ImpactLawUses read_impact(const InputNode& node, ImpactLawConfig& c) {
     node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive,
                        c.min_impact_velocity);
   return uses;
-}
-
-// A rubber bumper on the wall's face (bumper_law.h). Its face must stay clear of the level's rest
-// position: thickness < the smallest gap of the sides the wall has (a rubber touching at rest
-// has no impact velocity for its damping, which divides by it).
-BumperConfig read_bumper(const InputNode& node, double gap) {
-  node.expect_keys({"thickness", "law", "k", "E", "area", "e", "max_strain", "min_impact_velocity",
-                    "bottoming"});
-  BumperConfig b;
-  const InputNode thickness = node.required("thickness");
-  b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);
-  if (b.thickness > 0 && b.thickness >= gap) {
-    char what[160];
-    std::snprintf(what, sizeof what,
-                  "the bumper (%g cm) must be thinner than the gap (%g cm): it would touch the "
-                  "slab at rest",
-                  100 * b.thickness, 100 * gap);
-    thickness.fail(what);
-  }
-  node.read_choice<std::string>("law", {{"linear", "linear"}, {"hertz", "hertz"}}, b.law);
-  const double n = b.law == "hertz" ? 1.5 : 1.0;
-  if (const auto k = node.find("k")) {
-    for (const char* key : {"E", "area"})
-      if (written(node.yaml(), key))
-        node.find(key)->fail("give either k, or E and area (k = E A / t), not both");
-    b.k = k->quantity(Dimension{1.0 - n, 1.0, -2.0}, Bound::kPositive);
-  } else {
-    if (!written(node.yaml(), "E") && !written(node.yaml(), "area"))
-      node.fail_at_key("k", "missing required key 'k' (or E and area: k = E A / t)");
-    b.modulus = node.required("E").quantity(dim::kPressure, Bound::kPositive);
-    b.area = node.required("area").quantity(Dimension{2.0, 0.0, 0.0}, Bound::kPositive);
-  }
-  const InputNode e = node.required("e");
-  b.e = e.number(Bound::kPositive);
-  if (b.e > 1.0) e.fail("the coefficient of restitution must be in (0, 1]");
-  if (const auto strain = node.find("max_strain")) {
-    b.max_strain = strain->number();
-    if (!(b.max_strain > 0 && b.max_strain < 1))
-      strain->fail("max_strain must be in (0, 1) (a fraction of the thickness, e.g. 60 %)");
-  } else {
-    node.note_default("max_strain", "0.6");
-  }
-  node.read_quantity("min_impact_velocity", dim::kVelocity, Bound::kPositive,
-                     b.min_impact_velocity);
-  node.read_choice<BumperBottoming>(
-      "bottoming", {{"continuous", BumperBottoming::kContinuous}, {"jump", BumperBottoming::kJump}},
-      b.bottoming);
-  return b;
 }
 
 WallConfig read_wall(const InputNode& node) {

@@ -10,6 +10,7 @@
 
 #include <limits>
 
+#include "solver/io/bumper_input.h"
 #include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input.h"
 #include "solver/structures/building3d.h"
@@ -272,85 +273,6 @@ void read_damping3d(const InputNode& node, bool isolated, Damping3DConfig& d) {
     if (d.type != T::kNonClassical || !isolated)
       i->fail("only used with type: non_classical on an isolated building");
     d.isolation_ratio = i->number(Bound::kFraction);
-  }
-}
-
-// bumper: {sides, thickness, law, E, height, e, max_strain, mu_static, mu_kinetic, from, to}
-// under walls (issue 27; docs/impact-laws.md). from/to against the face: check_bumper_span.
-MoatBumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& walls,
-                                 const std::function<int(const InputNode&)>& side_of) {
-  using W = MoatWalls3DConfig;
-  node.expect_keys({"sides", "thickness", "law", "E", "height", "e", "max_strain", "mu_static",
-                    "mu_kinetic", "from", "to"});
-  MoatBumper3DConfig b;
-  if (const auto sides = node.find("sides")) {
-    if (!sides->is_sequence() || sides->elements().empty())
-      sides->fail("expected a list of walls, e.g. [east, west]");
-    for (const InputNode& s : sides->elements()) {
-      const int k = side_of(s);
-      if (!walls.present[k]) s.fail(std::string("there is no ") + W::kSideNames[k] + " wall");
-      if (b.on[k]) s.fail("side listed twice");
-      b.on[k] = true;
-    }
-  } else {
-    node.note_default("sides", "every wall");
-    b.on = walls.present;
-  }
-  const InputNode thickness = node.required("thickness");
-  b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);
-  for (int k = 0; k < 4; ++k)
-    if (b.on[k] && b.thickness > 0 && b.thickness >= walls.gap[k]) {
-      char what[160];
-      std::snprintf(what, sizeof what,
-                    "the bumper (%g cm) must be thinner than the %s wall's gap (%g cm)",
-                    100 * b.thickness, W::kSideNames[k], 100 * walls.gap[k]);
-      thickness.fail(what);
-    }
-  node.read_choice<std::string>("law", {{"linear", "linear"}, {"hertz", "hertz"}}, b.law);
-  b.modulus = node.required("E").quantity(dim::kPressure, Bound::kPositive);
-  b.height = node.required("height").quantity(dim::kLength, Bound::kPositive);
-  const InputNode e = node.required("e");
-  b.e = e.number(Bound::kPositive);
-  if (b.e > 1.0) e.fail("the coefficient of restitution must be in (0, 1]");
-  if (const auto strain = node.find("max_strain")) {
-    b.max_strain = strain->number();
-    if (!(b.max_strain > 0 && b.max_strain < 1))
-      strain->fail("max_strain must be in (0, 1) (a fraction of the thickness, e.g. 60 %)");
-  } else {
-    node.note_default("max_strain", "0.6");
-  }
-  node.read_number("mu_static", Bound::kNonNegative, b.mu_static);
-  node.read_number("mu_kinetic", Bound::kNonNegative, b.mu_kinetic);
-  if (b.mu_kinetic > b.mu_static) node.fail_at_key("mu_kinetic", "must not exceed mu_static");
-  node.read_quantity("from", dim::kLength, Bound::kNonNegative, b.from);
-  if (const auto to = node.find("to")) {
-    b.to = to->quantity(dim::kLength, Bound::kPositive);
-    if (!(b.from < b.to)) to->fail("'to' must be beyond 'from'");
-  }
-  return b;
-}
-
-// from/to of the bumper inside every bumpered face (its length: the slab's extent plus the
-// walls' extension at each end, as moat_wall_outline builds it).
-void check_bumper_span(const InputNode& walls_node, const Building3DConfig& b) {
-  const MoatBumper3DConfig& bumper = b.walls.bumper;
-  if (!bumper.any()) return;
-  const InputNode node = walls_node.required("bumper");
-  for (int side = 0; side < 4; ++side) {
-    if (!bumper.on[side]) continue;
-    const std::vector<Vec2> wall = moat_wall_outline(b, side);
-    const bool along_y = side <= MoatWalls3DConfig::kWest;
-    const double length = along_y ? wall[2].y - wall[0].y : wall[1].x - wall[0].x;
-    const auto outside = [&](const char* key, double value) {
-      char what[200];
-      std::snprintf(what, sizeof what,
-                    "%s = %g m lies beyond the %s wall's face (%g m long: the slab plus the "
-                    "extension at each end)",
-                    key, value, MoatWalls3DConfig::kSideNames[side], length);
-      node.fail_at_key(key, what);
-    };
-    if (bumper.from >= length) outside("from", bumper.from);
-    if (std::isfinite(bumper.to) && bumper.to > length * (1 + 1e-12)) outside("to", bumper.to);
   }
 }
 
