@@ -22,6 +22,7 @@
 #include "solver/structures/job.h"
 #include "solver/structures/pounding3d.h"
 #include "test_support.h"
+#include "tests/model_test_support.h"
 
 namespace isopound {
 namespace {
@@ -292,15 +293,7 @@ constexpr int kConvergedDivisor = 256;
 // by more than 0.1 % (measured, docs/impact-laws.md).
 TEST(Bumper3DConvergence, XY5With10cmBumpersDefaultsWithin1PercentOfFixedStep) {
   ISOPOUND_REQUIRE_RECORDS();
-  const std::filesystem::path file = test::source_dir() / "configs" / "xy5-bumpers-10cm.yaml";
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string yaml = text.str();
-  const std::string from = "../../shared/records";
-  for (std::size_t at = yaml.find(from); at != std::string::npos; at = yaml.find(from))
-    yaml.replace(at, from.size(), test::records_dir().string());
-  ModelConfig c = load_model(YAML::Load(yaml), file.string(), file.parent_path().string());
+  ModelConfig c = test::load_shipped_config("xy5-bumpers-10cm.yaml");
   c.analysis.t_end = 3.6;
   c.output.histories = false;
   const JobResult adaptive = run_job(c);

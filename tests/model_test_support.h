@@ -5,12 +5,30 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "solver/core/analysis.h"
 #include "solver/io/model_input.h"
+#include "tests/test_support.h"
 
 namespace isopound::test {
+
+// A shipped config (configs/NAME) with its records read from wherever ../shared is
+// (ISOPOUND_SHARED), not only next to the source tree.
+inline ModelConfig load_shipped_config(const std::string& name) {
+  const std::filesystem::path file = source_dir() / "configs" / name;
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string from = "../../shared/records";
+  for (std::size_t at = yaml.find(from); at != std::string::npos; at = yaml.find(from))
+    yaml.replace(at, from.size(), records_dir().string());
+  return load_model(YAML::Load(yaml), file.string(), file.parent_path().string());
+}
 
 inline ModelConfig load_model_text(const std::string& text) {
   return load_model(YAML::Load(text), "model.yaml", "");

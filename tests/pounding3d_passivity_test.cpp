@@ -16,21 +16,13 @@
 #include "solver/io/report3d.h"
 #include "solver/structures/job.h"
 #include "test_support.h"
+#include "tests/model_test_support.h"
 
 namespace isopound {
 namespace {
 
 ModelConfig xy5(double angle_deg, double t_end) {
-  const std::filesystem::path file = test::source_dir() / "configs" / "3d-xy5.yaml";
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string yaml = text.str();
-  // The records wherever ../shared is (ISOPOUND_SHARED), not only next to the source tree.
-  const std::string from = "../../shared/records";
-  for (std::size_t at = yaml.find(from); at != std::string::npos; at = yaml.find(from))
-    yaml.replace(at, from.size(), test::records_dir().string());
-  ModelConfig c = load_model(YAML::Load(yaml), file.string(), file.parent_path().string());
+  ModelConfig c = test::load_shipped_config("3d-xy5.yaml");
   c.ground_motion.angle = angle_deg * std::numbers::pi / 180.0;
   c.analysis.t_end = t_end;
   c.output.histories = false;
