@@ -92,13 +92,7 @@ TEST(Bumper3DRubber, FaceOnForceIsTheClosedForm) {
   }
 }
 
-GroundMotion still(double duration, double dt) {
-  GroundMotion g;
-  g.name = "still";
-  g.dt = dt;
-  g.acceleration.assign(static_cast<std::size_t>(std::round(duration / dt)) + 1, 0.0);
-  return g;
-}
+using test::still;
 
 // A free slab thrown face-on at v0 into a soft, thick linear rubber that never bottoms out,
 // through run_analysis at defaults: the peak indentation of the undamped law (e = 1) is

@@ -24,6 +24,7 @@
 #include "solver/materials/bumper_law.h"
 #include "solver/materials/impact_law.h"
 #include "solver/structures/job.h"
+#include "tests/model_test_support.h"
 #include "tests/test_support.h"
 #include "tests/two_mass_reference.h"
 
@@ -217,13 +218,7 @@ TEST(BumperLaw, RefusesBadConfigurations) {
 // Through the whole solver
 // ---------------------------------------------------------------------------------------------
 
-GroundMotion still(double duration, double dt) {
-  GroundMotion g;
-  g.name = "still";
-  g.dt = dt;
-  g.acceleration.assign(static_cast<std::size_t>(std::round(duration / dt)) + 1, 0.0);
-  return g;
-}
+using test::still;
 
 // Two free masses, m1 at v0 towards m2 at rest, 1 cm apart; returns e_app and the contact.
 struct Drop {

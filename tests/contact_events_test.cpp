@@ -16,17 +16,12 @@
 #include "solver/structures/building2d.h"
 #include "solver/structures/pounding2d.h"
 #include "test_elements.h"
+#include "tests/model_test_support.h"
 
 namespace isopound {
 namespace {
 
-GroundMotion still(double duration, double dt) {
-  GroundMotion g;
-  g.name = "still";
-  g.dt = dt;
-  g.acceleration.assign(static_cast<std::size_t>(std::round(duration / dt)) + 1, 0.0);
-  return g;
-}
+using test::still;
 
 // The first zero crossing of f on [0, 1] in the given direction by dense sampling and
 // bisection: an independent computation of what first_status_change must find.

@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "solver/core/analysis.h"
+#include "solver/excitation/ground_motion.h"
 #include "solver/io/model_input.h"
 #include "tests/test_support.h"
 
@@ -28,6 +30,16 @@ inline ModelConfig load_shipped_config(const std::string& name) {
   for (std::size_t at = yaml.find(from); at != std::string::npos; at = yaml.find(from))
     yaml.replace(at, from.size(), records_dir().string());
   return load_model(YAML::Load(yaml), file.string(), file.parent_path().string());
+}
+
+// No ground motion: `duration` s of zero acceleration at step dt (free vibration from the
+// initial state).
+inline GroundMotion still(double duration, double dt) {
+  GroundMotion g;
+  g.name = "still";
+  g.dt = dt;
+  g.acceleration.assign(static_cast<std::size_t>(std::round(duration / dt)) + 1, 0.0);
+  return g;
 }
 
 inline ModelConfig load_model_text(const std::string& text) {

@@ -12,6 +12,7 @@
 #include "solver/elements/contact.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/materials/impact_law.h"
+#include "tests/model_test_support.h"
 
 namespace isopound {
 namespace {
@@ -637,13 +638,7 @@ TEST(PolygonContactTangent, NewtonConvergesQuadratically) {
   }
 }
 
-GroundMotion still(double duration, double dt) {
-  GroundMotion g;
-  g.name = "still";
-  g.dt = dt;
-  g.acceleration.assign(static_cast<std::size_t>(std::round(duration / dt)) + 1, 0.0);
-  return g;
-}
+using test::still;
 
 // Through run_analysis at its default adaptive stepping (each element with its own step limit
 // and events): the face-on slab and the 2D Kelvin–Voigt contact within 0.5 % on every peak.
@@ -976,7 +971,7 @@ TEST(PolygonContactFriction, ASlabArrivingWhileSlidingSlipsFromTheOnset) {
   PolygonContact c("slab|wall", slab(0), wall_at(0.5 * kSide + gap), cfg);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(3), v = Eigen::VectorXd::Zero(3);
   v[0] = 0.05;  // approaching the wall slowly: F_N = c_N v_imp ~ 3 MN
-  v[1] = 2.0;  // sliding along it
+  v[1] = 2.0;   // sliding along it
   const auto trial = [&](double t, double step, bool freeze) {
     u[0] = v[0] * t;
     u[1] = v[1] * t;
@@ -997,8 +992,7 @@ TEST(PolygonContactFriction, ASlabArrivingWhileSlidingSlipsFromTheOnset) {
   ASSERT_TRUE(s.in_contact);
   EXPECT_GT(s.normal_force, 0.0);  // the Kelvin–Voigt jump c_N v_imp
   EXPECT_TRUE(s.slipping);
-  EXPECT_NEAR(std::abs(s.tangential_force), cfg.mu_kinetic * s.normal_force,
-              1e-9 * s.normal_force);
+  EXPECT_NEAR(std::abs(s.tangential_force), cfg.mu_kinetic * s.normal_force, 1e-9 * s.normal_force);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "solver/core/analysis.h"
 #include "solver/elements/contact.h"
 #include "solver/materials/impact_law.h"
+#include "tests/model_test_support.h"
 #include "tests/two_mass_reference.h"
 
 namespace isopound {
@@ -15,13 +16,7 @@ namespace {
 
 constexpr double kM1 = 340e3, kM2 = 500e3, kV0 = 1.0, kK = 2.5e9, kKh = 2.5e9;
 
-GroundMotion still(double duration, double dt) {
-  GroundMotion g;
-  g.name = "still";
-  g.dt = dt;
-  g.acceleration.assign(static_cast<std::size_t>(std::round(duration / dt)) + 1, 0.0);
-  return g;
-}
+using test::still;
 
 // Two free masses on a line, m1 at x = 0 moving at v0 towards m2 at rest, 1 cm apart.
 struct Collision {
