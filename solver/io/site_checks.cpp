@@ -13,6 +13,7 @@
 #include "solver/structures/levels3d.h"
 #include "solver/structures/pounding2d.h"
 #include "solver/structures/pounding3d.h"
+#include "solver/structures/struck_columns3d.h"
 
 namespace isopound {
 namespace {
@@ -522,6 +523,24 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
             partner = &b;
           }
         if (!partner || dz < limits.level_tolerance) continue;
+        // Issue 26: strictly between two floors of a storey of j whose columns are described
+        // (struck_columns:), it strikes those columns (struck_columns3d.h), in elastic storeys.
+        const Building3DConfig& bj = config.structures3d[j];
+        if (bj.struck_columns.given) {
+          if (const int k = storey_between_floors(bj, a.elevation, limits.level_tolerance)) {
+            for (const Column3DConfig& c : bj.storeys[static_cast<std::size_t>(k) - 1].columns)
+              if (c.hysteresis.yields()) {
+                problems.error_at(*marks[j].item, "struck_columns",
+                                  a.level + " of '" + a.name + "' at " + metres(a.elevation) +
+                                      " strikes storey " + std::to_string(k) + " of '" + bj.name +
+                                      "', whose column " + c.label +
+                                      " yields: struck columns are modelled in elastic storeys "
+                                      "only");
+                break;
+              }
+            continue;
+          }
+        }
         // The storey under floor f (0-based f - 1); the base slab: the building's entry.
         const int base = base_level3d(config.structures3d[i]);
         const int storey = a.level_index == base
@@ -537,7 +556,8 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
                                                  : std::string("overlapping it")) +
                               ": it would pound that building's columns, which the model "
                               "does not represent (floors of pounding pairs must be at equal "
-                              "levels)");
+                              "levels, or describe its struck columns with struck_columns: {M_y}, "
+                              "docs/floor-to-column.md)");
       }
     }
   return clearances;
@@ -593,13 +613,13 @@ void check_site2d(const ModelConfig& config, const std::vector<InputNode>& neigh
       std::vector<int> struck;
       for (std::size_t f = 0; f < za.size(); ++f) {
         const FacedPart part = faced_part(o, zo, ground_o, za[f]);
-        const std::string what = "level " + std::to_string(f) + " of '" + a.name + "' at " +
-                                 metres(za[f]) + " ";
+        const std::string what =
+            "level " + std::to_string(f) + " of '" + a.name + "' at " + metres(za[f]) + " ";
         using Kind = FacedPart::Kind;
         if (part.kind == Kind::kBelowGround) {
           problems.error_at(at, "ground_level",
-                            what + "faces '" + o.name + "' below its ground (" +
-                                metres(ground_o) + "): its foundation is outside the model");
+                            what + "faces '" + o.name + "' below its ground (" + metres(ground_o) +
+                                "): its foundation is outside the model");
         } else if (part.kind == Kind::kIsolationGap) {
           problems.error_at(at, "",
                             what + "faces the isolators of '" + o.name +

@@ -26,13 +26,6 @@ std::vector<Vec2> placed(const Building3DConfig& b, const std::vector<Vec2>& pla
   return w;
 }
 
-int find_dof(const Model& model, const std::string& label) {
-  if (label.empty()) return -1;
-  for (int i = 0; i < model.size(); ++i)
-    if (model.dofs[i].label == label) return i;
-  throw std::logic_error("3D pounding: no DOF labelled '" + label + "'");
-}
-
 // Outward normal of a wall side in plan: the building frame's axis turned by its rotation.
 Vec2 wall_normal_W(const Building3DConfig& b, int side) {
   static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -42,6 +35,35 @@ Vec2 wall_normal_W(const Building3DConfig& b, int side) {
 }
 
 }  // namespace
+
+int find_dof(const Model& model, const std::string& label) {
+  if (label.empty()) return -1;
+  for (int i = 0; i < model.size(); ++i)
+    if (model.dofs[i].label == label) return i;
+  throw std::logic_error("3D pounding: no DOF labelled '" + label + "'");
+}
+
+PolygonContactConfig pair_law(const ModelConfig& config, double mass_a, double mass_b) {
+  PolygonContactConfig law = config.contact3d.law;
+  law.steps_per_contact = config.analysis.steps_per_contact;
+  if (config.contact3d.use_impact_law) {
+    ImpactLawConfig c = config.contact3d.impact_law;
+    c.mass_1 = mass_a;
+    c.mass_2 = mass_b;
+    law.normal_law = make_impact_law(c);
+  }
+  return law;
+}
+
+void note_upper_contact(Model& model, int u, int element, bool with_wall) {
+  for (StructureInfo& s : model.structures) {
+    if (!s.has_base || u < 0 ||
+        std::find(s.level_dofs.begin(), s.level_dofs.end(), u) == s.level_dofs.end())
+      continue;
+    const bool on_base = u == s.level_dofs[s.base_level];
+    if (!on_base || (s.base_level > 0 && !with_wall)) s.upper_contact_elements.push_back(element);
+  }
+}
 
 int walls_level3d(const Building3DConfig& b) {
   return b.walls_level >= 0 ? b.walls_level : base_level3d(b);
@@ -263,29 +285,14 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
                          s.plan_W,
                          s.mass};
     };
-    PolygonContactConfig law = config.contact3d.law;
-    law.steps_per_contact = config.analysis.steps_per_contact;
-    if (config.contact3d.use_impact_law) {
-      ImpactLawConfig c = config.contact3d.impact_law;
-      c.mass_1 = bodies[pair.a].mass;
-      c.mass_2 = bodies[pair.b].mass;
-      law.normal_law = make_impact_law(c);
-    }
+    const PolygonContactConfig law = pair_law(config, bodies[pair.a].mass, bodies[pair.b].mass);
     // A contact on a level other than an isolated structure's base slab is not part of its base
     // shear (StructureInfo::upper_contact_elements); nor is one on a base slab raised above a
     // storey by anything but its moat walls (a neighbour's floor is no foundation).
     const bool with_wall = bodies[pair.a].role == "wall" || bodies[pair.b].role == "wall";
-    for (const SiteBody* side : {&bodies[pair.a], &bodies[pair.b]}) {
-      const int u = find_dof(model, side->dof_label_u);
-      for (StructureInfo& s : model.structures) {
-        if (!s.has_base || u < 0 ||
-            std::find(s.level_dofs.begin(), s.level_dofs.end(), u) == s.level_dofs.end())
-          continue;
-        const bool on_base = u == s.level_dofs[s.base_level];
-        if (!on_base || (s.base_level > 0 && !with_wall))
-          s.upper_contact_elements.push_back(static_cast<int>(model.elements.size()));
-      }
-    }
+    for (const SiteBody* side : {&bodies[pair.a], &bodies[pair.b]})
+      note_upper_contact(model, find_dof(model, side->dof_label_u),
+                         static_cast<int>(model.elements.size()), with_wall);
     model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(bodies[pair.a]),
                                                               body(bodies[pair.b]), law));
     add_bumper_contacts(model, config, bodies[pair.a], bodies[pair.b], body, law);
