@@ -142,13 +142,17 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   zl_.segment<2>(3) = offset_commit_ + chord(zl_, column_[0].shape_at_node());
   Eigen::Vector2d g = node_residual(slope);
   for (int it = 0; it < 100; ++it) {
+    // Converged: the residual at the round-off of the column's forces, or a step below that of
+    // the node's position.
+    const double scale = state_[0].force.cwiseAbs().sum() + state_[1].force.cwiseAbs().sum();
+    if (g.norm() <= 1e-13 * scale) break;
     const Eigen::Vector2d n = zl_.segment<2>(3);
     const Eigen::Vector2d step = -slope.partialPivLu().solve(g);
-    if (!step.allFinite() || step.norm() <= 1e-15 * (1e-3 + n.norm())) break;
+    if (!step.allFinite() || step.norm() <= 1e-14 * (1e-3 + n.norm())) break;
     // Backtracking: the residual's norm must fall (kinks of the hinges and the contact).
     double t = 1.0;
     Eigen::Vector2d g_next;
-    for (int cut = 0; cut < 40; ++cut, t *= 0.5) {
+    for (int cut = 0; cut < 30; ++cut, t *= 0.5) {
       zl_.segment<2>(3) = n + t * step;
       g_next = node_residual(slope);
       if (g_next.norm() < g.norm()) break;
@@ -236,26 +240,6 @@ bool StruckColumn3D::contact_damped() const {
   kd_.setZero();
   contact_.add_tangent(kd_, 1.0);
   return (kd_.block<2, 2>(3, 3) - kk_.block<2, 2>(3, 3)).cwiseAbs().maxCoeff() > 0;
-}
-
-double StruckColumn3D::step_limit() const {
-  double limit = contact_.step_limit();
-  if (!damped_commit_) return limit;
-  // A quarter of the node's relaxation time c / (k_contact + k_column) per direction: behind a
-  // dashpot the massless node follows the slab over that time.
-  kk_.setZero();
-  contact_.add_tangent(kk_, 0.0);
-  kd_.setZero();
-  contact_.add_tangent(kd_, 1.0);
-  Eigen::Matrix2d k_col = Eigen::Matrix2d::Zero();
-  for (int i = 0; i < 2; ++i)
-    k_col +=
-        map_[i].block<1, 2>(1, 3).transpose() * state_[i].tangent(1, 1) * map_[i].block<1, 2>(1, 3);
-  for (int d = 0; d < 2; ++d) {
-    const double c = kd_(3 + d, 3 + d) - kk_(3 + d, 3 + d), k = kk_(3 + d, 3 + d) + k_col(d, d);
-    if (c > 0 && k > 0) limit = std::min(limit, 0.25 * c / k);
-  }
-  return limit;
 }
 
 void StruckColumn3D::commit() {
