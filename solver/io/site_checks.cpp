@@ -9,6 +9,7 @@
 #include <span>
 
 #include "geometry/overlap.h"
+#include "solver/io/bumper_input.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/levels3d.h"
 #include "solver/structures/pounding3d.h"
@@ -444,6 +445,7 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
     }
   const std::vector<ColumnSpan> spans = column_spans(config, site);
   check_columns(config, marks, site, spans, limits, problems);
+  check_slab_bumpers(config, marks, site, limits.level_tolerance, problems);
 
   // Walls: the clearance to the base slab they surround, measured per side against the declared
   // gap; no wall may stand in another structure's slab (up to its height) or on its columns.

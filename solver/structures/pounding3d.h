@@ -59,12 +59,14 @@ std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
 void add_flexible_walls(Model& model, const ModelConfig& config);
 
 // The end of the labels of a bumper's two contacts (issue 27): the rubber's, "<slab>|<wall>
-// bumper", and the bottomed-out rubber's, "<slab>|<wall> bumper bottomed".
+// bumper", and the bottomed-out rubber's, "<slab>|<wall> bumper bottomed"; on a slab's face,
+// "<other slab>|<slab with the rubber> bumper" and "... bumper bottomed".
 inline constexpr const char* kBumperLabel = "bumper";
 inline constexpr const char* kBottomedLabel = "bumper bottomed";
 
 // Adds a PolygonContact per pair (the model must hold the structures' DOFs already), and after a
-// bumpered wall's contact the two of its bumper (issue 27).
+// pair's contact the two of each bumper it has (issue 27): a bumpered wall's, and those of each
+// bumpered slab face (Building3DConfig::bumper) within the search distance of the other slab.
 void add_pounding3d(Model& model, const ModelConfig& config);
 
 // For the unobstructed comparison: per moat wall, the coordinates whose peaks give the critical
