@@ -395,10 +395,11 @@ TEST(Bumper3DNeighbour, RubberOnEitherFaceIsTheSameHeadOn) {
   const Outcome on_building =
       run(load_text(with_neighbour("", "    bumper: " + kRubber + ", sides: [east]}\n")));
   const std::string floor1 = "building/floor 1|neighbour/floor 1";
-  EXPECT_GE(impacts_of(on_neighbour.model, floor1 + " bumper"), 1);
+  EXPECT_GE(impacts_of(on_neighbour.model, floor1 + " west bumper"), 1);
+  EXPECT_GE(impacts_of(on_neighbour.model, floor1 + " west bumper bottomed"), 0);
   EXPECT_EQ(impacts_of(on_neighbour.model, floor1), 0);
-  EXPECT_EQ(impacts_of(on_building.model, "neighbour/floor 1|building/floor 1 bumper"),
-            impacts_of(on_neighbour.model, floor1 + " bumper"));
+  EXPECT_EQ(impacts_of(on_building.model, "neighbour/floor 1|building/floor 1 east bumper"),
+            impacts_of(on_neighbour.model, floor1 + " west bumper"));
   // Along x (y and θ stay at round-off: their peaks are noise).
   const auto x_peaks = [](const Outcome& o) {
     std::vector<test::NamedPeak> p;

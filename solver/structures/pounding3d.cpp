@@ -43,6 +43,10 @@ Vec2 wall_normal_W(const Building3DConfig& b, int side) {
 
 }  // namespace
 
+std::string slab_face_label(const std::string& slab_label, int side) {
+  return slab_label + " " + MoatWalls3DConfig::kSideNames[side];
+}
+
 int walls_level3d(const Building3DConfig& b) {
   return b.walls_level >= 0 ? b.walls_level : base_level3d(b);
 }
@@ -218,16 +222,17 @@ void add_flexible_walls(Model& model, const ModelConfig& config) {
 namespace {
 
 // A bumper's two strips (issue 27, bumper_layer3d.h) as two more contacts right after the pair's
-// own: between `other` and each strip, carried by `owner`'s DOFs, with laws per contact length
-// and the rubber's friction. The concrete contact stays: the strips end at the owner's face, so
-// the rubber's δ_N stops at max_strain t where the bottomed strip's overlap begins, and that one's
-// at (1 − max_strain) t where the concrete's begins (docs/impact-laws.md, "Bumpers on moat walls
-// (3D)").
+// own: between `other` and each strip, carried by `owner`'s DOFs and named after `face`, with laws
+// per contact length and the rubber's friction. The concrete contact stays: the strips end at the
+// owner's face, so the rubber's δ_N stops at max_strain t where the bottomed strip's overlap
+// begins, and that one's at (1 − max_strain) t where the concrete's begins (docs/impact-laws.md,
+// "Bumpers on moat walls (3D)").
 template <class MakeBody>
 void add_strip_contacts(Model& model, const ModelConfig& config, const SiteBody& other,
-                        const SiteBody& owner, const std::vector<Vec2>& rubber_W,
-                        const std::vector<Vec2>& bottomed_W, const Bumper3DConfig& bumper,
-                        const MakeBody& body, const PolygonContactConfig& pair_law) {
+                        const SiteBody& owner, const std::string& face,
+                        const std::vector<Vec2>& rubber_W, const std::vector<Vec2>& bottomed_W,
+                        const Bumper3DConfig& bumper, const MakeBody& body,
+                        const PolygonContactConfig& pair_law) {
   const double k_normal = config.contact3d.law.k_normal;
   PolygonContactConfig law = pair_law;
   law.normal_law = nullptr;
@@ -239,7 +244,7 @@ void add_strip_contacts(Model& model, const ModelConfig& config, const SiteBody&
     strip.shape = polygon_of(outline_W);
     law.length_law = std::move(f);
     model.elements.push_back(std::make_unique<PolygonContact>(
-        other.label() + "|" + owner.label() + " " + name, body(other), std::move(strip), law));
+        other.label() + "|" + face + " " + name, body(other), std::move(strip), law));
   };
   add(rubber_W, bumper_rubber_law(bumper, k_normal), kBumperLabel);
   add(bottomed_W, bumper_bottomed_law(k_normal), kBottomedLabel);
@@ -255,7 +260,7 @@ void add_wall_bumper(Model& model, const ModelConfig& config, const SiteBody& sl
   if (!bumper.on[wall.wall_side] || !(bumper.thickness > 0)) return;
   const BumperStrips strips =
       bumper_strips(moat_wall_outline(b, wall.wall_side), wall.wall_side, bumper);
-  add_strip_contacts(model, config, slab, wall, placed(b, strips.rubber),
+  add_strip_contacts(model, config, slab, wall, wall.label(), placed(b, strips.rubber),
                      placed(b, strips.bottomed), bumper, body, law);
 }
 
@@ -279,8 +284,8 @@ void add_slab_bumper(Model& model, const ModelConfig& config, const SiteBody& ot
     if (separation_of(polygon_of(rubber_W), other.plan_W).distance >
         config.contact3d.search_distance)
       continue;
-    add_strip_contacts(model, config, other, owner, rubber_W, placed(b, strips.bottomed), bumper,
-                       body, law);
+    add_strip_contacts(model, config, other, owner, slab_face_label(owner.label(), side), rubber_W,
+                       placed(b, strips.bottomed), bumper, body, law);
   }
 }
 

@@ -60,9 +60,13 @@ void add_flexible_walls(Model& model, const ModelConfig& config);
 
 // The end of the labels of a bumper's two contacts (issue 27): the rubber's, "<slab>|<wall>
 // bumper", and the bottomed-out rubber's, "<slab>|<wall> bumper bottomed"; on a slab's face,
-// "<other slab>|<slab with the rubber> bumper" and "... bumper bottomed".
+// "<other slab>|<face> bumper" and "... bumper bottomed", the face as slab_face_label names it.
 inline constexpr const char* kBumperLabel = "bumper";
 inline constexpr const char* kBottomedLabel = "bumper bottomed";
+
+// A slab's face with rubber (Building3DConfig::bumper): "<slab label> <side>", e.g.
+// "east-neighbour/floor 1 west" (side: MoatWalls3DConfig::Side, building frame).
+std::string slab_face_label(const std::string& slab_label, int side);
 
 // Adds a PolygonContact per pair (the model must hold the structures' DOFs already), and after a
 // pair's contact the two of each bumper it has (issue 27): a bumpered wall's, and those of each
