@@ -593,13 +593,13 @@ void check_site2d(const ModelConfig& config, const std::vector<InputNode>& neigh
       std::vector<int> struck;
       for (std::size_t f = 0; f < za.size(); ++f) {
         const FacedPart part = faced_part(o, zo, ground_o, za[f]);
-        const std::string what = "level " + std::to_string(f) + " of '" + a.name + "' at " +
-                                 metres(za[f]) + " ";
+        const std::string what =
+            "level " + std::to_string(f) + " of '" + a.name + "' at " + metres(za[f]) + " ";
         using Kind = FacedPart::Kind;
         if (part.kind == Kind::kBelowGround) {
           problems.error_at(at, "ground_level",
-                            what + "faces '" + o.name + "' below its ground (" +
-                                metres(ground_o) + "): its foundation is outside the model");
+                            what + "faces '" + o.name + "' below its ground (" + metres(ground_o) +
+                                "): its foundation is outside the model");
         } else if (part.kind == Kind::kIsolationGap) {
           problems.error_at(at, "",
                             what + "faces the isolators of '" + o.name +
