@@ -17,6 +17,7 @@
 #include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input3d.h"
 #include "solver/io/site_checks.h"
+#include "solver/io/struck_columns_input.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/rayleigh_modes.h"
@@ -458,7 +459,7 @@ WallConfig read_wall(const InputNode& node) {
 BuildingConfig read_building(const InputNode& node);
 
 NeighbourConfig read_neighbour(const InputNode& node) {
-  node.expect_keys({"building", "side", "gap", "impact", "bumper"});
+  node.expect_keys({"building", "side", "gap", "impact", "bumper", "ground_level"});
   NeighbourConfig n;
   n.building = read_building(node.required("building"));
   node.read_choice<bool>("side", {{"left", false}, {"right", true}}, n.right);
@@ -467,6 +468,9 @@ NeighbourConfig read_neighbour(const InputNode& node) {
   impact.expect_keys(kImpactKeys);
   read_impact(impact, n.impact);
   if (const auto bumper = node.find("bumper")) n.bumper = read_bumper(*bumper, n.gap);
+  // Not noted as a default when absent: the buildings stand on one ground, as before.
+  if (const auto ground = node.find("ground_level"))
+    n.ground_level = ground->quantity(dim::kLength);
   return n;
 }
 
@@ -499,7 +503,8 @@ void read_isolation_level(const InputNode& node, BuildingConfig& b) {
 
 BuildingConfig read_building(const InputNode& node) {
   node.expect_keys({"name", "isolated", "base", "floors", "isolation_level", "isolation_height",
-                    "isolator", "damping", "walls", "p_delta", "elastic_limit_drift_ratio"});
+                    "isolator", "damping", "walls", "p_delta", "elastic_limit_drift_ratio",
+                    "columns"});
   BuildingConfig b;
   if (const auto name = node.find("name")) {
     b.name = name->string();
@@ -528,6 +533,7 @@ BuildingConfig read_building(const InputNode& node) {
     b.isolator = read_isolator(isolator ? *isolator : node.empty_child("isolator"));
   }
   read_damping(node, b);
+  if (const auto columns = node.find("columns")) b.columns = read_struck_columns(*columns, b);
   if (const auto walls = node.find("walls")) {
     const int levels = static_cast<int>(b.floors.size()) + (b.isolated ? 1 : 0);
     const auto add = [&](const InputNode& w) {

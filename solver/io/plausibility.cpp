@@ -20,7 +20,7 @@ constexpr Dimension kMoment{2, 1, -2};      // N m
 constexpr Dimension kArea{2, 0, 0};         // m^2
 
 // clang-format off
-constexpr std::array<PlausibleRange, 50> kRanges{{
+constexpr std::array<PlausibleRange, 54> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
@@ -74,10 +74,15 @@ constexpr std::array<PlausibleRange, 50> kRanges{{
   {"bumper.area",  kArea, 0, 1e4, 1e-4, 100, "m2", 1, "a bumper's contact area"},
   {"bumper.height", dim::kLength, 0, 20, 0.02, 2, "m", 1, "a 3D bumper's height against the slab edge"},
   {"max_strain",   dim::kNone, 0, 1, 0.2, 0.9, "%", 1e-2, "a bumper's compression limit"},
+  // A 2D building's struck column line (columns:, docs/floor-to-column.md).
+  {"M_y",          kMoment, 0, 1e10, 1e3, 1e8, "kN m", 1e3, "a column hinge yield moment"},
+  {"V_n",          dim::kForce, 0, 1e11, 1e3, 1e9, "kN", 1e3, "a column shear capacity"},
+  {"hardening_ratio", dim::kNone, 0, 1, 0.001, 0.3, "%", 1e-2, "a hinge hardening ratio"},
+  {"ground_level", dim::kLength, -1000, 1000, -20, 20, "m", 1, "a neighbour's ground above the building's"},
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 39> kUnchecked{{
+constexpr std::array<UncheckedKey, 40> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
@@ -104,6 +109,7 @@ constexpr std::array<UncheckedKey, 39> kUnchecked{{
     {"I11", "second moment of area (m^4): depends on the section"},
     {"I22", "second moment of area (m^4): depends on the section"},
     {"J", "torsion constant (m^4): depends on the section"},
+    {"I", "second moment of area (m^4) of a 2D struck column: depends on the section"},
     {"bays_x", "grid spacing (m): the site's own geometry"},
     {"bays_y", "grid spacing (m): the site's own geometry"},
     {"position", "plan coordinates (m): the site's own geometry, checked by the site checks"},

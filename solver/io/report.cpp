@@ -21,6 +21,7 @@
 #include "solver/io/computed_defaults.h"
 #include "solver/io/report3d.h"
 #include "solver/io/report_damage2d.h"
+#include "solver/io/report_struck_columns.h"
 #include "solver/materials/bumper_law.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
@@ -170,6 +171,8 @@ std::optional<double> column_energy(const Model& model) {
   for (const auto& el : model.elements)
     if (const auto* c = dynamic_cast<const ColumnLink*>(el.get()))
       sum = sum.value_or(0.0) + c->hysteretic_energy();
+  if (const std::optional<double> struck = struck_column_energy(model))  // 2D struck columns
+    sum = sum.value_or(0.0) + *struck;
   return sum;
 }
 
@@ -355,6 +358,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     elements.push_back(je);
   }
   j["elements"] = elements;
+  if (json struck = struck_columns_json(model, r); !struck.empty()) j["struck_columns"] = struck;
 
   const EnergyBalance& en = r.energy;
   const double impacts = impact_energy(model);
@@ -606,6 +610,7 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
       }
       out << '\n';
     }
+    print_struck_columns(out, model, r);  // report_struck_columns
   }
   if (const std::optional<double> friction = friction_energy(model)) {
     std::snprintf(line, sizeof line,

@@ -12,14 +12,16 @@
 #include "solver/io/bumper_input.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/levels3d.h"
+#include "solver/structures/pounding2d.h"
 #include "solver/structures/pounding3d.h"
 
 namespace isopound {
 namespace {
 
 constexpr double kLevelTolerance2D = 1e-3;  // m: pounding2d.cpp pairs levels within 1 mm
-constexpr double kGround = 0.01;            // m: levels below are at the ground
-constexpr double kNoArea = 1e-9;            // m2: overlaps below this are touching, not overlapping
+
+constexpr double kGround = 0.01;  // m: levels below are at the ground
+constexpr double kNoArea = 1e-9;  // m2: overlaps below this are touching, not overlapping
 
 std::string fmt(const char* f, double v) {
   return format_number(f, v);
@@ -545,37 +547,80 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
 
 void check_site2d(const ModelConfig& config, const std::vector<InputNode>& neighbours,
                   ProblemList& problems) {
-  // Neighbours: every level of one within the other's height needs a partner (pounding2d.cpp
-  // pairs levels within 1 mm).
-  const auto elevations = [](const BuildingConfig& x) {
+  // Neighbours: a level of one within the other's height meets a level of the other
+  // (pounding2d.cpp pairs levels within 1 mm) or, when the other describes its facing column
+  // line (columns:), may strike its columns between two floors. Without columns: the check as
+  // before issue 26, on the floors' elevations from the storey heights alone.
+  const BuildingConfig& b = config.building;
+  if (b.floors.empty()) return;
+  const auto floor_elevations = [](const BuildingConfig& x, double ground) {
     std::vector<double> z;
-    double e = 0.0;
+    double e = ground;
     for (const FloorConfig& f : x.floors) z.push_back(e += f.height);
     return z;
   };
-  const BuildingConfig& b = config.building;
-  const std::vector<double> z_main = elevations(b);
+  const std::vector<double> z_main = level_elevations(b);
   for (std::size_t k = 0; k < config.neighbours.size() && k < neighbours.size(); ++k) {
-    const BuildingConfig& nb = config.neighbours[k].building;
-    const std::vector<double> z_other = elevations(nb);
-    if (z_main.empty() || z_other.empty()) continue;
+    const NeighbourConfig& neighbour = config.neighbours[k];
+    const BuildingConfig& nb = neighbour.building;
+    if (nb.floors.empty()) continue;
+    std::vector<double> z_other = level_elevations(nb);
+    for (double& z : z_other) z += neighbour.ground_level;
+    const InputNode& at = neighbours[k];
     for (int pass = 0; pass < 2; ++pass) {
+      const BuildingConfig& a = pass == 0 ? b : nb;
+      const BuildingConfig& o = pass == 0 ? nb : b;
+      const double ground_a = pass == 0 ? 0.0 : neighbour.ground_level;
+      const double ground_o = pass == 0 ? neighbour.ground_level : 0.0;
+      if (!o.columns.given) {
+        const std::vector<double> za = floor_elevations(a, ground_a);
+        const std::vector<double> zb = floor_elevations(o, ground_o);
+        for (std::size_t f = 0; f < za.size(); ++f) {
+          if (za[f] > zb.back() + kLevelTolerance2D) continue;
+          double dz = 1e300, nearest = 0;
+          for (double z : zb)
+            if (std::abs(z - za[f]) < dz) dz = std::abs(z - za[f]), nearest = z;
+          if (dz <= kLevelTolerance2D) continue;
+          problems.error_at(at, "",
+                            "floor " + std::to_string(f + 1) + " of '" + a.name + "' at " +
+                                metres(za[f]) + " has no floor of '" + o.name +
+                                "' at its level (nearest " + metres(nearest) +
+                                "): it would pound that building's columns; describe them with "
+                                "columns: {count, E, I, M_y} (docs/floor-to-column.md)");
+        }
+        continue;
+      }
       const std::vector<double>& za = pass == 0 ? z_main : z_other;
-      const std::vector<double>& zb = pass == 0 ? z_other : z_main;
-      const std::string& na = pass == 0 ? b.name : nb.name;
-      const std::string& nbn = pass == 0 ? nb.name : b.name;
+      const std::vector<double>& zo = pass == 0 ? z_other : z_main;
+      std::vector<int> struck;
       for (std::size_t f = 0; f < za.size(); ++f) {
-        if (za[f] > zb.back() + kLevelTolerance2D) continue;
-        double dz = 1e300, nearest = 0;
-        for (double z : zb)
-          if (std::abs(z - za[f]) < dz) dz = std::abs(z - za[f]), nearest = z;
-        if (dz <= kLevelTolerance2D) continue;
-        problems.error_at(neighbours[k], "",
-                          "floor " + std::to_string(f + 1) + " of '" + na + "' at " +
-                              metres(za[f]) + " has no floor of '" + nbn +
-                              "' at its level (nearest " + metres(nearest) +
-                              "): it would pound that building's columns, which the model does "
-                              "not represent (floors of pounding pairs must be at equal levels)");
+        const FacedPart part = faced_part(o, zo, ground_o, za[f]);
+        const std::string what =
+            "level " + std::to_string(f) + " of '" + a.name + "' at " + metres(za[f]) + " ";
+        using Kind = FacedPart::Kind;
+        if (part.kind == Kind::kBelowGround) {
+          problems.error_at(at, "ground_level",
+                            what + "faces '" + o.name + "' below its ground (" + metres(ground_o) +
+                                "): its foundation is outside the model");
+        } else if (part.kind == Kind::kIsolationGap) {
+          problems.error_at(at, "",
+                            what + "faces the isolators of '" + o.name +
+                                "': slab-to-isolator contact is outside the model");
+        } else if (part.kind == Kind::kStorey) {
+          if (o.floors[static_cast<std::size_t>(part.floor) - 1].hysteresis.model !=
+              StoryHysteresisConfig::Model::kElastic)
+            problems.error_at(at, "",
+                              what + "strikes yielding storey " + std::to_string(part.floor) +
+                                  " of '" + o.name +
+                                  "': struck columns are modelled in elastic storeys only");
+          if (std::find(struck.begin(), struck.end(), part.floor) != struck.end())
+            problems.error_at(at, "",
+                              what + "strikes storey " + std::to_string(part.floor) + " of '" +
+                                  o.name +
+                                  "', which another level strikes already: one struck point per "
+                                  "storey");
+          struck.push_back(part.floor);
+        }
       }
     }
   }

@@ -100,6 +100,21 @@ struct WallConfig {
   BumperConfig bumper;
 };
 
+// The facing column line of a 2D building (`columns:`), struck between its floors by another
+// structure's slab (solver/elements/struck_column.h, docs/floor-to-column.md): `count` equal
+// columns, each an Euler-Bernoulli beam fixed in rotation by the slabs, with plastic hinges of
+// moment M_y at both ends and at the struck point. Their share count x 12 E I / L^3 of a struck
+// storey's stiffness moves from the storey spring into the column element.
+struct StruckColumnsConfig {
+  bool given = false;  // false: a slab between this building's floors is refused
+  int count = 1;
+  double E = 0.0, I = 0.0;        // Pa, m^4
+  double yield_moment = 0.0;      // M_y, N m (> 0)
+  double hardening_ratio = 0.01;  // hinge hardening H = ratio x 6 E I / L
+  bool shear_check = false;       // report |V| against V_n
+  double shear_capacity = 0.0;    // V_n, N (shear_check only)
+};
+
 // A 2D shear building: optional base slab on isolators, floors bottom to top. The isolators
 // stand on the ground (isolation_level 0) or on floor k = isolation_level of a fixed-base
 // substructure (floors 1..k); floors k+1..n are the isolated superstructure, floor k+1's
@@ -123,6 +138,7 @@ struct BuildingConfig {
   // An elastic storey whose peak drift ratio exceeds this is reported as outside the elastic
   // model's range (a console warning and a flag in summary.json).
   double elastic_limit_drift_ratio = 0.01;
+  StruckColumnsConfig columns;  // its facing column line, when another slab may strike it
 };
 
 // A neighbouring building at a gap; floors at equal elevation pound slab to slab.
@@ -135,6 +151,9 @@ struct NeighbourConfig {
   // levels meet the rubber at gap - thickness, the concrete law acts once it bottoms out.
   BumperConfig bumper;
   bool pounding = true;  // false: no contact elements (the unobstructed comparison)
+  // m, the neighbour's ground above the main building's (its levels are raised by this): a
+  // level facing a storey of the other between its floors strikes its columns.
+  double ground_level = 0.0;
 };
 
 struct GroundMotionConfig {
