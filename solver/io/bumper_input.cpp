@@ -9,6 +9,8 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "geometry/overlap.h"
 #include "solver/structures/building3d.h"
@@ -108,6 +110,11 @@ void read_sides(const InputNode& sides, const std::function<int(const InputNode&
   }
 }
 
+// The keys of a 3D bumper, on a wall or on a slab face.
+const std::vector<std::string_view> kStripKeys = {
+    "sides",      "thickness", "law",        "E",    "height", "e",
+    "max_strain", "mu_static", "mu_kinetic", "from", "to"};
+
 constexpr const std::array<const char*, 4>& kSideNames = MoatWalls3DConfig::kSideNames;
 
 }  // namespace
@@ -116,8 +123,7 @@ constexpr const std::array<const char*, 4>& kSideNames = MoatWalls3DConfig::kSid
 // under walls (issue 27; docs/impact-laws.md). from/to against the face: check_bumper_span.
 Bumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& walls,
                              const std::function<int(const InputNode&)>& side_of) {
-  node.expect_keys({"sides", "thickness", "law", "E", "height", "e", "max_strain", "mu_static",
-                    "mu_kinetic", "from", "to"});
+  node.expect_keys(kStripKeys);
   Bumper3DConfig b;
   if (const auto sides = node.find("sides")) {
     read_sides(
@@ -147,8 +153,7 @@ Bumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& wal
 // the face towards adjacent.to). Every slab needs a straight edge on each side, over [from, to].
 Bumper3DConfig read_slab_bumper3d(const InputNode& node, const Building3DConfig& building,
                                   const std::function<int(const InputNode&)>& side_of) {
-  node.expect_keys({"sides", "thickness", "law", "E", "height", "e", "max_strain", "mu_static",
-                    "mu_kinetic", "from", "to"});
+  node.expect_keys(kStripKeys);
   Bumper3DConfig b;
   if (const auto sides = node.find("sides")) {
     read_sides(
