@@ -37,7 +37,8 @@ enum class Block {
   kWall = 3,
   kContact = 4,
   kNormalForce = 5,
-  kTangentialForce = 6
+  kTangentialForce = 6,
+  kRubber = 7  // a bumper's rubber strips (3D)
 };
 
 struct FrameMesh {

@@ -90,6 +90,9 @@ std::vector<BodyState> body_states(const RunData& run, double t) {
       b = {at(l.u),       at(l.u_y),         at(l.theta),        at(l.a_abs),
            at(l.a_abs_y), at(l.a_abs_theta), static_cast<int>(s)};
     }
+  // Rubber strips move with the wall or slab they are glued to (listed after it).
+  for (std::size_t i = 0; i < run.site.bodies.size(); ++i)
+    if (const int owner = run.site.bodies[i].follows; owner >= 0) states[i] = states[owner];
   return states;
 }
 
@@ -112,12 +115,13 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
   for (std::size_t i = 0; i < run.site.bodies.size(); ++i) {
     const PlanBody& body = run.site.bodies[i];
     const BodyState& st = states[i];
-    const bool wall = body.role == "wall";
+    const bool wall = body.role == "wall", rubber = body.role == "rubber";
     // A slab hangs below its level; a wall's top is flush with the ground, the base slab's level
-    // (the moat wall retains the soil around the isolation level): [-height, 0].
-    const double z1 = body.elevation, z0 = z1 - (wall ? body.height : H);
+    // (the moat wall retains the soil around the isolation level): [-height, 0]; a rubber strip
+    // hangs its rubber height below the level of what it is glued to.
+    const double z1 = body.elevation, z0 = z1 - (wall || rubber ? body.height : H);
     CellValues v;
-    v.block = wall ? Block::kWall : Block::kSlab;
+    v.block = wall ? Block::kWall : rubber ? Block::kRubber : Block::kSlab;
     v.structure = st.structure;
     std::vector<int> bottom, top;
     for (Vec2 p : body.plan_W) bottom.push_back(point_of(st, p, z0));

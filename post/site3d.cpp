@@ -7,8 +7,10 @@
 #include <cmath>
 #include <span>
 #include <stdexcept>
+#include <utility>
 
 #include "solver/structures/building3d.h"
+#include "solver/structures/bumper_layer3d.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/levels3d.h"
 #include "solver/structures/pounding3d.h"
@@ -22,6 +24,28 @@ std::vector<Vec2> outline_in_plan(const Building3DConfig& b, const std::vector<V
   // Validated and counter-clockwise.
   const ConvexPolygon polygon{std::span<const Vec2>(w.data(), w.size())};
   return {polygon.vertices().begin(), polygon.vertices().end()};
+}
+
+// The two strips of a bumper (rubber, bottomed rubber) glued to body `owner`, keyed as the
+// solver labels their contacts: "<face> bumper", "<face> bumper bottomed".
+void add_strips(Site3D& site, int owner, const std::string& face, const Building3DConfig& b,
+                const Bumper3DConfig& bumper, const BumperStrips& strips) {
+  const PlanBody& glued_to = site.bodies.at(static_cast<std::size_t>(owner));
+  const double elevation = glued_to.elevation;
+  for (const auto& [outline, name] :
+       {std::pair{&strips.rubber, std::string(" ") + kBumperLabel},
+        std::pair{&strips.bottomed, std::string(" ") + kBottomedLabel}}) {
+    PlanBody r;
+    r.structure = face + name;
+    r.level = "rubber";
+    r.role = "rubber";
+    r.elevation = elevation;
+    r.height = bumper.height;
+    r.plan_W = outline_in_plan(b, *outline);
+    r.p_WCM = area_properties(r.polygon()).p_WC;
+    r.follows = owner;  // moves with it (no DOFs of its own: dof_label stays empty)
+    site.bodies.push_back(std::move(r));
+  }
 }
 
 Vec2 rotate(double angle, Vec2 v) {
@@ -92,6 +116,7 @@ Site3D site_geometry(const ModelConfig& config) {
                                     "' of the solver's site differs from the drawn one");
       continue;
     }
+    const int wall_body = static_cast<int>(site.bodies.size());
     PlanBody w;
     w.structure = b.structure;
     w.level = b.level;
@@ -101,6 +126,22 @@ Site3D site_geometry(const ModelConfig& config) {
     w.plan_W.assign(b.plan_W.vertices().begin(), b.plan_W.vertices().end());
     w.p_WCM = area_properties(b.plan_W).p_WC;
     site.bodies.push_back(std::move(w));
+    const Building3DConfig& building = config.structures3d.at(static_cast<std::size_t>(b.building));
+    const Bumper3DConfig& bumper = building.walls.bumper;
+    if (bumper.on[b.wall_side] && bumper.thickness > 0)
+      add_strips(site, wall_body, b.label(), building, bumper,
+                 bumper_strips(moat_wall_outline(building, b.wall_side), b.wall_side, bumper));
+  }
+  // Rubber on slab faces: on every slab of the building, on each bumpered side.
+  for (const Building3DConfig& b : config.structures3d) {
+    if (!b.bumper.any() || !(b.bumper.thickness > 0)) continue;
+    for (const Level3D& level : levels3d(b)) {
+      const std::string label = b.name + "/" + level.name;
+      for (int side = 0; side < 4; ++side)
+        if (b.bumper.on[side])
+          add_strips(site, site.find(label), slab_face_label(label, side), b, b.bumper,
+                     slab_bumper_strips(level.diaphragm->plan, side, b.bumper));
+    }
   }
   return site;
 }

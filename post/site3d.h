@@ -11,18 +11,22 @@
 
 namespace isopound::post {
 
-// A slab (floor or base) or a wall at rest.
+// A slab (floor or base), a wall, or a rubber bumper's strip at rest.
 struct PlanBody {
-  std::string structure;     // "building", "east-neighbour", "wall east"
-  std::string level;         // "base", "floor 1", ..., "wall"
-  std::string role;          // "slab" | "wall"
-  double elevation = 0.0;    // m: a slab's level (levels3d.h); a wall's top (its level's)
-  double height = 0.0;       // m: a wall's height; a slab 0
+  std::string structure;     // "building", "east-neighbour", "wall east"; a strip: its key
+  std::string level;         // "base", "floor 1", ..., "wall", "rubber"
+  std::string role;          // "slab" | "wall" | "rubber"
+  double elevation = 0.0;    // m: a slab's level (levels3d.h); a wall's or strip's top
+  double height = 0.0;       // m: a wall's height, a strip's rubber height; a slab 0
   std::vector<Vec2> plan_W;  // outline, counter-clockwise (validated as a ConvexPolygon)
-  Vec2 p_WCM;                // centre of mass at rest (slabs; walls: centroid)
+  Vec2 p_WCM;                // centre of mass at rest (slabs; walls and strips: centroid)
   std::string dof_label;     // history label of its DOFs ("building/floor 1"), "" when fixed
-  // The name contact labels use: "<structure>/<level>" for slabs, "<structure>" for walls.
-  std::string key() const { return role == "wall" ? structure : structure + "/" + level; }
+  // A rubber strip (issue 27, bumper_layer3d.h): the body it is glued to, whose motion it
+  // shares; -1 for slabs and walls.
+  int follows = -1;
+  // The name contact labels use: "<structure>/<level>" for slabs, "<structure>" for walls and
+  // strips ("wall east bumper", "east-neighbour/floor 1 west bumper bottomed").
+  std::string key() const { return role == "slab" ? structure + "/" + level : structure; }
   ConvexPolygon polygon() const { return ConvexPolygon(plan_W); }
 };
 
@@ -44,15 +48,17 @@ struct PlanBearing {
 };
 
 struct Site3D {
-  std::vector<PlanBody> bodies;  // slabs of every structure (bottom to top), then walls
+  // Slabs of every structure (bottom to top), then walls, then rubber strips.
+  std::vector<PlanBody> bodies;
   std::vector<PlanColumn> columns;
   std::vector<PlanBearing> bearings;
   int find(const std::string& key) const;  // body index by key(), -1 when absent
 };
 
-// Slabs, columns and bearings of every 3D structure of the model, and its moat walls (from the
-// solver's site_bodies(), whose slabs are checked against these). Throws std::invalid_argument for
-// a non-convex plan (the solver would not have run).
+// Slabs, columns and bearings of every 3D structure of the model, its moat walls (from the
+// solver's site_bodies(), whose slabs are checked against these) and the rubber strips of
+// bumpered walls and slab faces, named as the solver's contact labels name them (pounding3d.h).
+// Throws std::invalid_argument for a non-convex plan (the solver would not have run).
 Site3D site_geometry(const ModelConfig& config);
 
 }  // namespace isopound::post

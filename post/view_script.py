@@ -25,6 +25,7 @@ FORCE_LENGTH = @FORCE_LENGTH@  # m, drawn length of the peak force arrow
 BLOCKS = ["slab", "column", "bearing", "wall"]
 BLOCK_RGB = [[0.12, 0.47, 0.71], [0.25, 0.25, 0.25], [0.17, 0.63, 0.17], [0.72, 0.72, 0.70]]  # wall: concrete
 ARROW_RGB = [0.9, 0.0, 0.78]
+RUBBER_RGB = [0.95, 0.55, 0.05]
 
 
 def animation_file():
@@ -74,6 +75,13 @@ def build(view):
     block_lut.IndexedColors = sum(BLOCK_RGB, [])
     body_display.SetScalarBarVisibility(view, False)
     walls_display.SetScalarBarVisibility(view, False)
+
+    # Rubber bumpers (3D): the strips glued to walls and slab faces, in the rubber's colour.
+    rubber = threshold(warp, "rubber", 7, 7)
+    rubber_display = Show(rubber, view)
+    rubber_display.ColorArrayName = ['CELLS', '']
+    rubber_display.AmbientColor = RUBBER_RGB
+    rubber_display.DiffuseColor = RUBBER_RGB
 
     contact = threshold(warp, "contacts", 4, 4)
     contact_kn = Calculator(registrationName="normal force in kN", Input=contact)

@@ -1,7 +1,9 @@
-// Rubber bumpers on 3D moat walls (issue 27; docs/impact-laws.md, "Bumpers on moat walls (3D)"):
-// the rubber strip's law against closed forms, a free impact's dissipation against e, zero
-// thickness = the bare wall, from/to, passivity per contact episode with bottoming, bad input,
-// and (records) XY-5 with 10 cm bumpers at defaults against a converged fixed step.
+// Rubber bumpers in 3D (issue 27; docs/impact-laws.md, the two "(3D)" bumper sections): on moat
+// walls, the rubber strip's law against closed forms, a free impact's dissipation against e, zero
+// thickness = the bare wall, from/to, passivity per contact episode with bottoming, bad input, and
+// (records) XY-5 with 10 cm bumpers at defaults against a converged fixed step; on a neighbour's
+// face, the strips' geometry, zero thickness = the bare neighbour, the same rubber on either face
+// head-on, passivity with bottoming, bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,8 +31,8 @@ namespace {
 
 constexpr double kSlabMass = 340e3, kSide = 10.0, kNormal = 2.58e10;
 
-MoatBumper3DConfig rubber(double thickness, const std::string& law = "linear", double e = 0.8) {
-  MoatBumper3DConfig b;
+Bumper3DConfig rubber(double thickness, const std::string& law = "linear", double e = 0.8) {
+  Bumper3DConfig b;
   b.on = {true, true, true, true};
   b.thickness = thickness;
   b.law = law;
@@ -48,7 +50,7 @@ PolygonBody slab() {
 
 // The rubber strip of `b` whose front face is at x = face (looking towards −x), 20 m long,
 // fixed (an immovable wall: m_eff = the slab's mass).
-PolygonBody strip_at(double face, const MoatBumper3DConfig& b) {
+PolygonBody strip_at(double face, const Bumper3DConfig& b) {
   const double s = b.max_strain * b.thickness;
   return {-1,
           -1,
@@ -58,7 +60,7 @@ PolygonBody strip_at(double face, const MoatBumper3DConfig& b) {
           std::numeric_limits<double>::infinity()};
 }
 
-PolygonContactConfig rubber_contact(const MoatBumper3DConfig& b) {
+PolygonContactConfig rubber_contact(const Bumper3DConfig& b) {
   PolygonContactConfig cfg;
   cfg.friction = false;
   cfg.length_law = bumper_rubber_law(b, kNormal);
@@ -67,7 +69,7 @@ PolygonContactConfig rubber_contact(const MoatBumper3DConfig& b) {
 
 // F_N of a face-on state: the slab δ past the strip's face, approaching at `rate` (the onset's
 // v_imp is that rate too, the state being the contact's first).
-double face_on_force(const MoatBumper3DConfig& b, double delta, double rate) {
+double face_on_force(const Bumper3DConfig& b, double delta, double rate) {
   PolygonContact c("c", slab(), strip_at(0.5 * kSide + 0.01, b), rubber_contact(b));
   c.begin_step(1e-4, false);
   c.set_trial(Eigen::Vector2d(0.01 + delta, 0), Eigen::Vector2d(rate, 0));
@@ -80,7 +82,7 @@ TEST(Bumper3DRubber, FaceOnForceIsTheClosedForm) {
   const double delta = 0.02, rate = 0.3;
   for (const char* law : {"linear", "hertz"}) {
     SCOPED_TRACE(law);
-    const MoatBumper3DConfig b = rubber(0.1, law);
+    const Bumper3DConfig b = rubber(0.1, law);
     const double expected_static =
         std::string(law) == "linear"
             ? b.modulus * b.height / b.thickness * kSide * delta
@@ -102,7 +104,7 @@ TEST(Bumper3DRubber, SoftThickRubberFreeImpactMatchesTheLinearLaw) {
   const double v0 = 1.0;
   for (const double e : {1.0, 0.8}) {
     SCOPED_TRACE("e = " + std::to_string(e));
-    MoatBumper3DConfig b = rubber(1.0, "linear", e);  // k L = 50 MN/m: 8 cm at 1 m/s, s = 60 cm
+    Bumper3DConfig b = rubber(1.0, "linear", e);  // k L = 50 MN/m: 8 cm at 1 m/s, s = 60 cm
     Model m;
     m.dofs = {{"slab (x)", 0, 0}, {"slab (y)", 0, 0}};
     m.mass = kSlabMass * Eigen::MatrixXd::Identity(2, 2);
@@ -312,6 +314,174 @@ TEST(Bumper3DConvergence, XY5With10cmBumpersDefaultsWithin1PercentOfFixedStep) {
   }
   EXPECT_GT(compared, 100);
   EXPECT_LE(worst.worst, 1e-2) << worst.where;
+}
+
+// --- Rubber on a neighbour's facing side (Building3DConfig::bumper) ---
+
+// The thesis building (no walls) and a fixed-base 2-storey neighbour 4 cm east of it, the same
+// grid; `building_extra` / `neighbour_extra` are keys added to each (indented 4).
+std::string with_neighbour(const std::string& neighbour_extra,
+                           const std::string& building_extra = "") {
+  return R"(structures:
+  - name: building
+    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
+    plan: {rectangle: [16.95 m, 16.95 m]}
+    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
+    storeys: {count: 3, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
+    base: {mass: 340 t}
+    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
+    damping: {type: none}
+)" + building_extra +
+         R"(  - name: neighbour
+    isolated: false
+    adjacent: {to: building, side: east, gap: 4 cm}
+    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
+    plan: {rectangle: [16.85 m, 16.85 m]}
+    columns: {section: [35 cm, 35 cm], E: 30 GPa, nu: 0.2}
+    storeys: {count: 2, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
+    damping: {type: none}
+)" + neighbour_extra;
+}
+
+const std::string kRubber = "{thickness: 2 cm, E: 5 MPa, height: 30 cm, e: 0.7";
+
+// The strips of a slab face: a 10 x 6 m rectangle's east face gets the rubber outermost
+// (x in [5 + t - s, 5 + t]) and the bottomed rubber against the face, over [from, to] from the
+// face's lower end; a hexagon with a corner on its east side has no face there.
+TEST(Bumper3DNeighbour, SlabFaceStripsLieOutsideTheFace) {
+  Bumper3DConfig b = rubber(0.1);
+  b.from = 1.0, b.to = 4.0;
+  const std::vector<Vec2> plan = {{-5, -3}, {5, -3}, {5, 3}, {-5, 3}};
+  const BumperStrips east = slab_bumper_strips(plan, 0, b);
+  const auto box = [](const std::vector<Vec2>& p) {
+    Vec2 lo = p[0], hi = p[0];
+    for (const Vec2& q : p)
+      lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)},
+      hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+    return std::array<double, 4>{lo.x, hi.x, lo.y, hi.y};
+  };
+  const auto expect_box = [&](const std::vector<Vec2>& p, std::array<double, 4> want) {
+    const auto got = box(p);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(got[k], want[k], 1e-12) << k;
+  };
+  expect_box(east.rubber, {5.04, 5.1, -2.0, 1.0});
+  expect_box(east.bottomed, {5.0, 5.04, -2.0, 1.0});
+  b.from = 0.0, b.to = std::numeric_limits<double>::infinity();
+  expect_box(slab_bumper_strips(plan, 1, b).rubber, {-5.1, -5.04, -3.0, 3.0});
+  expect_box(slab_bumper_strips(plan, 2, b).rubber, {-5.0, 5.0, 3.04, 3.1});
+  expect_box(slab_bumper_strips(plan, 3, b).bottomed, {-5.0, 5.0, -3.04, -3.0});
+  const std::vector<Vec2> hexagon = {{-5, -3}, {3, -3}, {5, 0}, {3, 3}, {-5, 3}};
+  EXPECT_THROW(slab_bumper_strips(hexagon, 0, b), std::invalid_argument);
+  b.to = 7.0;  // beyond the 6 m face
+  EXPECT_THROW(slab_bumper_strips(plan, 0, b), std::invalid_argument);
+}
+
+// Zero thickness builds no strip: every peak equals the bare neighbour's (the same model).
+TEST(Bumper3DNeighbour, ZeroThicknessIsTheBareNeighbour) {
+  const Outcome bare = run(load_text(with_neighbour("")));
+  const Outcome zero = run(load_text(
+      with_neighbour("    bumper: {thickness: 0 cm, E: 5 MPa, height: 30 cm, e: 0.7}\n")));
+  EXPECT_EQ(zero.model.elements.size(), bare.model.elements.size());
+  EXPECT_GE(impacts_of(bare.model, "building/floor 1|neighbour/floor 1"), 1);
+  const test::Comparison c = test::compare(level_peaks(zero.result), level_peaks(bare.result));
+  EXPECT_LE(c.worst, 1e-9) << c.where;
+}
+
+// Head-on (the x pulse, no eccentricity: the slabs translate in x only) the rubber strip on the
+// neighbour's west face and the same strip on the building's east face press the same overlap:
+// the model must not care whose DOFs carry it. The rubber takes the impacts, the concrete none.
+TEST(Bumper3DNeighbour, RubberOnEitherFaceIsTheSameHeadOn) {
+  const Outcome on_neighbour = run(load_text(with_neighbour("    bumper: " + kRubber + "}\n")));
+  const Outcome on_building =
+      run(load_text(with_neighbour("", "    bumper: " + kRubber + ", sides: [east]}\n")));
+  const std::string floor1 = "building/floor 1|neighbour/floor 1";
+  EXPECT_GE(impacts_of(on_neighbour.model, floor1 + " west bumper"), 1);
+  EXPECT_GE(impacts_of(on_neighbour.model, floor1 + " west bumper bottomed"), 0);
+  EXPECT_EQ(impacts_of(on_neighbour.model, floor1), 0);
+  EXPECT_EQ(impacts_of(on_building.model, "neighbour/floor 1|building/floor 1 east bumper"),
+            impacts_of(on_neighbour.model, floor1 + " west bumper"));
+  // Along x (y and θ stay at round-off: their peaks are noise).
+  const auto x_peaks = [](const Outcome& o) {
+    std::vector<test::NamedPeak> p;
+    for (std::size_t i = 0; i < o.model.dofs.size(); ++i)
+      if (o.model.dofs[i].label.ends_with("(x)")) {
+        p.push_back({"u " + o.model.dofs[i].label, o.result.displacement[i].value});
+        p.push_back({"a " + o.model.dofs[i].label, o.result.absolute_acceleration[i].value});
+      }
+    return p;
+  };
+  const test::Comparison c = test::compare(x_peaks(on_building), x_peaks(on_neighbour));
+  EXPECT_LE(c.worst, 1e-6) << c.where;
+  // The bare neighbour is hit harder: the rubber softens the first-storey impacts.
+  const Outcome bare = run(load_text(with_neighbour("")));
+  const double a_rubber = x_peaks(on_neighbour)[3].value, a_bare = x_peaks(bare)[3].value;
+  EXPECT_LT(a_rubber, a_bare);
+}
+
+// An eccentric building turned against its neighbour's rubber (2 cm, soft: it bottoms out) under
+// the x pulse: every episode of every contact does net work <= 0, and the energy balance closes.
+TEST(Bumper3DNeighbour, EveryContactEpisodeIsPassiveWithBottoming) {
+  const Outcome r =
+      run(load_text(with_neighbour(
+              "    bumper: {thickness: 2 cm, E: 0.5 MPa, height: 30 cm, e: 0.6, mu_static: 0.9, "
+              "mu_kinetic: 0.7}\n",
+              "    eccentricity: [1.5 m, 1 m]\n")),
+          4.0);
+  int episodes = 0, bottomed = 0, rubber = 0;
+  for (const auto& e : r.model.elements) {
+    const auto* c = dynamic_cast<const PolygonContact*>(e.get());
+    if (!c) continue;
+    SCOPED_TRACE(c->label());
+    episodes += c->episodes();
+    if (c->label().ends_with(kBottomedLabel))
+      bottomed += c->impacts();
+    else if (c->label().ends_with(kBumperLabel))
+      rubber += c->impacts();
+    if (c->episodes() > 0) {
+      EXPECT_LE(c->max_episode_net_work_relative(), kRoundOff);
+    }
+    EXPECT_GE(c->friction_dissipated(), 0.0);
+    EXPECT_GE(c->output(10), 0.0);
+  }
+  EXPECT_GE(rubber, 2);
+  EXPECT_GE(bottomed, 1);
+  EXPECT_GE(episodes, 3);
+  EXPECT_LT(r.result.energy.relative_error, 1e-3);
+}
+
+TEST(Bumper3DNeighbour, BadInputNamesLineAndKey) {
+  struct Bad {
+    std::string building_extra, neighbour_extra, key, what;
+  };
+  const Bad cases[] = {
+      {"", "    bumper: {thickness: 4 cm, E: 5 MPa, height: 30 cm, e: 0.7}\n",
+       "structures[1].bumper.thickness", "thinner than the gap"},
+      {"", "    bumper: {thickness: 6 cm, E: 5 MPa, height: 30 cm, e: 0.7}\n",
+       "structures[1].bumper.thickness", "thinner than the gap"},
+      {"", "    bumper: {thickness: -1 cm, E: 5 MPa, height: 30 cm, e: 0.7}\n",
+       "structures[1].bumper.thickness", ""},
+      {"    bumper: {thickness: 5 cm, E: 5 MPa, height: 30 cm, e: 0.7}\n", "",
+       "structures[0].bumper.sides", "missing required key 'sides'"},
+      {"", "    bumper: {thickness: 5 cm, E: 5 MPa, height: 30 cm, e: 0.7, to: 20 m}\n",
+       "structures[1].bumper.to", "face length"},
+      {"", "    bumper: {sides: [up], thickness: 5 cm, E: 5 MPa, height: 30 cm, e: 0.7}\n",
+       "structures[1].bumper.sides[0]", "up"},
+      {"", "    bumper: {thickness: 5 cm, E: 5 MPa, e: 0.7}\n", "structures[1].bumper.height",
+       "missing"},
+      {"", "    bumper: {thickness: 5 cm, E: 5 MPa, height: 30 cm, e: 0.7, k: 1}\n",
+       "structures[1].bumper.k", ""},
+  };
+  for (const Bad& c : cases) {
+    SCOPED_TRACE(c.building_extra + c.neighbour_extra);
+    try {
+      load_text(with_neighbour(c.neighbour_extra, c.building_extra));
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      EXPECT_GT(e.line(), 0) << e.what();
+      EXPECT_EQ(e.key(), c.key) << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.what), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -362,19 +362,7 @@ TEST(BumperSolver, EveryContactEpisodeIsPassive) {
           ASSERT_GE(force, 0);
           ASSERT_GE(dissipated, 0);
           ASSERT_GE(bottomings, 0);
-          double last_open = 0.0;
-          int episodes = 0;
-          bool was_open = true;
-          for (std::size_t row = 0; row < h.rows(); ++row) {
-            const double* v = &h.values[row * cols];
-            const bool open = v[force] == 0.0;
-            if (open && !was_open) {
-              ++episodes;
-              EXPECT_GE(v[dissipated], last_open - 1e-9 * std::abs(last_open)) << "row " << row;
-              last_open = v[dissipated];
-            }
-            was_open = open;
-          }
+          const int episodes = test::passive_episodes(h, force, dissipated);
           EXPECT_GE(episodes, 2) << side;
           EXPECT_GE(h.values[(h.rows() - 1) * cols + bottomings], 1.0) << side;
         }

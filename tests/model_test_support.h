@@ -54,4 +54,26 @@ inline int history_column(const History& h, const std::string& name) {
   return 0;
 }
 
+// Contact episodes in a history (columns `force` and `dissipated`: a contact is open where its
+// force is 0): each is checked passive, the net work of the contact force on the bodies over it
+// <= 0, i.e. the contact's dissipated energy, read whenever it opens, never decreases. Returns
+// the number of episodes that ended.
+inline int passive_episodes(const History& h, int force, int dissipated) {
+  const std::size_t cols = h.columns.size();
+  double last_open = 0.0;
+  int episodes = 0;
+  bool was_open = true;
+  for (std::size_t row = 0; row < h.rows(); ++row) {
+    const double* v = &h.values[row * cols];
+    const bool open = v[force] == 0.0;
+    if (open && !was_open) {
+      ++episodes;
+      EXPECT_GE(v[dissipated], last_open - 1e-9 * std::abs(last_open)) << "row " << row;
+      last_open = v[dissipated];
+    }
+    was_open = open;
+  }
+  return episodes;
+}
+
 }  // namespace isopound::test

@@ -3,6 +3,7 @@
 // out of the tangent.
 #include "solver/elements/struck_column.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -20,7 +21,8 @@ StruckColumn::StruckColumn(std::string label, const StruckColumnSpec& spec, doub
       ul_(Eigen::VectorXd::Zero(4)),
       vl_(Eigen::VectorXd::Zero(4)),
       fl_(Eigen::VectorXd::Zero(4)),
-      kl_(Eigen::MatrixXd::Zero(4, 4)) {
+      kl_(Eigen::MatrixXd::Zero(4, 4)),
+      kc_(Eigen::MatrixXd::Zero(4, 4)) {
   if (spec.count < 1 || spec.slab < 0 || spec.upper < 0)
     throw std::invalid_argument(label_ + ": a struck column needs count >= 1, a slab and a floor");
   state_ = column_.respond(ColumnDisplacements::Zero(), plastic_commit_);
@@ -49,35 +51,53 @@ void StruckColumn::gather(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
 
 double StruckColumn::node_residual(double& slope) {
   ul_(3) = u_node_;
-  vl_(3) = v_node_;
   state_ = column_.respond(ColumnDisplacements(ul_(1), ul_(3), ul_(2)), plastic_commit_);
+  // No dashpot on the node: it follows the floors quasi-statically, v = du/d(floors) v_floors
+  // (exact, as accurate as the floors' velocities). Behind a dashpot: backward Euler,
+  // v = (u - u_0) / h (L-stable: Newmark's trapezoidal rule would leave a massless node
+  // ringing behind it), or, in a restart or a step too short to resolve it, as set by the caller.
+  const Eigen::Matrix3d& t = state_.tangent;
+  if (!damped_commit_ && !hold_velocity_)
+    v_node_ = t(1, 1) > 0 ? -(t(1, 0) * vl_(1) + t(1, 2) * vl_(2)) / t(1, 1) : 0.0;
+  else if (by_difference())
+    v_node_ = (u_node_ - u_node_commit_) / h_;
+  vl_(3) = v_node_;
   contact_.set_trial(ul_, vl_);
   fl_.setZero();
   contact_.add_force(fl_);
   kl_.setZero();
-  contact_.add_tangent(kl_, h_ > 0 ? 2.0 / h_ : 0.0);
-  slope = count_ * state_.tangent(1, 1) + kl_(3, 3);
+  contact_.add_tangent(kl_, 0.0);
+  kc_.setZero();
+  contact_.add_tangent(kc_, 1.0);
+  kc_ -= kl_;
+  slope = count_ * t(1, 1) + kl_(3, 3) + (by_difference() ? kc_(3, 3) / h_ : 0.0);
   return count_ * state_.force(1) + fl_(3);
 }
 
 void StruckColumn::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
   gather(u, v);
   double slope = 0.0;
-  if (!(h_ > 0)) {
-    // A restart (zero-length step): the node cannot move in no time against the contact's
-    // dashpot; it keeps its committed state.
-    u_node_ = u_node_commit_;
+  if (!(h_ > kShortestDifference)) {
+    // A restart (h = 0) or a step too short for a difference (cut at an event): the node
+    // keeps its place and, massless behind a dashpot, takes at once the velocity of its
+    // equilibrium (so a contact beginning behind a dashpot starts without a force jump).
+    u_node_ = u_node_commit_ + (h_ > 0 ? h_ * v_node_commit_ : 0.0);
     v_node_ = v_node_commit_;
-    node_residual(slope);
+    double g = node_residual(slope);
+    hold_velocity_ = true;
+    for (int it = 0; it < 20 && kc_(3, 3) > 0; ++it) {
+      if (std::abs(g) <= 1e-12 * (std::abs(fl_(3)) + 1.0)) break;
+      v_node_ -= g / kc_(3, 3);
+      g = node_residual(slope);
+    }
+    hold_velocity_ = false;
     return;
   }
   // Predictor: the node moves with the elastic shape of the column between its floors.
   const double psi = column_.shape_at_node();
-  const double u0 = u_node_commit_;
   double lo = -1e300, hi = 1e300;
   u_node_ = offset_commit_ + (1.0 - psi) * ul_(1) + psi * ul_(2);
   for (int it = 0; it < 100; ++it) {
-    v_node_ = 2.0 / h_ * (u_node_ - u0) - v_node_commit_;
     const double g = node_residual(slope);
     if (g > 0) hi = std::min(hi, u_node_);
     if (g < 0) lo = std::max(lo, u_node_);
@@ -85,8 +105,7 @@ void StruckColumn::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v)
     double next = slope > 0 ? u_node_ - g / slope : u_node_;
     // Outside the bracket (a kink between): bisect once both sides are known.
     if (!(next > lo && next < hi) && lo > -1e300 && hi < 1e300) next = 0.5 * (lo + hi);
-    const double step = std::abs(next - u_node_);
-    if (step <= 1e-15 * (1.0 + std::abs(u_node_)) || next == u_node_) return;
+    if (std::abs(next - u_node_) <= 1e-15 * (1.0 + std::abs(u_node_)) || next == u_node_) return;
     u_node_ = next;
   }
 }
@@ -98,8 +117,15 @@ void StruckColumn::add_force(Eigen::VectorXd& f) const {
 }
 
 void StruckColumn::condensed_tangent(double velocity_factor) const {
+  // The contact's stiffness and damping apart: the slab's rate follows the stepper's factor,
+  // the node's its own backward difference (1/h), or none when it is not a difference.
   kl_.setZero();
-  contact_.add_tangent(kl_, velocity_factor);
+  contact_.add_tangent(kl_, 0.0);
+  kc_.setZero();
+  contact_.add_tangent(kc_, 1.0);
+  kc_ -= kl_;
+  const double node_factor = by_difference() && velocity_factor > 0 ? 1.0 / h_ : 0.0;
+  for (int j = 0; j < 4; ++j) kl_.col(j) += kc_.col(j) * (j == 3 ? node_factor : velocity_factor);
   // The column on (lower, node, upper) = local (1, 3, 2).
   const int map[3] = {1, 3, 2};
   for (int i = 0; i < 3; ++i)
@@ -108,6 +134,19 @@ void StruckColumn::condensed_tangent(double velocity_factor) const {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       k3_(i, j) = kl_(i, j) - (knn > 0 ? kl_(i, 3) * kl_(3, j) / knn : 0.0);
+}
+
+double StruckColumn::step_limit() const {
+  const double limit = contact_.step_limit();
+  if (!damped_commit_) return limit;
+  kl_.setZero();
+  contact_.add_tangent(kl_, 0.0);
+  kc_.setZero();
+  contact_.add_tangent(kc_, 1.0);
+  const double c = kc_(3, 3) - kl_(3, 3), k = kl_(3, 3) + count_ * state_.tangent(1, 1);
+  // A relaxation far shorter than the contact's own steps (a node next to a floor, as good as
+  // rigid) needs no resolving: BE is L-stable and the node quasi-static then.
+  return c > 0 && k > 0 ? std::min(limit, std::max(kRelaxationSteps * c / k, 0.01 * limit)) : limit;
 }
 
 void StruckColumn::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
@@ -147,6 +186,11 @@ void StruckColumn::commit() {
   plastic_commit_ = state_.plastic;
   u_node_commit_ = u_node_;
   v_node_commit_ = v_node_;
+  kl_.setZero();
+  contact_.add_tangent(kl_, 0.0);
+  kc_.setZero();
+  contact_.add_tangent(kc_, 1.0);
+  damped_commit_ = kc_(3, 3) > kl_(3, 3);
   const double psi = column_.shape_at_node();
   offset_commit_ = u_node_ - ((1.0 - psi) * ul_(1) + psi * ul_(2));
   if (spec_.shear_capacity > 0 && shear() >= spec_.shear_capacity) shear_failed_ = true;

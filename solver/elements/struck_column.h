@@ -1,7 +1,8 @@
 // A slab striking a column line of another structure between its floors (2D): `count` identical
 // HingedColumns in parallel between the floors, whose struck node is massless and condensed at
-// every trial, f_col,node(u_node) + f_contact,node(u_node, v_node) = 0 (the node's velocity by
-// Newmark's rule v = 2/h (u - u_0) - v_0), and the slab's contact with the node a Contact1D on
+// every trial, f_col,node(u_node) + f_contact,node(u_node, v_node) = 0 (v_node: with no dashpot
+// on it, the floors' velocities through the column's tangent; behind a contact's dashpot the
+// backward difference (u - u_0) / h), and the slab's contact with the node a Contact1D on
 // the pair (slab, node): delta = s (u_slab - u_node) - gap, F >= 0 pushes them apart.
 #pragma once
 
@@ -43,7 +44,9 @@ class StruckColumn final : public Element {
   void begin_step(double h, bool freeze_status) override;
   double event_fraction() override { return contact_.event_fraction(); }
   bool settle_event() override { return contact_.settle_event(); }
-  double step_limit() const override { return contact_.step_limit(); }
+  // The contact's limit and, behind a dashpot, the node's relaxation time c / (k_contact +
+  // k_node): the backward difference is first order in h over it.
+  double step_limit() const override;
 
   // The contact's outputs (force, penetration, impacts, ...) first, then per column: shear
   // (the larger of the two segments), shear_failed (0/1, latched once |V| >= V_n), the hinge
@@ -84,12 +87,19 @@ class StruckColumn final : public Element {
   double h_ = 0.0;
   double u_node_ = 0.0, v_node_ = 0.0, u_node_commit_ = 0.0, v_node_commit_ = 0.0;
   double offset_commit_ = 0.0;  // committed node minus the elastic shape between its floors, m
+  bool damped_commit_ = false;  // the committed contact acts on the node through a dashpot
+  bool hold_velocity_ = false;  // node_residual keeps v_node_ (the restart's velocity solve)
+  // Steps shorter than this (s, cut at events) take the node's committed velocity: a difference
+  // over them is round-off.
+  static constexpr double kShortestDifference = 1e-9;
+  static constexpr double kRelaxationSteps = 1.0;  // largest step / relaxation time
+  bool by_difference() const { return damped_commit_ && h_ > kShortestDifference; }
   HingeRotations plastic_commit_ = HingeRotations::Zero();
   ColumnState state_;
   bool shear_failed_ = false, shear_failed_commit_ = false;
   double hinge_energy_ = 0.0;
   Eigen::VectorXd ul_, vl_, fl_;
-  mutable Eigen::MatrixXd kl_;
+  mutable Eigen::MatrixXd kl_, kc_;
   mutable Eigen::Matrix3d k3_;
 };
 

@@ -3,10 +3,19 @@
 // max_strain; each checks its thickness against the gaps it faces.
 #include "solver/io/bumper_input.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <span>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "geometry/overlap.h"
+#include "solver/structures/building3d.h"
+#include "solver/structures/bumper_layer3d.h"
+#include "solver/structures/levels3d.h"
 #include "solver/structures/pounding3d.h"
 
 namespace isopound {
@@ -68,37 +77,12 @@ BumperConfig read_bumper(const InputNode& node, double gap) {
   return b;
 }
 
-// bumper: {sides, thickness, law, E, height, e, max_strain, mu_static, mu_kinetic, from, to}
-// under walls (issue 27; docs/impact-laws.md). from/to against the face: check_bumper_span.
-MoatBumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& walls,
-                                 const std::function<int(const InputNode&)>& side_of) {
-  using W = MoatWalls3DConfig;
-  node.expect_keys({"sides", "thickness", "law", "E", "height", "e", "max_strain", "mu_static",
-                    "mu_kinetic", "from", "to"});
-  MoatBumper3DConfig b;
-  if (const auto sides = node.find("sides")) {
-    if (!sides->is_sequence() || sides->elements().empty())
-      sides->fail("expected a list of walls, e.g. [east, west]");
-    for (const InputNode& s : sides->elements()) {
-      const int k = side_of(s);
-      if (!walls.present[k]) s.fail(std::string("there is no ") + W::kSideNames[k] + " wall");
-      if (b.on[k]) s.fail("side listed twice");
-      b.on[k] = true;
-    }
-  } else {
-    node.note_default("sides", "every wall");
-    b.on = walls.present;
-  }
-  const InputNode thickness = node.required("thickness");
-  b.thickness = thickness.quantity(dim::kLength, Bound::kNonNegative);
-  for (int k = 0; k < 4; ++k)
-    if (b.on[k] && b.thickness > 0 && b.thickness >= walls.gap[k]) {
-      char what[160];
-      std::snprintf(what, sizeof what,
-                    "the bumper (%g cm) must be thinner than the %s wall's gap (%g cm)",
-                    100 * b.thickness, W::kSideNames[k], 100 * walls.gap[k]);
-      thickness.fail(what);
-    }
+namespace {
+
+// The rubber of a 3D strip: {thickness, law, E, height, e, max_strain, mu_static, mu_kinetic,
+// from, to}; `sides` is read by the caller.
+void read_strip_rubber(const InputNode& node, Bumper3DConfig& b) {
+  b.thickness = node.required("thickness").quantity(dim::kLength, Bound::kNonNegative);
   node.read_choice<std::string>("law", {{"linear", "linear"}, {"hertz", "hertz"}}, b.law);
   b.modulus = node.required("E").quantity(dim::kPressure, Bound::kPositive);
   b.height = node.required("height").quantity(dim::kLength, Bound::kPositive);
@@ -111,13 +95,132 @@ MoatBumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig&
     b.to = to->quantity(dim::kLength, Bound::kPositive);
     if (!(b.from < b.to)) to->fail("'to' must be beyond 'from'");
   }
+}
+
+// `sides: [east, ...]`, each at most once, each one that `allowed` accepts (else its message).
+void read_sides(const InputNode& sides, const std::function<int(const InputNode&)>& side_of,
+                const std::function<std::string(int)>& refused, Bumper3DConfig& b) {
+  if (!sides.is_sequence() || sides.elements().empty())
+    sides.fail("expected a list of sides, e.g. [east, west]");
+  for (const InputNode& s : sides.elements()) {
+    const int k = side_of(s);
+    if (const std::string why = refused(k); !why.empty()) s.fail(why);
+    if (b.on[k]) s.fail("side listed twice");
+    b.on[k] = true;
+  }
+}
+
+// The keys of a 3D bumper, on a wall or on a slab face.
+const std::vector<std::string_view> kStripKeys = {
+    "sides",      "thickness", "law",        "E",    "height", "e",
+    "max_strain", "mu_static", "mu_kinetic", "from", "to"};
+
+constexpr const std::array<const char*, 4>& kSideNames = MoatWalls3DConfig::kSideNames;
+
+}  // namespace
+
+// bumper: {sides, thickness, law, E, height, e, max_strain, mu_static, mu_kinetic, from, to}
+// under walls (issue 27; docs/impact-laws.md). from/to against the face: check_bumper_span.
+Bumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& walls,
+                             const std::function<int(const InputNode&)>& side_of) {
+  node.expect_keys(kStripKeys);
+  Bumper3DConfig b;
+  if (const auto sides = node.find("sides")) {
+    read_sides(
+        *sides, side_of,
+        [&](int k) {
+          return walls.present[k] ? std::string()
+                                  : std::string("there is no ") + kSideNames[k] + " wall";
+        },
+        b);
+  } else {
+    node.note_default("sides", "every wall");
+    b.on = walls.present;
+  }
+  read_strip_rubber(node, b);
+  for (int k = 0; k < 4; ++k)
+    if (b.on[k] && b.thickness > 0 && b.thickness >= walls.gap[k]) {
+      char what[160];
+      std::snprintf(what, sizeof what,
+                    "the bumper (%g cm) must be thinner than the %s wall's gap (%g cm)",
+                    100 * b.thickness, kSideNames[k], 100 * walls.gap[k]);
+      node.fail_at_key("thickness", what);
+    }
   return b;
+}
+
+// bumper: {...} on a building: rubber on its slabs' faces (sides in the building frame; default
+// the face towards adjacent.to). Every slab needs a straight edge on each side, over [from, to].
+Bumper3DConfig read_slab_bumper3d(const InputNode& node, const Building3DConfig& building,
+                                  const std::function<int(const InputNode&)>& side_of) {
+  node.expect_keys(kStripKeys);
+  Bumper3DConfig b;
+  if (const auto sides = node.find("sides")) {
+    read_sides(
+        *sides, side_of, [](int) { return std::string(); }, b);
+  } else if (!building.adjacent.to.empty() && building.rotation == 0.0) {
+    // adjacent.side: the side of `to` this building stands on; its own facing side is opposite.
+    static constexpr int kOpposite[4] = {1, 0, 3, 2};
+    const int k = kOpposite[building.adjacent.side];
+    b.on[k] = true;
+    node.note_default("sides", std::string("[") + kSideNames[k] + "] (the face towards '" +
+                                   building.adjacent.to + "')");
+  } else {
+    node.fail_at_key("sides",
+                     "missing required key 'sides' (the faces with rubber, e.g. [west]; it "
+                     "defaults to the face towards adjacent.to for an unrotated building)");
+  }
+  read_strip_rubber(node, b);
+  if (!(b.thickness > 0)) return b;
+  for (const Level3D& level : levels3d(building))
+    for (int k = 0; k < 4; ++k) {
+      if (!b.on[k]) continue;
+      try {
+        slab_bumper_strips(level.diaphragm->plan, k, b);
+      } catch (const std::invalid_argument& e) {
+        const char* key = node.has("to") ? "to" : node.has("from") ? "from" : "sides";
+        node.fail_at_key(key, level.name + ": " + e.what());
+      }
+    }
+  return b;
+}
+
+void check_slab_bumpers(const ModelConfig& config, const std::vector<StructureMarks>& marks,
+                        const Site& site, double level_tolerance, ProblemList& problems) {
+  for (std::size_t i = 0; i < config.structures3d.size() && i < marks.size(); ++i) {
+    const Building3DConfig& b = config.structures3d[i];
+    if (!b.bumper.any() || !(b.bumper.thickness > 0) || !marks[i].item) continue;
+    const auto node = marks[i].item->find("bumper");
+    if (!node) continue;
+    for (const Level3D& level : levels3d(b))
+      for (int k = 0; k < 4; ++k) {
+        if (!b.bumper.on[k]) continue;
+        std::vector<Vec2> rubber_W;
+        for (const Vec2& p : slab_bumper_strips(level.diaphragm->plan, k, b.bumper).rubber)
+          rubber_W.push_back(to_plan(b, p));
+        const ConvexPolygon rubber(std::span<const Vec2>(rubber_W.data(), rubber_W.size()));
+        for (const PlanSlab& other : site.slabs) {
+          if (other.structure == static_cast<int>(i) ||
+              std::abs(other.elevation - level.elevation) > level_tolerance)
+            continue;
+          const ConvexPolygon slab(std::span<const Vec2>(other.plan_W.data(), other.plan_W.size()));
+          if (separation_of(rubber, slab).distance > 0) continue;
+          char what[240];
+          std::snprintf(what, sizeof what,
+                        "the rubber on the %s face of '%s/%s' (%g cm) touches or enters '%s/%s' "
+                        "at rest: a bumper must be thinner than the gap it faces",
+                        kSideNames[k], b.name.c_str(), level.name.c_str(), 100 * b.bumper.thickness,
+                        other.name.c_str(), other.level.c_str());
+          problems.error_at(*node, "thickness", what);
+        }
+      }
+  }
 }
 
 // from/to of the bumper inside every bumpered face (its length: the slab's extent plus the
 // walls' extension at each end, as moat_wall_outline builds it).
 void check_bumper_span(const InputNode& walls_node, const Building3DConfig& b) {
-  const MoatBumper3DConfig& bumper = b.walls.bumper;
+  const Bumper3DConfig& bumper = b.walls.bumper;
   if (!bumper.any()) return;
   const InputNode node = walls_node.required("bumper");
   for (int side = 0; side < 4; ++side) {

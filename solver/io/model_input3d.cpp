@@ -21,6 +21,13 @@
 namespace isopound {
 namespace {
 
+// A side name: east, west, north or south (MoatWalls3DConfig::Side).
+int read_side(const InputNode& n) {
+  using W = MoatWalls3DConfig;
+  return n.choice<int>(
+      {{"east", W::kEast}, {"west", W::kWest}, {"north", W::kNorth}, {"south", W::kSouth}});
+}
+
 constexpr Dimension kAreaMoment{4, 0, 0};  // m^4
 constexpr Dimension kMassMoment{2, 1, 0};  // kg m^2
 constexpr int kMaxStoreys = 200;
@@ -284,15 +291,11 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   node.expect_keys({"sides", "gap", "thickness", "height", "extension", "mass_per_length", "model",
                     "E", "nu", "damping", "bumper", "level"});
   W w;
-  const auto side_of = [](const InputNode& n) {
-    return n.choice<int>(
-        {{"east", W::kEast}, {"west", W::kWest}, {"north", W::kNorth}, {"south", W::kSouth}});
-  };
   if (const auto sides = node.find("sides")) {
     if (sides->is_sequence()) {
       if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, west]");
       for (const InputNode& s : sides->elements()) {
-        const int k = side_of(s);
+        const int k = read_side(s);
         if (w.present[k]) s.fail("side listed twice");
         w.present[k] = true;
       }
@@ -329,7 +332,7 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
     if (w.nu >= 0.5) node.fail_at_key("nu", "Poisson's ratio must be in [0, 0.5)");
     node.read_number("damping", Bound::kFraction, w.damping_ratio);
   }
-  if (const auto bumper = node.find("bumper")) w.bumper = read_bumper3d(*bumper, w, side_of);
+  if (const auto bumper = node.find("bumper")) w.bumper = read_bumper3d(*bumper, w, read_side);
   return w;
 }
 
@@ -355,7 +358,8 @@ Building3DConfig read_building3d(const InputNode& node) {
                     "elastic_limit_drift_ratio",
                     "isolation_level",
                     "isolation_height",
-                    "struck_columns"});
+                    "struck_columns",
+                    "bumper"});
   Building3DConfig b;
   if (const auto n = node.find("name")) {
     b.name = n->string();
@@ -576,8 +580,7 @@ void place_adjacent(const InputNode& adj, const InputNode& item,
   if (!other)
     to.fail("no structure named '" + other_name +
             "' before this one (list the building it stands next to first)");
-  const int side = adj.required("side").choice<int>(
-      {{"east", W::kEast}, {"west", W::kWest}, {"north", W::kNorth}, {"south", W::kSouth}});
+  const int side = read_side(adj.required("side"));
   const double gap = adj.required("gap").quantity(dim::kLength, Bound::kPositive);
   me.position = {0.0, 0.0};
   const auto [olo, ohi] = plan_box(*other);
@@ -703,6 +706,9 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
       if (out[k].name == out.back().name)
         item.fail_at_key("name", "two structures are named '" + out.back().name + "'");
     if (const auto adj = item.find("adjacent")) place_adjacent(*adj, item, out);
+    // Rubber on the slabs' faces: after the placement, whose side it defaults to.
+    if (const auto bumper = item.find("bumper"))
+      out.back().bumper = read_slab_bumper3d(*bumper, out.back(), read_side);
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "geometry/overlap.h"
+#include "solver/io/bumper_input.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/levels3d.h"
 #include "solver/structures/pounding2d.h"
@@ -447,6 +448,7 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
     }
   const std::vector<ColumnSpan> spans = column_spans(config, site);
   check_columns(config, marks, site, spans, limits, problems);
+  check_slab_bumpers(config, marks, site, limits.level_tolerance, problems);
 
   // Walls: the clearance to the base slab they surround, measured per side against the declared
   // gap; no wall may stand in another structure's slab (up to its height) or on its columns.
@@ -567,17 +569,18 @@ void check_site2d(const ModelConfig& config, const std::vector<InputNode>& neigh
                   ProblemList& problems) {
   // Neighbours: a level of one within the other's height meets a level of the other
   // (pounding2d.cpp pairs levels within 1 mm) or, when the other describes its facing column
-  // line (columns:), may strike its columns between two floors. Without columns: the check as
-  // before issue 26, on the floors' elevations from the storey heights alone.
+  // line (columns:), may strike its columns between two floors. Elevations are the levels' own
+  // (an isolated slab raised above a storey raises the floors above it).
   const BuildingConfig& b = config.building;
   if (b.floors.empty()) return;
-  const auto floor_elevations = [](const BuildingConfig& x, double ground) {
-    std::vector<double> z;
-    double e = ground;
-    for (const FloorConfig& f : x.floors) z.push_back(e += f.height);
-    return z;
-  };
   const std::vector<double> z_main = level_elevations(b);
+  // "floor 2", or "the base slab" (level order of level_elevations).
+  const auto level_name = [](const BuildingConfig& x, std::size_t level) {
+    if (is_base_level(x, static_cast<int>(level))) return std::string("the base slab");
+    int floor = 0;
+    for (std::size_t j = 0; j <= level; ++j) floor += is_base_level(x, static_cast<int>(j)) ? 0 : 1;
+    return "floor " + std::to_string(floor);
+  };
   for (std::size_t k = 0; k < config.neighbours.size() && k < neighbours.size(); ++k) {
     const NeighbourConfig& neighbour = config.neighbours[k];
     const BuildingConfig& nb = neighbour.building;
@@ -588,33 +591,14 @@ void check_site2d(const ModelConfig& config, const std::vector<InputNode>& neigh
     for (int pass = 0; pass < 2; ++pass) {
       const BuildingConfig& a = pass == 0 ? b : nb;
       const BuildingConfig& o = pass == 0 ? nb : b;
-      const double ground_a = pass == 0 ? 0.0 : neighbour.ground_level;
       const double ground_o = pass == 0 ? neighbour.ground_level : 0.0;
-      if (!o.columns.given) {
-        const std::vector<double> za = floor_elevations(a, ground_a);
-        const std::vector<double> zb = floor_elevations(o, ground_o);
-        for (std::size_t f = 0; f < za.size(); ++f) {
-          if (za[f] > zb.back() + kLevelTolerance2D) continue;
-          double dz = 1e300, nearest = 0;
-          for (double z : zb)
-            if (std::abs(z - za[f]) < dz) dz = std::abs(z - za[f]), nearest = z;
-          if (dz <= kLevelTolerance2D) continue;
-          problems.error_at(at, "",
-                            "floor " + std::to_string(f + 1) + " of '" + a.name + "' at " +
-                                metres(za[f]) + " has no floor of '" + o.name +
-                                "' at its level (nearest " + metres(nearest) +
-                                "): it would pound that building's columns; describe them with "
-                                "columns: {count, E, I, M_y} (docs/floor-to-column.md)");
-        }
-        continue;
-      }
       const std::vector<double>& za = pass == 0 ? z_main : z_other;
       const std::vector<double>& zo = pass == 0 ? z_other : z_main;
       std::vector<int> struck;
       for (std::size_t f = 0; f < za.size(); ++f) {
         const FacedPart part = faced_part(o, zo, ground_o, za[f]);
         const std::string what =
-            "level " + std::to_string(f) + " of '" + a.name + "' at " + metres(za[f]) + " ";
+            level_name(a, f) + " of '" + a.name + "' at " + metres(za[f]) + " ";
         using Kind = FacedPart::Kind;
         if (part.kind == Kind::kBelowGround) {
           problems.error_at(at, "ground_level",
@@ -624,6 +608,15 @@ void check_site2d(const ModelConfig& config, const std::vector<InputNode>& neigh
           problems.error_at(at, "",
                             what + "faces the isolators of '" + o.name +
                                 "': slab-to-isolator contact is outside the model");
+        } else if (part.kind == Kind::kStorey && !o.columns.given) {
+          double dz = 1e300, nearest = 0;
+          for (double z : zo)
+            if (std::abs(z - za[f]) < dz) dz = std::abs(z - za[f]), nearest = z;
+          problems.error_at(at, "",
+                            what + "has no floor of '" + o.name + "' at its level (nearest " +
+                                metres(nearest) +
+                                "): it would pound that building's columns; describe them with "
+                                "columns: {count, E, I, M_y} (docs/floor-to-column.md)");
         } else if (part.kind == Kind::kStorey) {
           if (o.floors[static_cast<std::size_t>(part.floor) - 1].hysteresis.model !=
               StoryHysteresisConfig::Model::kElastic)

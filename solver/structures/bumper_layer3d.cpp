@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -40,16 +41,58 @@ std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, 
   }
 }
 
-BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side,
-                           const MoatBumper3DConfig& bumper) {
+BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side, const Bumper3DConfig& bumper) {
   const double t = bumper.thickness, s = bumper.max_strain * t;
   const BumperSpan span{bumper.from, bumper.to};
   return {bumper_layer_outline(wall, side, s, span, t - s),
           bumper_layer_outline(wall, side, t - s, span)};
 }
 
-std::shared_ptr<const ImpactLaw> bumper_rubber_law(const MoatBumper3DConfig& bumper,
-                                                   double k_normal) {
+BumperStrips slab_bumper_strips(const std::vector<Vec2>& plan, int side,
+                                const Bumper3DConfig& bumper) {
+  if (plan.size() < 3 || side < 0 || side > 3)
+    throw std::invalid_argument("slab bumper: a slab is a polygon, sides 0-3");
+  Vec2 lo = plan[0], hi = plan[0];
+  for (const Vec2& p : plan)
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)},
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  const bool along_y = side <= 1;
+  const double line = side == 0 ? hi.x : side == 1 ? lo.x : side == 2 ? hi.y : lo.y;
+  const double tol = 1e-9 * std::max(hi.x - lo.x, hi.y - lo.y);
+  // The extent of the vertices on the bounding box's side: an edge when it has length.
+  double a = std::numeric_limits<double>::infinity(), b = -a;
+  for (const Vec2& p : plan)
+    if (std::abs((along_y ? p.x : p.y) - line) <= tol) {
+      a = std::min(a, along_y ? p.y : p.x);
+      b = std::max(b, along_y ? p.y : p.x);
+    }
+  if (!(b - a > tol))
+    throw std::invalid_argument(std::string("the slab has no straight edge on its ") +
+                                MoatWalls3DConfig::kSideNames[side] +
+                                " side (only a corner) for the rubber");
+  // The face as the inner face of a wall on the opposite side, standing inside the slab: its
+  // strips then lie outside the slab, the rubber outermost.
+  static constexpr int kOpposite[4] = {1, 0, 3, 2};
+  const double depth = b - a;
+  std::vector<Vec2> wall;
+  switch (side) {
+    case 0:
+      wall = {{line - depth, a}, {line, a}, {line, b}, {line - depth, b}};
+      break;
+    case 1:
+      wall = {{line, a}, {line + depth, a}, {line + depth, b}, {line, b}};
+      break;
+    case 2:
+      wall = {{a, line - depth}, {b, line - depth}, {b, line}, {a, line}};
+      break;
+    default:
+      wall = {{a, line}, {b, line}, {b, line + depth}, {a, line + depth}};
+      break;
+  }
+  return bumper_strips(wall, kOpposite[side], bumper);
+}
+
+std::shared_ptr<const ImpactLaw> bumper_rubber_law(const Bumper3DConfig& bumper, double k_normal) {
   BumperConfig b;
   b.thickness = bumper.thickness;
   b.law = bumper.law;

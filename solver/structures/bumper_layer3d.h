@@ -34,16 +34,23 @@ std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, 
 struct BumperStrips {
   std::vector<Vec2> rubber, bottomed;  // building frame, as bumper_layer_outline
 };
-BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side,
-                           const MoatBumper3DConfig& bumper);
+BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side, const Bumper3DConfig& bumper);
+
+// The same two strips on a slab's own face (a neighbour's rubber, Building3DConfig::bumper): in
+// front of the straight edge the slab `plan` (building frame) has on side `side` of its bounding
+// box (0 east ... 3 south), max_strain t of rubber outermost, over [from, to] along that edge from
+// its start (lower y for east and west, lower x for north and south). Throws
+// std::invalid_argument when the slab has no edge on that side (a vertex only) or from/to lie
+// beyond it.
+BumperStrips slab_bumper_strips(const std::vector<Vec2>& plan, int side,
+                                const Bumper3DConfig& bumper);
 
 // The laws of the two strips per unit contact length L_c (polygon_contact.h, length_law).
 // Rubber: a BumperLaw of thickness t with k = E h / t (linear: F_N/L_c = k δ_N) or E h / t^1.5
 // (hertz: F_N/L_c = k δ_N^1.5) and Hunt–Crossley damping from e (its δ_N never passes
 // max_strain t: the strip is that deep). Bottomed: elastic k_N δ_N (N/m², F_N = k_N A_c).
 // Throws std::invalid_argument for an invalid bumper.
-std::shared_ptr<const ImpactLaw> bumper_rubber_law(const MoatBumper3DConfig& bumper,
-                                                   double k_normal);
+std::shared_ptr<const ImpactLaw> bumper_rubber_law(const Bumper3DConfig& bumper, double k_normal);
 std::shared_ptr<const ImpactLaw> bumper_bottomed_law(double k_normal);
 
 }  // namespace isopound

@@ -94,11 +94,12 @@ enum class ColumnCoupling {
   kFull,    // R diag(k_1, k_2) R^T: the full rotated stiffness
 };
 
-// Rubber bumpers on the inner faces of the moat walls (issue 27; docs/impact-laws.md, "Bumpers on
-// moat walls (3D)"): a strip `thickness` deep over [from, to] along each bumpered face, pressed
-// by the slab edge over `height`. Linear F_N = (E h / t) A_c, Hertz-type F_N = E L_c h (d_N/t)^1.5,
+// Rubber bumpers (issue 27; docs/impact-laws.md, "Bumpers on moat walls (3D)", "Bumpers on a
+// neighbour's face (3D)") on the inner faces of the moat walls or on the faces of a building's
+// slabs: a strip `thickness` deep over [from, to] along each bumpered face, pressed by the other
+// slab's edge over `height`. Linear F_N = (E h / t) A_c, Hertz-type F_N = E L_c h (d_N/t)^1.5,
 // times (1 + zeta d'_N / v_imp)+; bottoming out at max_strain t onto the concrete k_N.
-struct MoatBumper3DConfig {
+struct Bumper3DConfig {
   std::array<bool, 4> on{};    // sides with rubber (MoatWalls3DConfig::Side); none: no bumpers
   double thickness = 0.0;      // m, t
   std::string law = "linear";  // "linear" or "hertz"
@@ -133,7 +134,7 @@ struct MoatWalls3DConfig {
   double E = 30e9;  // Pa
   double nu = 0.2;
   double damping_ratio = 0.05;
-  MoatBumper3DConfig bumper;  // rubber on the inner faces (issue 27); none by default
+  Bumper3DConfig bumper;  // rubber on the inner faces (issue 27); none by default
   bool any() const { return present[0] || present[1] || present[2] || present[3]; }
 };
 
@@ -180,6 +181,9 @@ struct Building3DConfig {
   // Index (levels3d order, 0 = lowest) of the level the moat walls face; -1: the base slab.
   int walls_level = -1;
   Adjacency3DConfig adjacent;
+  // Rubber on the faces of every slab of this building (bumper_layer3d.h, slab_bumper_strips):
+  // it meets the slabs of other structures at the levels that pound; none by default.
+  Bumper3DConfig bumper;
   // Storey geometric stiffness from the gravity load above (building3d.h, p_delta_stiffness).
   bool p_delta = false;
   // An elastic storey whose peak drift ratio exceeds this is flagged: the elastic model is

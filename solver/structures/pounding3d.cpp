@@ -65,6 +65,10 @@ void note_upper_contact(Model& model, int u, int element, bool with_wall) {
   }
 }
 
+std::string slab_face_label(const std::string& slab_label, int side) {
+  return slab_label + " " + MoatWalls3DConfig::kSideNames[side];
+}
+
 int walls_level3d(const Building3DConfig& b) {
   return b.walls_level >= 0 ? b.walls_level : base_level3d(b);
 }
@@ -239,36 +243,72 @@ void add_flexible_walls(Model& model, const ModelConfig& config) {
 
 namespace {
 
-// A bumpered wall's two strips (issue 27, bumper_layer3d.h): two more contacts right after the
-// wall's, between the slab and each strip on the wall's DOFs, with laws per contact length and
-// the rubber's friction. The concrete contact stays: the strips end at the wall face, so the
-// rubber's δ_N stops at max_strain t where the bottomed strip's overlap begins, and that one's at
-// (1 − max_strain) t where the concrete's begins (docs/impact-laws.md, "Bumpers on moat walls").
+// A bumper's two strips (issue 27, bumper_layer3d.h) as two more contacts right after the pair's
+// own: between `other` and each strip, carried by `owner`'s DOFs and named after `face`, with laws
+// per contact length and the rubber's friction. The concrete contact stays: the strips end at the
+// owner's face, so the rubber's δ_N stops at max_strain t where the bottomed strip's overlap
+// begins, and that one's at (1 − max_strain) t where the concrete's begins (docs/impact-laws.md,
+// "Bumpers on moat walls (3D)").
 template <class MakeBody>
-void add_bumper_contacts(Model& model, const ModelConfig& config, const SiteBody& slab,
-                         const SiteBody& wall, const MakeBody& body,
-                         const PolygonContactConfig& wall_law) {
-  if (wall.role != "wall") return;
-  const Building3DConfig& b = config.structures3d[wall.building];
-  const MoatBumper3DConfig& bumper = b.walls.bumper;
-  if (!bumper.on[wall.wall_side] || !(bumper.thickness > 0)) return;
+void add_strip_contacts(Model& model, const ModelConfig& config, const SiteBody& other,
+                        const SiteBody& owner, const std::string& face,
+                        const std::vector<Vec2>& rubber_W, const std::vector<Vec2>& bottomed_W,
+                        const Bumper3DConfig& bumper, const MakeBody& body,
+                        const PolygonContactConfig& pair_law) {
   const double k_normal = config.contact3d.law.k_normal;
-  const BumperStrips strips =
-      bumper_strips(moat_wall_outline(b, wall.wall_side), wall.wall_side, bumper);
-  PolygonContactConfig law = wall_law;
+  PolygonContactConfig law = pair_law;
   law.normal_law = nullptr;
   law.mu_static = bumper.mu_static;
   law.mu_kinetic = bumper.mu_kinetic;
-  const auto add = [&](const std::vector<Vec2>& outline, std::shared_ptr<const ImpactLaw> f,
+  const auto add = [&](const std::vector<Vec2>& outline_W, std::shared_ptr<const ImpactLaw> f,
                        const std::string& name) {
-    PolygonBody strip = body(wall);
-    strip.shape = polygon_of(placed(b, outline));
+    PolygonBody strip = body(owner);
+    strip.shape = polygon_of(outline_W);
     law.length_law = std::move(f);
     model.elements.push_back(std::make_unique<PolygonContact>(
-        slab.label() + "|" + wall.label() + " " + name, body(slab), std::move(strip), law));
+        other.label() + "|" + face + " " + name, body(other), std::move(strip), law));
   };
-  add(strips.rubber, bumper_rubber_law(bumper, k_normal), kBumperLabel);
-  add(strips.bottomed, bumper_bottomed_law(k_normal), kBottomedLabel);
+  add(rubber_W, bumper_rubber_law(bumper, k_normal), kBumperLabel);
+  add(bottomed_W, bumper_bottomed_law(k_normal), kBottomedLabel);
+}
+
+// The rubber of a bumpered moat wall facing `slab`.
+template <class MakeBody>
+void add_wall_bumper(Model& model, const ModelConfig& config, const SiteBody& slab,
+                     const SiteBody& wall, const MakeBody& body, const PolygonContactConfig& law) {
+  if (wall.role != "wall") return;
+  const Building3DConfig& b = config.structures3d[wall.building];
+  const Bumper3DConfig& bumper = b.walls.bumper;
+  if (!bumper.on[wall.wall_side] || !(bumper.thickness > 0)) return;
+  const BumperStrips strips =
+      bumper_strips(moat_wall_outline(b, wall.wall_side), wall.wall_side, bumper);
+  add_strip_contacts(model, config, slab, wall, wall.label(), placed(b, strips.rubber),
+                     placed(b, strips.bottomed), bumper, body, law);
+}
+
+// The rubber on the faces of `owner`, a slab of a building with a `bumper:`, towards `other`, a
+// slab of another structure at its level: the sides whose strips lie within the search distance.
+template <class MakeBody>
+void add_slab_bumper(Model& model, const ModelConfig& config, const SiteBody& other,
+                     const SiteBody& owner, const MakeBody& body, const PolygonContactConfig& law) {
+  if (owner.role != "slab" || other.role != "slab") return;
+  const Building3DConfig& b = config.structures3d[owner.building];
+  const Bumper3DConfig& bumper = b.bumper;
+  if (!bumper.any() || !(bumper.thickness > 0)) return;
+  const std::vector<Level3D> levels = levels3d(b);
+  const auto level = std::find_if(levels.begin(), levels.end(),
+                                  [&](const Level3D& l) { return l.name == owner.level; });
+  if (level == levels.end()) throw std::logic_error("3D pounding: no level " + owner.level);
+  for (int side = 0; side < 4; ++side) {
+    if (!bumper.on[side]) continue;
+    const BumperStrips strips = slab_bumper_strips(level->diaphragm->plan, side, bumper);
+    const std::vector<Vec2> rubber_W = placed(b, strips.rubber);
+    if (separation_of(polygon_of(rubber_W), other.plan_W).distance >
+        config.contact3d.search_distance)
+      continue;
+    add_strip_contacts(model, config, other, owner, slab_face_label(owner.label(), side), rubber_W,
+                       placed(b, strips.bottomed), bumper, body, law);
+  }
 }
 
 }  // namespace
@@ -285,17 +325,22 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
                          s.plan_W,
                          s.mass};
     };
-    const PolygonContactConfig law = pair_law(config, bodies[pair.a].mass, bodies[pair.b].mass);
+    const SiteBody& a = bodies[pair.a];
+    const SiteBody& b = bodies[pair.b];
+    const PolygonContactConfig law = pair_law(config, a.mass, b.mass);
+    const int first = static_cast<int>(model.elements.size());
+    model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(a), body(b), law));
+    add_wall_bumper(model, config, a, b, body, law);
+    add_slab_bumper(model, config, a, b, body, law);
+    add_slab_bumper(model, config, b, a, body, law);
     // A contact on a level other than an isolated structure's base slab is not part of its base
     // shear (StructureInfo::upper_contact_elements); nor is one on a base slab raised above a
-    // storey by anything but its moat walls (a neighbour's floor is no foundation).
-    const bool with_wall = bodies[pair.a].role == "wall" || bodies[pair.b].role == "wall";
-    for (const SiteBody* side : {&bodies[pair.a], &bodies[pair.b]})
-      note_upper_contact(model, find_dof(model, side->dof_label_u),
-                         static_cast<int>(model.elements.size()), with_wall);
-    model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(bodies[pair.a]),
-                                                              body(bodies[pair.b]), law));
-    add_bumper_contacts(model, config, bodies[pair.a], bodies[pair.b], body, law);
+    // storey by anything but its moat walls (a neighbour's floor is no foundation). The pair's
+    // rubber strips go with it.
+    const bool with_wall = a.role == "wall" || b.role == "wall";
+    for (const SiteBody* side : {&a, &b})
+      for (int e = first; e < static_cast<int>(model.elements.size()); ++e)
+        note_upper_contact(model, find_dof(model, side->dof_label_u), e, with_wall);
   }
 }
 

@@ -59,7 +59,8 @@ std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
 void add_flexible_walls(Model& model, const ModelConfig& config);
 
 // The end of the labels of a bumper's two contacts (issue 27): the rubber's, "<slab>|<wall>
-// bumper", and the bottomed-out rubber's, "<slab>|<wall> bumper bottomed".
+// bumper", and the bottomed-out rubber's, "<slab>|<wall> bumper bottomed"; on a slab's face,
+// "<other slab>|<face> bumper" and "... bumper bottomed", the face as slab_face_label names it.
 inline constexpr const char* kBumperLabel = "bumper";
 inline constexpr const char* kBottomedLabel = "bumper bottomed";
 
@@ -71,9 +72,13 @@ PolygonContactConfig pair_law(const ModelConfig& config, double mass_a, double m
 // Marks `element`, acting on the level whose x DOF is u, as not part of an isolated structure's
 // base shear unless u is its base slab (and, on a raised base slab, the element a wall's).
 void note_upper_contact(Model& model, int u, int element, bool with_wall);
+// A slab's face with rubber (Building3DConfig::bumper): "<slab label> <side>", e.g.
+// "east-neighbour/floor 1 west" (side: MoatWalls3DConfig::Side, building frame).
+std::string slab_face_label(const std::string& slab_label, int side);
 
 // Adds a PolygonContact per pair (the model must hold the structures' DOFs already), and after a
-// bumpered wall's contact the two of its bumper (issue 27).
+// pair's contact the two of each bumper it has (issue 27): a bumpered wall's, and those of each
+// bumpered slab face (Building3DConfig::bumper) within the search distance of the other slab.
 void add_pounding3d(Model& model, const ModelConfig& config);
 
 // For the unobstructed comparison: per moat wall, the coordinates whose peaks give the critical
