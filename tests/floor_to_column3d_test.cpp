@@ -4,7 +4,8 @@
 //    node by P_i a^3 b^3 / (3 E I_i L^3) along each principal axis; the node condensed leaves
 //    exactly the column's share T^T R diag(k_1, k_2) R^T T of the storey.
 //  - FloorToColumn3DReduction: nothing struck -> every peak as without the nodes (1e-9); a roof
-//    2 cm below a one-column tower's roof -> slab-to-slab pounding within 1 %.
+//    1 cm below a one-column tower's roof -> slab-to-slab pounding within 1 % (0.71 %: the
+//    tower's top storey 0.9 % softer; 0.36 % at 5 mm, 0.15 % at 2 mm).
 //  - FloorToColumn3DEnergy: balance and passivity of every contact episode.
 //  - FloorToColumn3DInput: bad input is an InputError at file:line:col: key.
 #include <gtest/gtest.h>
@@ -236,8 +237,9 @@ TEST(FloorToColumn3DReduction, NothingStruckEqualsTheModelWithoutTheNodes) {
 }
 
 // The building next to a one-column tower whose slabs are the column's 35 cm section, 5 mm away;
-// its top storey `top` high: 3.2 m pounds slab to slab at every floor, 3.22 m makes the
-// building's roof strike the tower's top column 2 cm below its roof.
+// its top storey `top` high: 3.2 m pounds slab to slab at every floor, 3.21 m makes the
+// building's roof strike the tower's top column 1 cm below its roof (elevation_tolerance 5 mm:
+// floors closer than that meet slab to slab).
 std::string tower_text(const std::string& top, const std::string& m_y = "50 MN*m",
                        const std::string& extra = "") {
   const std::string storey = "{height: 3.2 m, mass: 60 t, columns: [{at: [0 m, 0 m]}]}";
@@ -263,18 +265,23 @@ std::string tower_text(const std::string& top, const std::string& m_y = "50 MN*m
          ", mass: 60 t, columns: [{at: [0 m, 0 m]}]}\n"
          "    damping: {type: rayleigh, ratios: [5 %, 5 %], modes: [1, 3]}\n"
          "    struck_columns: {M_y: " +
-         m_y +
-         "}\n"
-         "contact: {friction: false}\n" +
-         extra +
+         m_y + "}\n" + "contact: {friction: false, elevation_tolerance: 5 mm}\n" + extra +
          "ground_motion:\n"
          "  pulse: {amplitude: 1 m/s, period: 0.4 s, t_peak: 0.5 s, duration: 2 s}\n";
 }
 
 TEST(FloorToColumn3DReduction, RoofNextToAFloorPoundsAsSlabToSlab) {
-  ModelConfig near = test::load_model_text(tower_text("3.22 m"));
+  ModelConfig near = test::load_model_text(tower_text("3.21 m"));
   ModelConfig at = test::load_model_text(tower_text("3.2 m"));
   near.output.histories = at.output.histories = false;
+  // The pulse along x only. Its transverse half twists the tower (~2e-5 rad), and there the two
+  // models differ by a term of the slab-to-slab contact, not of the column: PolygonContact takes
+  // a body's moment about its DOF origin displaced and turned exactly (THEORY-notes.md), which
+  // adds F_x |p_O| theta about an origin |p_O| away, here 8.7 m from the tower whose torsional
+  // stiffness is one column's GJ / L. The struck column passes its node's force to the floors
+  // through the storey's small-rotation kinematics. With the tower at the origin the two twists
+  // agree to 6 % (1.61 vs 1.71e-5 rad; 2.77 vs 1.73e-5 rad 8.7 m away), every other peak to 1 %.
+  near.ground_motion.pulse_transverse_ratio = at.ground_motion.pulse_transverse_ratio = 0.0;
   const JobResult a = run_job(near);
   const JobResult b = run_job(at);
   ASSERT_EQ(struck(a.model).size(), 1u);
@@ -288,26 +295,11 @@ TEST(FloorToColumn3DReduction, RoofNextToAFloorPoundsAsSlabToSlab) {
               ca[0].value, cb[0].value, ca[4].value, cb[4].value);
   EXPECT_GT(cb[0].value, 0.0);
   EXPECT_NEAR(ca[0].value / cb[0].value, 1.0, 1e-2) << column.label() << " vs " << slab.label();
-  // The peaks along the push (x) of every level: across it (y, theta: peaks ~1e-3 of x) the two
-  // differ by design, the tower's slab turning under the roof's push at the contact point, the
-  // column's section (a node without rotation) not (5 % on the building's roof twist rate).
-  std::vector<test::NamedPeak> pa, pb;
-  for (const auto& [from, to] : {std::pair{dof_peaks(a), &pa}, std::pair{dof_peaks(b), &pb}})
-    for (const test::NamedPeak& p : from)
-      if (p.name.find("(x)") != std::string::npos) to->push_back(p);
-  // Displacements and velocities within 1 %; the impact accelerations within 2 % (1.4 %: the
-  // roof's contact steps fall apart differently, see FC3D-STATUS.md).
-  std::vector<test::NamedPeak> ua, ub, aa, ab;
-  for (std::size_t i = 0; i < pa.size(); ++i) {
-    const bool acceleration = pa[i].name.back() == 'a';
-    (acceleration ? aa : ua).push_back(pa[i]);
-    (acceleration ? ab : ub).push_back(pb[i]);
-  }
-  const test::Comparison c = compare_to_scale(ua, ub), ca_ = compare_to_scale(aa, ab);
-  std::printf("[reduction 3D] worst u, v %.3e at %s; a %.3e at %s\n", c.worst, c.where.c_str(),
-              ca_.worst, ca_.where.c_str());
+  // Every peak of every level (x, y, theta; drifts, shears): the section turns with the tower's
+  // twist as its slab would, so nothing differs but the 1 cm (the top storey 0.9 % softer).
+  const test::Comparison c = compare_to_scale(dof_peaks(a), dof_peaks(b));
+  std::printf("[reduction 3D] worst %.3e at %s\n", c.worst, c.where.c_str());
   EXPECT_LT(c.worst, 1e-2) << c.where;
-  EXPECT_LT(ca_.worst, 2e-2) << ca_.where;
 }
 
 // The building's roof strikes the tower's top-storey column 0.8 m below its roof (hinges of
@@ -357,6 +349,8 @@ TEST(FloorToColumn3DInput, BadInputNamesTheKey) {
       {"floor_to_column3d_without_struck_columns.yaml", "structures[0].storeys", "struck_columns:"},
       {"floor_to_column3d_yielding_storey.yaml", "structures[1].struck_columns",
        "elastic storeys only"},
+      {"floor_to_column3d_two_struck_points.yaml", "structures[1].struck_columns",
+       "one struck point per column"},
   };
   for (const auto& c : cases) {
     const std::filesystem::path file =

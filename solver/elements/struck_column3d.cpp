@@ -22,7 +22,7 @@ PolygonBody slab_body(const StruckColumn3DSpec& s) {
 }
 
 PolygonBody section_body(const StruckColumn3DSpec& s) {
-  return PolygonBody{3, 4, -1, s.p_W, polygon_of(s.section_W), s.struck_mass};
+  return PolygonBody{3, 4, 11, s.p_W, polygon_of(s.section_W), s.struck_mass};
 }
 
 }  // namespace
@@ -32,6 +32,7 @@ StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec
     : label_(std::move(label)),
       spec_(spec),
       column_{HingedColumn(spec.axis[0]), HingedColumn(spec.axis[1])},
+      twist_weight_(spec.axis[0].node / spec.axis[0].length),
       contact_(label_, slab_body(spec), section_body(spec), law),
       zl_(Eigen::VectorXd::Zero(kLocal)),
       zdl_(Eigen::VectorXd::Zero(kLocal)),
@@ -46,7 +47,7 @@ StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec
   const Vec2 a[2] = {{c, s}, {-s, c}};
   const Vec2 p = spec.p_W;
   for (int i = 0; i < 2; ++i) {
-    Map3x11& m = map_[i];
+    Map3xL& m = map_[i];
     m.setZero();
     const double r[3] = {a[i].x, a[i].y, p.x * a[i].y - p.y * a[i].x};
     for (int k = 0; k < 3; ++k) {
@@ -85,6 +86,19 @@ void StruckColumn3D::gather(const Eigen::VectorXd& u, const Eigen::VectorXd& v) 
     zl_(k) = g >= 0 ? u[g] : 0.0;
     zdl_(k) = g >= 0 ? v[g] : 0.0;
   }
+  set_twist();
+}
+
+void StruckColumn3D::set_twist() {
+  const double w = twist_weight_;
+  zl_(kTwist) = (1.0 - w) * zl_(7) + w * zl_(10);
+  zdl_(kTwist) = (1.0 - w) * zdl_(7) + w * zdl_(10);
+}
+
+void StruckColumn3D::spread_twist_force() {
+  fl_(7) += (1.0 - twist_weight_) * fl_(kTwist);
+  fl_(10) += twist_weight_ * fl_(kTwist);
+  fl_(kTwist) = 0.0;
 }
 
 Eigen::Vector2d StruckColumn3D::chord(const Eigen::VectorXd& z, double w) const {
@@ -103,7 +117,7 @@ Eigen::Vector2d StruckColumn3D::node_residual(Eigen::Matrix2d& slope) {
     const Eigen::Matrix<double, 3, 1> q = map_[i] * zl_;
     state_[i] = column_[i].respond(q, plastic_commit_[i]);
     fl_.noalias() += map_[i].transpose() * state_[i].force;
-    const Mat11 k = map_[i].transpose() * state_[i].tangent * map_[i];
+    const MatL k = map_[i].transpose() * state_[i].tangent * map_[i];
     k_nn += k.block<2, 2>(3, 3);
     for (int j = 0; j < 9; ++j) k_nr.col(j) += k.block<2, 1>(3, kRest[j]);
   }
@@ -122,6 +136,7 @@ Eigen::Vector2d StruckColumn3D::node_residual(Eigen::Matrix2d& slope) {
   zdl_.segment<2>(3) = rate;
   contact_.set_trial(zl_, zdl_);
   contact_.add_force(fl_);
+  spread_twist_force();
   kk_.setZero();
   contact_.add_tangent(kk_, damped && h_ > 0 ? 1.0 / h_ : 0.0);
   slope = k_nn + kk_.block<2, 2>(3, 3);
@@ -185,6 +200,12 @@ void StruckColumn3D::condensed_tangent(double velocity_factor) const {
   for (int j = 0; j < kLocal; ++j)
     kz_.col(j) = kk_.col(j) + kd_.col(j) * (j == 3 || j == 4 ? node_factor : velocity_factor);
   for (int i = 0; i < 2; ++i) kz_ += map_[i].transpose() * state_[i].tangent * map_[i];
+  // The twist is T z: K <- T^T K T folds its column, then its row, into the floors' theta.
+  const double w = twist_weight_;
+  kz_.col(7) += (1.0 - w) * kz_.col(kTwist);
+  kz_.col(10) += w * kz_.col(kTwist);
+  kz_.row(7) += (1.0 - w) * kz_.row(kTwist);
+  kz_.row(10) += w * kz_.row(kTwist);
   const Eigen::Matrix2d k_nn = kz_.block<2, 2>(3, 3);
   const Eigen::PartialPivLU<Eigen::Matrix2d> lu(k_nn);
   const bool invertible = std::abs(k_nn.determinant()) > 0;

@@ -2,9 +2,13 @@
 // column a HingedColumn per principal axis (uncoupled: along axis 1 it bends with I22, along
 // axis 2 with I11), both with the lateral node at height a; the node (x, y) massless and condensed
 // at every trial, f_col,node(n) + f_contact,node(n, n') = 0; the slab's plan polygon against the
-// column's section (a rectangle moving with the node, no rotation) a PolygonContact (the
-// slab-to-slab area law, friction and passivity bookkeeping). The column's ends move with the
-// floors at its plan position: d = (u - y theta, v + x theta), in its axes R^T d.
+// column's section (a rectangle moving with the node and turning with its twist) a PolygonContact
+// (the slab-to-slab area law, friction and passivity bookkeeping). The column's ends move with the
+// floors at its plan position: d = (u - y theta, v + x theta), in its axes R^T d. The section
+// turns with the column's twist at the node, linear between the floors (uniform torsion between
+// two rigid diaphragms): theta_n = (1 - w) theta_lower + w theta_upper, w = a / L; the contact's
+// moment on the section goes to the floors with the same weights (so a slab at a floor meets the
+// section as it would meet that floor).
 #pragma once
 
 #include <array>
@@ -79,10 +83,12 @@ class StruckColumn3D final : public Element {
 
  private:
   static constexpr int kColumnOutputs = 17;
-  // Local coordinates z: slab (u, v, theta) 0-2, node (x, y) 3-4, lower 5-7, upper 8-10.
-  static constexpr int kLocal = 11;
-  using Mat11 = Eigen::Matrix<double, kLocal, kLocal>;
-  using Map3x11 = Eigen::Matrix<double, 3, kLocal>;
+  // Local coordinates z: slab (u, v, theta) 0-2, node (x, y) 3-4, lower 5-7, upper 8-10, and
+  // the section's twist 11, a function of 7 and 10 (not a coordinate of its own).
+  static constexpr int kLocal = 12;
+  static constexpr int kTwist = 11;
+  using MatL = Eigen::Matrix<double, kLocal, kLocal>;
+  using Map3xL = Eigen::Matrix<double, 3, kLocal>;
 
   void gather(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
   // Column states and contact at the node's trial position z_(3..4); the node's residual and
@@ -96,11 +102,15 @@ class StruckColumn3D final : public Element {
   // The floors' lateral displacement (or rate) at the column, plan frame: (1 - w) d_l + w d_u.
   Eigen::Vector2d chord(const Eigen::VectorXd& z, double w) const;
   int global_dof(int local) const;  // -1: the ground
+  // The section's twist (and rate) from the floors' into z(kTwist); a force on it to the floors.
+  void set_twist();
+  void spread_twist_force();
 
   std::string label_;
   StruckColumn3DSpec spec_;
   std::array<HingedColumn, 2> column_;
-  std::array<Map3x11, 2> map_;  // (lower, node, upper) of axis i from z
+  double twist_weight_ = 0.0;  // w = a / L of the upper floor's twist in the section's
+  std::array<Map3xL, 2> map_;  // (lower, node, upper) of axis i from z
   PolygonContact contact_;
   double h_ = 0.0;
   Eigen::Vector2d node_commit_ = Eigen::Vector2d::Zero(), rate_commit_ = Eigen::Vector2d::Zero();
@@ -113,7 +123,7 @@ class StruckColumn3D final : public Element {
   // Local displacement, rate and force (the contact works on vectors of kLocal; allocated once).
   Eigen::VectorXd zl_, zdl_, fl_;
   mutable Eigen::MatrixXd kk_, kd_;
-  mutable Mat11 kz_;
+  mutable MatL kz_;
   mutable Eigen::Matrix<double, 9, 9> kc_;
 };
 

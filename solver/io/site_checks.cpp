@@ -562,6 +562,28 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
                               "docs/floor-to-column.md)");
       }
     }
+  // One struck point per column: a column two slabs strike (two neighbours' floors at different
+  // heights against a corner column) would need a column with two nodes.
+  const bool any_struck =
+      std::any_of(config.structures3d.begin(), config.structures3d.end(),
+                  [](const Building3DConfig& b) { return b.struck_columns.given; });
+  if (any_struck && config.contact3d.pounding) {
+    const std::vector<StruckColumnSite> sites = struck_column_sites(config);
+    for (std::size_t s = 0; s < sites.size(); ++s)
+      for (std::size_t r = 0; r < s; ++r)
+        if (sites[r].struck == sites[s].struck && sites[r].storey == sites[s].storey &&
+            sites[r].column == sites[s].column) {
+          problems.error_at(
+              *marks[static_cast<std::size_t>(sites[s].struck)].item, "struck_columns",
+              "column " + sites[s].column_label + " of storey " + std::to_string(sites[s].storey) +
+                  " of '" + sites[s].struck_name + "' is struck by " + sites[r].striker_name + "/" +
+                  sites[r].slab_level + " and by " + sites[s].striker_name + "/" +
+                  sites[s].slab_level +
+                  ": one struck point per column is modelled (widen a gap or "
+                  "align those floors)");
+          break;
+        }
+  }
   return clearances;
 }
 

@@ -92,6 +92,7 @@ std::vector<StruckColumnSite> struck_column_sites(const ModelConfig& config) {
         s.z_upper = z_hi;
         s.column = static_cast<int>(c);
         s.column_label = columns[c].label;
+        s.section_W = section;
         s.separation = sep.distance;
         out.push_back(std::move(s));
       }
@@ -142,7 +143,7 @@ void add_struck_columns3d(Model& model, const ModelConfig& config) {
         spec.slab_plan_W.assign(body.plan_W.vertices().begin(), body.plan_W.vertices().end());
         spec.slab_mass = body.mass;
       }
-    spec.section_W = section_of(c);
+    spec.section_W = site.section_W;
     // The floors seen through a point load at a on a column fixed at both ends (the ground
     // takes its reaction: +inf).
     const double bb = L - a, r_lower = bb * bb * (L + 2 * a) / (L * L * L),

@@ -24,7 +24,8 @@ struct StruckColumnSite {
   double z_lower = 0.0, z_upper = 0.0;  // m, the storey's floors
   int column = -1;                      // index in that storey's columns
   std::string column_label;
-  double separation = 0.0;  // m, slab to section at rest
+  std::vector<Vec2> section_W;  // the column's section at rest (site_plan.h column_rectangle), m
+  double separation = 0.0;      // m, slab to section at rest
   // "<striker>/<level> on <struck> story <k> column <label>"
   std::string label() const;
 };
