@@ -79,6 +79,46 @@ const Level* level_named(const Structure& s, const std::string& level) {
   return nullptr;
 }
 
+// A struck column line (issue 26, 2D), from summary.json's struck_columns[] and the element's
+// label "<A>~<B>/<level> on <B> story <f>": A's level strikes B's storey f at the fraction r of
+// its height; the line facing A is drawn bent at its node.
+struct StruckLine {
+  std::string label;
+  const Structure* striker = nullptr;
+  const Level* slab = nullptr;
+  const Structure* struck = nullptr;
+  int upper = -1;  // index of floor f in struck->levels; the storey's lower level is upper - 1
+  double r = 0.0;
+  int drift = -1;  // history column of the node's drift from the chord
+};
+
+std::vector<StruckLine> struck_lines(const RunData& run) {
+  std::vector<StruckLine> out;
+  if (!run.summary.is_object() || !run.summary.contains("struck_columns")) return out;
+  for (const auto& j : run.summary["struck_columns"]) {
+    if (!j.contains("label") || !j.contains("struck_at_m") || !j.contains("height_m")) continue;
+    StruckLine l;
+    l.label = j["label"].get<std::string>();
+    const auto tilde = l.label.find('~'), slash = l.label.find('/'), on = l.label.find(" on ");
+    const auto story = l.label.rfind(" story ");
+    if (tilde == std::string::npos || slash == std::string::npos || on == std::string::npos ||
+        story == std::string::npos || !(tilde < slash && slash < on && on < story))
+      continue;
+    l.striker = structure_named(run, l.label.substr(0, tilde));
+    l.struck = structure_named(run, l.label.substr(tilde + 1, slash - tilde - 1));
+    if (!l.striker || !l.struck) continue;
+    l.slab = level_named(*l.striker, l.label.substr(slash + 1, on - slash - 1));
+    const std::string floor = l.struck->name + "/floor " + l.label.substr(story + 7);
+    for (std::size_t k = 0; k < l.struck->levels.size(); ++k)
+      if (l.struck->levels[k].label == floor) l.upper = static_cast<int>(k);
+    const double height = j["height_m"].get<double>();
+    l.r = height > 0 ? j["struck_at_m"].get<double>() / height : 0.0;
+    l.drift = run.find(l.label, "local_drift");
+    if (l.slab && l.upper >= 0) out.push_back(l);
+  }
+  return out;
+}
+
 }  // namespace
 
 FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& o) {
@@ -87,6 +127,34 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
   const double W = o.slab_width, H = o.slab_thickness, S = o.scale;
   const auto u_of = [&](const Level& l) { return value_at(run, l.u, t); };
   const auto a_of = [&](const Level& l) { return l.a_abs >= 0 ? value_at(run, l.a_abs, t) : 0.0; };
+
+  const std::vector<StruckLine> struck = struck_lines(run);
+  // The node of a struck line: displacement (the chord at r plus the local drift) and elevation.
+  const auto node_of = [&](const StruckLine& l, double& z) {
+    const Structure& s = *l.struck;
+    const Level& hi = s.levels[static_cast<std::size_t>(l.upper)];
+    const double z_lo =
+        l.upper > 0 ? s.levels[static_cast<std::size_t>(l.upper) - 1].elevation : 0.0;
+    const double u_lo = l.upper > 0 ? u_of(s.levels[static_cast<std::size_t>(l.upper) - 1]) : 0.0;
+    z = z_lo + l.r * (hi.elevation - z_lo);
+    return (1.0 - l.r) * u_lo + l.r * u_of(hi) + (l.drift >= 0 ? value_at(run, l.drift, t) : 0.0);
+  };
+  // A column line of storey `upper` of s from (x_a, z_a) to (x_b, z_b), bent at the struck node
+  // when the line faces its striker.
+  const auto column_line = [&](const Structure& s, std::size_t upper, double side, int a, int b,
+                               double ratio) {
+    for (const StruckLine& l : struck) {
+      const double towards = centre_of(*l.striker, o) < centre_of(s, o) ? -1.0 : 1.0;
+      if (l.struck != &s || l.upper != static_cast<int>(upper) || side * towards < 0) continue;
+      double z = 0.0;
+      const double u = node_of(l, z);
+      const int n = f.point(centre_of(s, o) + S * u + side * o.slab_width, z, u, 0.0);
+      f.cell(3, {a, n}, Block::kColumn, ratio);
+      f.cell(3, {n, b}, Block::kColumn, ratio);
+      return;
+    }
+    f.cell(3, {a, b}, Block::kColumn, ratio);
+  };
 
   for (const Structure& s : run.structures) {
     const double xc = centre_of(s, o);
@@ -113,7 +181,7 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
       for (double side : {-0.45, 0.45}) {
         const int g = f.point(xc + side * W, 0.0, 0.0, 0.0);
         const int b = f.point(x0 + side * W, first.elevation - H / 2, u0, a_of(first));
-        f.cell(3, {g, b}, Block::kColumn, u0 / first.elevation);
+        column_line(s, 0, side, g, b, u0 / first.elevation);
       }
     }
     // Columns between consecutive levels, with the story drift ratio; bearings under a slab
@@ -137,7 +205,7 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
       for (double side : {-0.45, 0.45}) {
         const int a = f.point(xc + S * ulo + side * W, lo.elevation + H / 2, ulo, a_of(lo));
         const int b = f.point(xc + S * uhi + side * W, hi.elevation - H / 2, uhi, a_of(hi));
-        f.cell(3, {a, b}, Block::kColumn, ratio);
+        column_line(s, k, side, a, b, ratio);
       }
     }
   }
@@ -171,6 +239,20 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
         f.rect(std::min(edge, face), std::max(edge, face), l->elevation - H / 2,
                l->elevation + H / 2, u, a_of(*l), Block::kContact, -w.side * force, pen);
       }
+      continue;
+    }
+    // A slab against a struck column line: from A's slab edge to the line's face at its node
+    // (the face at rest where B's slab edge is: the gap is the same).
+    if (const auto l = std::find_if(struck.begin(), struck.end(),
+                                    [&](const StruckLine& x) { return x.label == c.label; });
+        l != struck.end()) {
+      const double side = centre_of(*l->struck, o) < centre_of(*l->striker, o) ? -1.0 : 1.0;
+      const double ua = u_of(*l->slab);
+      double z = 0.0;
+      const double edge_a = centre_of(*l->striker, o) + S * ua + side * W / 2;
+      const double face_b = centre_of(*l->struck, o) + S * node_of(*l, z) - side * W / 2;
+      f.rect(std::min(edge_a, face_b), std::max(edge_a, face_b), l->slab->elevation - H / 2,
+             l->slab->elevation + H / 2, ua, a_of(*l->slab), Block::kContact, -side * force, pen);
       continue;
     }
     // Neighbour contact "<A>~<B>/<level>": overlap of A's and B's facing slab edges.

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
+#include <span>
 #include <tuple>
 
 #include "geometry/overlap.h"
@@ -96,6 +98,30 @@ std::vector<BodyState> body_states(const RunData& run, double t) {
   return states;
 }
 
+// A struck column's node at time t: displacement (the floors' at the column, interpolated at the
+// node's height, plus the element's local drift), its twist, and an acceleration interpolated
+// between the floors'.
+struct NodeState {
+  Vec2 d, a;
+  double theta = 0.0;
+};
+
+NodeState node_state(const RunData& run, const PlanColumn& c, const std::vector<BodyState>& states,
+                     double t) {
+  const BodyState ground;
+  const BodyState& lo = c.lower >= 0 ? states[c.lower] : ground;
+  const BodyState& hi = states[c.upper];
+  const double r = c.struck.node_height / c.height;
+  const auto at = [&](int column) { return column >= 0 ? value_at(run, column, t) : 0.0; };
+  NodeState n;
+  n.d = (1.0 - r) * lo.displacement(c.p_W) + r * hi.displacement(c.p_W) +
+        Vec2{at(c.struck.drift_x), at(c.struck.drift_y)};
+  n.a = (1.0 - r) * lo.acceleration(c.p_W) + r * hi.acceleration(c.p_W);
+  const double w = c.struck.twist_weight;
+  n.theta = (1.0 - w) * lo.theta + w * hi.theta;
+  return n;
+}
+
 }  // namespace
 
 FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions& o) {
@@ -135,7 +161,9 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     }
   }
 
-  // Columns: from the top of the level below (or the ground) to the underside of the floor.
+  // Columns: from the top of the level below (or the ground) to the underside of the floor; a
+  // struck column bent at its node, which the chord between the floors plus the element's local
+  // drift places.
   const BodyState ground;
   for (const PlanColumn& c : run.site.columns) {
     const BodyState& lo = c.lower >= 0 ? states[c.lower] : ground;
@@ -147,7 +175,17 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     v.block = Block::kColumn;
     v.structure = hi.structure;
     v.drift_ratio = std::hypot(d_hi.x - d_lo.x, d_hi.y - d_lo.y) / c.height;
-    f.cell(3, {point_of(lo, c.p_W, z_lo), point_of(hi, c.p_W, z_hi)}, v);
+    const int bottom = point_of(lo, c.p_W, z_lo), top = point_of(hi, c.p_W, z_hi);
+    if (c.struck.label.empty()) {
+      f.cell(3, {bottom, top}, v);
+      continue;
+    }
+    const NodeState n = node_state(run, c, states, t);
+    const int node =
+        f.point({c.p_W.x + S * n.d.x, c.p_W.y + S * n.d.y, z_lo + c.struck.node_height},
+                {n.d.x, n.d.y, 0.0}, {n.a.x, n.a.y, 0.0});
+    f.cell(3, {bottom, node}, v);
+    f.cell(3, {node, top}, v);
   }
 
   // Bearings: from the ground (fixed; drawn 0.6 m tall) or the top of the floor they stand on
@@ -173,12 +211,26 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
   for (const auto& [pair, rows] : run.contact_log.pairs) {
     const ContactEvent* e = run.contact_log.state_at(pair, t);
     if (!e || !e->in_contact) continue;
-    std::string a_key, b_key;
-    if (!split_pair(pair, a_key, b_key)) continue;
-    const int ia = run.site.find(a_key), ib = run.site.find(b_key);
-    if (ia < 0 || ib < 0) continue;
+    // A: the slab; B: the other slab or wall, or a struck column's section at its node.
+    int ia = -1;
+    std::optional<ConvexPolygon> pb;
+    if (const PlanColumn* c = run.site.struck(pair)) {
+      ia = c->struck.striker;
+      const NodeState n = node_state(run, *c, states, t);
+      const std::vector<Vec2>& section = c->struck.section_W;
+      pb = ConvexPolygon(std::span<const Vec2>(section.data(), section.size()))
+               .placed({n.d.x, n.d.y, n.theta}, c->p_W);
+    } else {
+      std::string a_key, b_key;
+      if (!split_pair(pair, a_key, b_key)) continue;
+      ia = run.site.find(a_key);
+      const int ib = run.site.find(b_key);
+      if (ib < 0) continue;
+      const BodyState& B = states[ib];
+      pb = run.site.bodies[ib].polygon().placed({B.u, B.v, B.theta});
+    }
+    if (ia < 0) continue;
     const BodyState& A = states[ia];
-    const BodyState& B = states[ib];
     const Vec2 n{e->n_x, e->n_y}, tangent{-e->n_y, e->n_x};
     CellValues v;
     v.block = Block::kContact;
@@ -200,8 +252,7 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
                      {acc.x, acc.y, 0.0}, {along_n * n.x, along_n * n.y, 0.0});
     };
     const ConvexPolygon pa = run.site.bodies[ia].polygon().placed({A.u, A.v, A.theta});
-    const ConvexPolygon pb = run.site.bodies[ib].polygon().placed({B.u, B.v, B.theta});
-    const Overlap ov = overlap_of(pa, pb);
+    const Overlap ov = overlap_of(pa, *pb);
     if (ov.area > 0.0 && ov.vertex_count >= 3) {
       std::vector<int> ids;
       for (int k = 0; k < ov.vertex_count; ++k) ids.push_back(on_a(ov.vertices[k], true));

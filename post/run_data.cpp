@@ -249,7 +249,13 @@ void find_geometry3d(RunData& run, const std::string& model_path) {
   } catch (const std::exception& e) {
     throw RunDataError(e.what());
   }
+  for (PlanColumn& c : run.site.columns)
+    if (!c.struck.label.empty()) {
+      c.struck.drift_x = run.find(c.struck.label, "local_drift_x");
+      c.struck.drift_y = run.find(c.struck.label, "local_drift_y");
+    }
   for (const auto& [pair, rows] : run.contact_log.pairs) {
+    if (run.site.struck(pair)) continue;  // a slab against a struck column's section
     std::string a, b;
     if (!split_pair(pair, a, b) || run.site.find(a) < 0 || run.site.find(b) < 0)
       run.notes.push_back("contact pair '" + pair +

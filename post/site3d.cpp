@@ -14,6 +14,7 @@
 #include "solver/structures/config3d.h"
 #include "solver/structures/levels3d.h"
 #include "solver/structures/pounding3d.h"
+#include "solver/structures/struck_columns3d.h"
 
 namespace isopound::post {
 namespace {
@@ -61,6 +62,12 @@ int Site3D::find(const std::string& key) const {
   return -1;
 }
 
+const PlanColumn* Site3D::struck(const std::string& label) const {
+  for (const PlanColumn& c : columns)
+    if (!c.struck.label.empty() && c.struck.label == label) return &c;
+  return nullptr;
+}
+
 Site3D site_geometry(const ModelConfig& config) {
   Site3D site;
   for (const Building3DConfig& b : config.structures3d) {
@@ -103,7 +110,11 @@ Site3D site_geometry(const ModelConfig& config) {
       const int below = under >= 0 ? body_of[static_cast<std::size_t>(under)] : -1;
       for (const Column3DConfig& c : storey.columns)
         site.columns.push_back({b.name + "/story " + std::to_string(floor) + "/" + c.label,
-                                to_plan(b, c.position), below, upper, storey.height});
+                                to_plan(b, c.position),
+                                below,
+                                upper,
+                                storey.height,
+                                {}});
     }
   }
   for (const SiteBody& b : site_bodies(config)) {
@@ -143,6 +154,22 @@ Site3D site_geometry(const ModelConfig& config) {
                      slab_bumper_strips(level.diaphragm->plan, side, b.bumper));
     }
   }
+  // Struck columns: the solver's elements (add_struck_columns3d), one per site of a structure
+  // that describes them, none without pounding.
+  if (config.contact3d.pounding)
+    for (const StruckColumnSite& s : struck_column_sites(config)) {
+      const Building3DConfig& b = config.structures3d.at(static_cast<std::size_t>(s.struck));
+      if (!b.struck_columns.given) continue;
+      const std::string column =
+          b.name + "/story " + std::to_string(s.storey) + "/" + s.column_label;
+      for (PlanColumn& c : site.columns)
+        if (c.label == column) {
+          const double length = s.z_upper - s.z_lower;
+          c.struck = {s.label(), s.slab_elevation - s.z_lower,
+                      site.find(s.striker_name + "/" + s.slab_level),
+                      (s.slab_elevation - s.z_lower) / length, s.section_W};
+        }
+    }
   return site;
 }
 

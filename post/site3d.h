@@ -30,6 +30,17 @@ struct PlanBody {
   ConvexPolygon polygon() const { return ConvexPolygon(plan_W); }
 };
 
+// A column a slab strikes between its floors (issue 26, struck_columns3d.h).
+struct PlanStruck {
+  std::string label;         // the element's ("<striker>/<level> on <struck> story <k> column <C>")
+  double node_height = 0.0;  // m, the struck node above the storey's lower floor
+  int striker = -1;          // body index of the striking slab
+  double twist_weight = 0.0;    // the node's twist: (1 - w) theta_lower + w theta_upper
+  std::vector<Vec2> section_W;  // the column's section at rest (its contact polygon)
+  // History columns of the node's drift from the chord between the floors (read_run; -1: none).
+  int drift_x = -1, drift_y = -1;
+};
+
 // A column of a storey: from the level below (a body, or the ground) to the floor above.
 struct PlanColumn {
   std::string label;  // "building/story 1/A1"
@@ -37,6 +48,7 @@ struct PlanColumn {
   int lower = -1;       // body index, -1: the ground (a fixed-base building's first storey)
   int upper = -1;       // body index
   double height = 0.0;  // m, the storey height
+  PlanStruck struck;    // struck.label empty: not struck
 };
 
 // A bearing under the base slab.
@@ -53,11 +65,14 @@ struct Site3D {
   std::vector<PlanColumn> columns;
   std::vector<PlanBearing> bearings;
   int find(const std::string& key) const;  // body index by key(), -1 when absent
+  // The struck column whose element is labelled `label`, or nullptr.
+  const PlanColumn* struck(const std::string& label) const;
 };
 
 // Slabs, columns and bearings of every 3D structure of the model, its moat walls (from the
 // solver's site_bodies(), whose slabs are checked against these) and the rubber strips of
-// bumpered walls and slab faces, named as the solver's contact labels name them (pounding3d.h).
+// bumpered walls and slab faces, named as the solver's contact labels name them (pounding3d.h),
+// and the columns the solver's struck-column elements act on (struck_columns3d.h).
 // Throws std::invalid_argument for a non-convex plan (the solver would not have run).
 Site3D site_geometry(const ModelConfig& config);
 

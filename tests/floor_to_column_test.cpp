@@ -217,7 +217,7 @@ TEST(FloorToColumnReduction, SlabNextToAFloorPoundsAsSlabToSlab) {
 TEST(FloorToColumnEnergy, BalanceAndPassivityPerEpisode) {
   ModelConfig config = test::load_model_text(
       roof_text(1.6, "400 kN*m", "analysis: {stepping: fixed, dt: 0.05 ms}\n"));
-  config.output.interval = 0.0;  // every step
+  config.output.interval = 0.0;  // a row per ground-motion sample
   const JobResult job = run_job(config);
   const AnalysisResult& r = job.analysis;
   ASSERT_EQ(struck_columns(job.model), 1);

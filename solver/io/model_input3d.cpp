@@ -13,6 +13,7 @@
 #include "solver/io/bumper_input.h"
 #include "solver/io/friction_pendulum_input.h"
 #include "solver/io/model_input.h"
+#include "solver/io/struck_columns_input.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/pounding3d.h"
 #include "solver/structures/rayleigh_modes.h"
@@ -357,6 +358,7 @@ Building3DConfig read_building3d(const InputNode& node) {
                     "elastic_limit_drift_ratio",
                     "isolation_level",
                     "isolation_height",
+                    "struck_columns",
                     "bumper"});
   Building3DConfig b;
   if (const auto n = node.find("name")) {
@@ -367,6 +369,7 @@ Building3DConfig read_building3d(const InputNode& node) {
   node.read_angle("rotation", b.rotation);
   node.read_boolean("isolated", b.isolated);
   node.read_boolean("p_delta", b.p_delta);
+  if (const auto s = node.find("struck_columns")) b.struck_columns = read_struck_columns3d(*s);
   node.read_number("elastic_limit_drift_ratio", Bound::kPositive, b.elastic_limit_drift_ratio);
   if (const auto r = node.find("polar_moment_rule"))
     b.polar_moment_rule = r->choice<EccentricPolarMoment>(

@@ -9,6 +9,7 @@
 #include "solver/elements/column_link.h"
 #include "solver/elements/contact.h"
 #include "solver/elements/polygon_contact.h"
+#include "solver/elements/struck_column3d.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -73,7 +74,10 @@ double impact_energy(const Model& model) {
   double sum = 0.0;
   for (const auto& el : model.elements) {
     if (is_contact(*el)) sum += el->output(5);
-    if (dynamic_cast<const PolygonContact*>(el.get())) sum += el->output(10);
+    // A 3D struck column's outputs begin with its PolygonContact's.
+    if (dynamic_cast<const PolygonContact*>(el.get()) ||
+        dynamic_cast<const StruckColumn3D*>(el.get()))
+      sum += el->output(10);
   }
   return sum;
 }
@@ -82,7 +86,9 @@ double impact_energy(const Model& model) {
 std::optional<double> friction_energy(const Model& model) {
   std::optional<double> sum;
   for (const auto& el : model.elements)
-    if (dynamic_cast<const PolygonContact*>(el.get())) sum = sum.value_or(0.0) + el->output(9);
+    if (dynamic_cast<const PolygonContact*>(el.get()) ||
+        dynamic_cast<const StruckColumn3D*>(el.get()))
+      sum = sum.value_or(0.0) + el->output(9);
   return sum;
 }
 

@@ -14,6 +14,7 @@
 #include "solver/structures/levels3d.h"
 #include "solver/structures/pounding2d.h"
 #include "solver/structures/pounding3d.h"
+#include "solver/structures/struck_columns3d.h"
 
 namespace isopound {
 namespace {
@@ -524,6 +525,24 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
             partner = &b;
           }
         if (!partner || dz < limits.level_tolerance) continue;
+        // Issue 26: strictly between two floors of a storey of j whose columns are described
+        // (struck_columns:), it strikes those columns (struck_columns3d.h), in elastic storeys.
+        const Building3DConfig& bj = config.structures3d[j];
+        if (bj.struck_columns.given) {
+          if (const int k = storey_between_floors(bj, a.elevation, limits.level_tolerance)) {
+            for (const Column3DConfig& c : bj.storeys[static_cast<std::size_t>(k) - 1].columns)
+              if (c.hysteresis.yields()) {
+                problems.error_at(*marks[j].item, "struck_columns",
+                                  a.level + " of '" + a.name + "' at " + metres(a.elevation) +
+                                      " strikes storey " + std::to_string(k) + " of '" + bj.name +
+                                      "', whose column " + c.label +
+                                      " yields: struck columns are modelled in elastic storeys "
+                                      "only");
+                break;
+              }
+            continue;
+          }
+        }
         // The storey under floor f (0-based f - 1); the base slab: the building's entry.
         const int base = base_level3d(config.structures3d[i]);
         const int storey = a.level_index == base
@@ -539,9 +558,32 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
                                                  : std::string("overlapping it")) +
                               ": it would pound that building's columns, which the model "
                               "does not represent (floors of pounding pairs must be at equal "
-                              "levels)");
+                              "levels, or describe its struck columns with struck_columns: {M_y}, "
+                              "docs/floor-to-column.md)");
       }
     }
+  // One struck point per column: a column two slabs strike (two neighbours' floors at different
+  // heights against a corner column) would need a column with two nodes.
+  const bool any_struck =
+      std::any_of(config.structures3d.begin(), config.structures3d.end(),
+                  [](const Building3DConfig& b) { return b.struck_columns.given; });
+  if (any_struck && config.contact3d.pounding) {
+    const std::vector<StruckColumnSite> sites = struck_column_sites(config);
+    for (std::size_t s = 0; s < sites.size(); ++s)
+      for (std::size_t r = 0; r < s; ++r)
+        if (sites[r].struck == sites[s].struck && sites[r].storey == sites[s].storey &&
+            sites[r].column == sites[s].column) {
+          problems.error_at(
+              *marks[static_cast<std::size_t>(sites[s].struck)].item, "struck_columns",
+              "column " + sites[s].column_label + " of storey " + std::to_string(sites[s].storey) +
+                  " of '" + sites[s].struck_name + "' is struck by " + sites[r].striker_name + "/" +
+                  sites[r].slab_level + " and by " + sites[s].striker_name + "/" +
+                  sites[s].slab_level +
+                  ": one struck point per column is modelled (widen a gap or "
+                  "align those floors)");
+          break;
+        }
+  }
   return clearances;
 }
 

@@ -10,6 +10,21 @@ namespace isopound {
 namespace {
 constexpr Dimension kAreaMoment{4, 0, 0};  // m^4
 constexpr Dimension kMoment{2, 1, -2};     // N m
+
+// shear_check and V_n: V_n required with shear_check: true, refused without it.
+void read_shear_check(const InputNode& node, bool& check, double& capacity) {
+  node.read_boolean("shear_check", check);
+  if (check) {
+    if (!node.has("V_n"))
+      node.fail_at_key("V_n",
+                       "missing required key 'V_n' (the column's shear capacity): shear_check "
+                       "is true");
+    capacity = node.required("V_n").quantity(dim::kForce, Bound::kPositive);
+  } else if (const auto v = node.find("V_n")) {
+    v->fail("only with shear_check: true");
+  }
+}
+
 }  // namespace
 
 StruckColumnsConfig read_struck_columns(const InputNode& node, const BuildingConfig& b) {
@@ -23,16 +38,7 @@ StruckColumnsConfig read_struck_columns(const InputNode& node, const BuildingCon
   c.yield_moment = yield.quantity(kMoment, Bound::kPositive);
   // Hardening keeps the node stable once all three hinges have formed (a mechanism).
   node.read_number("hardening_ratio", Bound::kPositive, c.hardening_ratio);
-  node.read_boolean("shear_check", c.shear_check);
-  if (c.shear_check) {
-    if (!node.has("V_n"))
-      node.fail_at_key("V_n",
-                       "missing required key 'V_n' (the column's shear capacity): shear_check "
-                       "is true");
-    c.shear_capacity = node.required("V_n").quantity(dim::kForce, Bound::kPositive);
-  } else if (const auto v = node.find("V_n")) {
-    v->fail("only with shear_check: true");
-  }
+  read_shear_check(node, c.shear_check, c.shear_capacity);
   // The struck columns are part of the storey: their share must fit in its stiffness.
   for (std::size_t f = 0; f < b.floors.size(); ++f) {
     const double h = b.floors[f].height;
@@ -46,6 +52,25 @@ StruckColumnsConfig read_struck_columns(const InputNode& node, const BuildingCon
       node.fail_at_key("I", what);
     }
   }
+  return c;
+}
+
+StruckColumns3DConfig read_struck_columns3d(const InputNode& node) {
+  node.expect_keys({"M_y", "hardening_ratio", "shear_check", "V_n"});
+  StruckColumns3DConfig c;
+  c.given = true;
+  // One M_y for both axes, or [M_y along axis 1, M_y along axis 2].
+  const InputNode yield = node.required("M_y");
+  if (yield.is_sequence()) {
+    if (yield.elements().size() != 2)
+      yield.fail("give one M_y or two: [along axis 1, along axis 2]");
+    for (std::size_t i = 0; i < 2; ++i)
+      c.yield_moment[i] = yield.elements()[i].quantity(kMoment, Bound::kPositive);
+  } else {
+    c.yield_moment[0] = c.yield_moment[1] = yield.quantity(kMoment, Bound::kPositive);
+  }
+  node.read_number("hardening_ratio", Bound::kPositive, c.hardening_ratio);
+  read_shear_check(node, c.shear_check, c.shear_capacity);
   return c;
 }
 

@@ -145,6 +145,20 @@ struct Adjacency3DConfig {
   double gap = 0.0;  // m, declared clear distance
 };
 
+// Issue 26, 3D (solver/structures/struck_columns3d.h, docs/floor-to-column.md): this building's
+// columns where another structure's slab strikes a storey between its floors. Each facing column
+// gets a lateral node at the slab's elevation: per principal axis a HingedColumn (E and I11 or
+// I22 from the storey's column) with plastic hinges of moment M_y at both ends and at the node.
+// given false: a slab between this building's floors is refused (site_checks.cpp).
+struct StruckColumns3DConfig {
+  bool given = false;
+  // N m: M_y of the hinges bending along axis 1 (about axis 2, I22) and along axis 2 (I11).
+  std::array<double, 2> yield_moment{0.0, 0.0};
+  double hardening_ratio = 0.01;  // hinge hardening H = ratio x 6 E I / h, per axis
+  bool shear_check = false;       // report the resultant |V| against V_n
+  double shear_capacity = 0.0;    // V_n, N (shear_check only)
+};
+
 struct Building3DConfig {
   std::string name = "building";
   Vec2 position;          // m: where the building frame's origin sits in the model's plan frame
@@ -175,6 +189,7 @@ struct Building3DConfig {
   // An elastic storey whose peak drift ratio exceeds this is flagged: the elastic model is
   // outside its range (summary elastic_limit_exceeded).
   double elastic_limit_drift_ratio = 0.01;
+  StruckColumns3DConfig struck_columns;  // issue 26: when another slab strikes its columns
 };
 
 }  // namespace isopound

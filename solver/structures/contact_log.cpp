@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "solver/elements/polygon_contact.h"
+#include "solver/elements/struck_column3d.h"
 
 namespace isopound {
 
@@ -21,6 +22,8 @@ ContactEventLog::ContactEventLog(const Model& model, const std::string& path) : 
   for (std::size_t e = 0; e < model.elements.size(); ++e)
     if (const auto* c = dynamic_cast<const PolygonContact*>(model.elements[e].get()))
       contacts_.push_back({static_cast<int>(e), c});
+    else if (const auto* s = dynamic_cast<const StruckColumn3D*>(model.elements[e].get()))
+      contacts_.push_back({static_cast<int>(e), &s->contact()});  // a slab on a column (issue 26)
   if (path.empty() || contacts_.empty()) return;
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));

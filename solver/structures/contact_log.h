@@ -15,8 +15,9 @@ class PolygonContact;
 
 class ContactEventLog final : public StepObserver {
  public:
-  // Watches the model's PolygonContacts; writes to `path` unless it is empty (then only the
-  // first-impact times are kept). Throws std::runtime_error when the file cannot be opened.
+  // Watches the model's PolygonContacts (and those inside StruckColumn3D elements); writes to
+  // `path` unless it is empty (then only the first-impact times are kept). Throws
+  // std::runtime_error when the file cannot be opened.
   ContactEventLog(const Model& model, const std::string& path);
   ~ContactEventLog() override;
   ContactEventLog(const ContactEventLog&) = delete;

@@ -14,6 +14,7 @@
 #include "solver/structures/contact_log.h"
 #include "solver/structures/pounding2d.h"
 #include "solver/structures/pounding3d.h"
+#include "solver/structures/struck_columns3d.h"
 
 namespace isopound {
 
@@ -45,6 +46,7 @@ Model build_model(const ModelConfig& config) {
     for (const Building3DConfig& b : config.structures3d) add_building3d(model, b);
     add_flexible_walls(model, config);
     add_pounding3d(model, config);
+    add_struck_columns3d(model, config);
     return model;
   }
   Model model = make_model(config.building);

@@ -26,13 +26,6 @@ std::vector<Vec2> placed(const Building3DConfig& b, const std::vector<Vec2>& pla
   return w;
 }
 
-int find_dof(const Model& model, const std::string& label) {
-  if (label.empty()) return -1;
-  for (int i = 0; i < model.size(); ++i)
-    if (model.dofs[i].label == label) return i;
-  throw std::logic_error("3D pounding: no DOF labelled '" + label + "'");
-}
-
 // Outward normal of a wall side in plan: the building frame's axis turned by its rotation.
 Vec2 wall_normal_W(const Building3DConfig& b, int side) {
   static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -42,6 +35,35 @@ Vec2 wall_normal_W(const Building3DConfig& b, int side) {
 }
 
 }  // namespace
+
+int find_dof(const Model& model, const std::string& label) {
+  if (label.empty()) return -1;
+  for (int i = 0; i < model.size(); ++i)
+    if (model.dofs[i].label == label) return i;
+  throw std::logic_error("3D pounding: no DOF labelled '" + label + "'");
+}
+
+PolygonContactConfig pair_law(const ModelConfig& config, double mass_a, double mass_b) {
+  PolygonContactConfig law = config.contact3d.law;
+  law.steps_per_contact = config.analysis.steps_per_contact;
+  if (config.contact3d.use_impact_law) {
+    ImpactLawConfig c = config.contact3d.impact_law;
+    c.mass_1 = mass_a;
+    c.mass_2 = mass_b;
+    law.normal_law = make_impact_law(c);
+  }
+  return law;
+}
+
+void note_upper_contact(Model& model, int u, int element, bool with_wall) {
+  for (StructureInfo& s : model.structures) {
+    if (!s.has_base || u < 0 ||
+        std::find(s.level_dofs.begin(), s.level_dofs.end(), u) == s.level_dofs.end())
+      continue;
+    const bool on_base = u == s.level_dofs[s.base_level];
+    if (!on_base || (s.base_level > 0 && !with_wall)) s.upper_contact_elements.push_back(element);
+  }
+}
 
 std::string slab_face_label(const std::string& slab_label, int side) {
   return slab_label + " " + MoatWalls3DConfig::kSideNames[side];
@@ -303,17 +325,10 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
                          s.plan_W,
                          s.mass};
     };
-    PolygonContactConfig law = config.contact3d.law;
-    law.steps_per_contact = config.analysis.steps_per_contact;
-    if (config.contact3d.use_impact_law) {
-      ImpactLawConfig c = config.contact3d.impact_law;
-      c.mass_1 = bodies[pair.a].mass;
-      c.mass_2 = bodies[pair.b].mass;
-      law.normal_law = make_impact_law(c);
-    }
     const SiteBody& a = bodies[pair.a];
     const SiteBody& b = bodies[pair.b];
-    const std::size_t first = model.elements.size();
+    const PolygonContactConfig law = pair_law(config, a.mass, b.mass);
+    const int first = static_cast<int>(model.elements.size());
     model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(a), body(b), law));
     add_wall_bumper(model, config, a, b, body, law);
     add_slab_bumper(model, config, a, b, body, law);
@@ -323,18 +338,9 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
     // storey by anything but its moat walls (a neighbour's floor is no foundation). The pair's
     // rubber strips go with it.
     const bool with_wall = a.role == "wall" || b.role == "wall";
-    for (const SiteBody* side : {&a, &b}) {
-      const int u = find_dof(model, side->dof_label_u);
-      for (StructureInfo& s : model.structures) {
-        if (!s.has_base || u < 0 ||
-            std::find(s.level_dofs.begin(), s.level_dofs.end(), u) == s.level_dofs.end())
-          continue;
-        const bool on_base = u == s.level_dofs[s.base_level];
-        if (!on_base || (s.base_level > 0 && !with_wall))
-          for (std::size_t e = first; e < model.elements.size(); ++e)
-            s.upper_contact_elements.push_back(static_cast<int>(e));
-      }
-    }
+    for (const SiteBody* side : {&a, &b})
+      for (int e = first; e < static_cast<int>(model.elements.size()); ++e)
+        note_upper_contact(model, find_dof(model, side->dof_label_u), e, with_wall);
   }
 }
 

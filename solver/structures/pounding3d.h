@@ -64,6 +64,14 @@ void add_flexible_walls(Model& model, const ModelConfig& config);
 inline constexpr const char* kBumperLabel = "bumper";
 inline constexpr const char* kBottomedLabel = "bumper bottomed";
 
+// The index of the DOF labelled `label` ("" gives -1: a fixed body); throws if there is none.
+int find_dof(const Model& model, const std::string& label);
+// The contact law of a pair of bodies of masses mass_a, mass_b (contact.law, or the impact law
+// along the normal with those masses), with the analysis' steps per contact.
+PolygonContactConfig pair_law(const ModelConfig& config, double mass_a, double mass_b);
+// Marks `element`, acting on the level whose x DOF is u, as not part of an isolated structure's
+// base shear unless u is its base slab (and, on a raised base slab, the element a wall's).
+void note_upper_contact(Model& model, int u, int element, bool with_wall);
 // A slab's face with rubber (Building3DConfig::bumper): "<slab label> <side>", e.g.
 // "east-neighbour/floor 1 west" (side: MoatWalls3DConfig::Side, building frame).
 std::string slab_face_label(const std::string& slab_label, int side);

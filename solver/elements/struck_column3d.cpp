@@ -1,0 +1,345 @@
+// A slab against one column of a 3D storey: the massless node (x, y) found by a damped Newton
+// iteration on its two equilibrium equations (column + contact), then condensed out of the
+// tangent on the slab and the two floors.
+#include "solver/elements/struck_column3d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace isopound {
+
+namespace {
+
+constexpr int kRest[9] = {0, 1, 2, 5, 6, 7, 8, 9, 10};  // z without the node
+
+ConvexPolygon polygon_of(const std::vector<Vec2>& v) {
+  return ConvexPolygon(std::span<const Vec2>(v.data(), v.size()));
+}
+
+PolygonBody slab_body(const StruckColumn3DSpec& s) {
+  return PolygonBody{0, 1, 2, {0.0, 0.0}, polygon_of(s.slab_plan_W), s.slab_mass};
+}
+
+PolygonBody section_body(const StruckColumn3DSpec& s) {
+  return PolygonBody{3, 4, 11, s.p_W, polygon_of(s.section_W), s.struck_mass};
+}
+
+}  // namespace
+
+StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec,
+                               const PolygonContactConfig& law)
+    : label_(std::move(label)),
+      spec_(spec),
+      column_{HingedColumn(spec.axis[0]), HingedColumn(spec.axis[1])},
+      twist_weight_(spec.axis[0].node / spec.axis[0].length),
+      contact_(label_, slab_body(spec), section_body(spec), law),
+      zl_(Eigen::VectorXd::Zero(kLocal)),
+      zdl_(Eigen::VectorXd::Zero(kLocal)),
+      fl_(Eigen::VectorXd::Zero(kLocal)),
+      kk_(Eigen::MatrixXd::Zero(kLocal, kLocal)),
+      kd_(Eigen::MatrixXd::Zero(kLocal, kLocal)) {
+  if (spec.slab[0] < 0 || spec.upper[0] < 0)
+    throw std::invalid_argument(label_ + ": a struck column needs a slab and a floor above");
+  // Axis i of the section: a1 = (c, s), a2 = (-s, c). A floor point at p moves by
+  // (u - p.y theta, v + p.x theta); its component along a is a.x u + a.y v + (p x a) theta.
+  const double c = std::cos(spec.orientation), s = std::sin(spec.orientation);
+  const Vec2 a[2] = {{c, s}, {-s, c}};
+  const Vec2 p = spec.p_W;
+  for (int i = 0; i < 2; ++i) {
+    Map3xL& m = map_[i];
+    m.setZero();
+    const double r[3] = {a[i].x, a[i].y, p.x * a[i].y - p.y * a[i].x};
+    for (int k = 0; k < 3; ++k) {
+      m(0, 5 + k) = r[k];
+      m(2, 8 + k) = r[k];
+    }
+    m(1, 3) = a[i].x;
+    m(1, 4) = a[i].y;
+  }
+  for (int i = 0; i < 2; ++i)
+    state_[i] = column_[i].respond(Eigen::Vector3d::Zero(), plastic_commit_[i]);
+}
+
+bool StruckColumn3D::add_dofs(std::vector<int>& dofs) const {
+  for (const std::array<int, 3>* d : {&spec_.slab, &spec_.lower, &spec_.upper})
+    for (const int k : *d)
+      if (k >= 0) dofs.push_back(k);
+  return true;
+}
+
+int StruckColumn3D::global_dof(int local) const {
+  if (local < 3) return spec_.slab[local];
+  if (local < 5) return -1;
+  if (local < 8) return spec_.lower[local - 5];
+  return spec_.upper[local - 8];
+}
+
+void StruckColumn3D::begin_step(double h, bool freeze_status) {
+  h_ = h;
+  contact_.begin_step(h, freeze_status);
+}
+
+void StruckColumn3D::gather(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+  for (const int k : kRest) {
+    const int g = global_dof(k);
+    zl_(k) = g >= 0 ? u[g] : 0.0;
+    zdl_(k) = g >= 0 ? v[g] : 0.0;
+  }
+  set_twist();
+}
+
+void StruckColumn3D::set_twist() {
+  const double w = twist_weight_;
+  zl_(kTwist) = (1.0 - w) * zl_(7) + w * zl_(10);
+  zdl_(kTwist) = (1.0 - w) * zdl_(7) + w * zdl_(10);
+}
+
+void StruckColumn3D::spread_twist_force() {
+  fl_(7) += (1.0 - twist_weight_) * fl_(kTwist);
+  fl_(10) += twist_weight_ * fl_(kTwist);
+  fl_(kTwist) = 0.0;
+}
+
+Eigen::Vector2d StruckColumn3D::chord(const Eigen::VectorXd& z, double w) const {
+  const Vec2 p = spec_.p_W;
+  const auto at = [&](int o) {
+    return Eigen::Vector2d(z(o) - p.y * z(o + 2), z(o + 1) + p.x * z(o + 2));
+  };
+  return (1.0 - w) * at(5) + w * at(8);
+}
+
+Eigen::Vector2d StruckColumn3D::node_residual(Eigen::Matrix2d& slope) {
+  Eigen::Matrix2d k_nn = Eigen::Matrix2d::Zero();
+  Eigen::Matrix<double, 2, 9> k_nr = Eigen::Matrix<double, 2, 9>::Zero();
+  fl_.setZero();
+  for (int i = 0; i < 2; ++i) {
+    const Eigen::Matrix<double, 3, 1> q = map_[i] * zl_;
+    state_[i] = column_[i].respond(q, plastic_commit_[i]);
+    fl_.noalias() += map_[i].transpose() * state_[i].force;
+    const MatL k = map_[i].transpose() * state_[i].tangent * map_[i];
+    k_nn += k.block<2, 2>(3, 3);
+    for (int j = 0; j < 9; ++j) k_nr.col(j) += k.block<2, 1>(3, kRest[j]);
+  }
+  // The node's rate: behind the contact's dashpot the backward difference (L-stable: the
+  // trapezoidal rule would leave a massless node ringing); free of it, the quasi-static rate
+  // through the column, exact as the floors' rates.
+  const bool damped = damped_commit_;
+  Eigen::Vector2d rate;
+  if (damped)
+    rate = h_ > 0 ? Eigen::Vector2d((zl_.segment<2>(3) - node_commit_) / h_) : rate_commit_;
+  else {
+    Eigen::Matrix<double, 9, 1> vr;
+    for (int j = 0; j < 9; ++j) vr(j) = zdl_(kRest[j]);
+    rate = -k_nn.partialPivLu().solve(k_nr * vr);
+  }
+  zdl_.segment<2>(3) = rate;
+  contact_.set_trial(zl_, zdl_);
+  contact_.add_force(fl_);
+  spread_twist_force();
+  kk_.setZero();
+  contact_.add_tangent(kk_, damped && h_ > 0 ? 1.0 / h_ : 0.0);
+  slope = k_nn + kk_.block<2, 2>(3, 3);
+  return fl_.segment<2>(3);
+}
+
+void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+  gather(u, v);
+  Eigen::Matrix2d slope;
+  if (!(h_ > 0)) {
+    // A restart (zero-length step): the node keeps its committed state.
+    zl_.segment<2>(3) = node_commit_;
+    node_residual(slope);
+    return;
+  }
+  // Predictor: the node moves with the elastic shape of the column between its floors (exact
+  // for an elastic column away from the slab).
+  zl_.segment<2>(3) = offset_commit_ + chord(zl_, column_[0].shape_at_node());
+  Eigen::Vector2d g = node_residual(slope);
+  for (int it = 0; it < 100; ++it) {
+    // Converged: the residual at the round-off of the column's forces, or a step below that of
+    // the node's position.
+    const double scale = state_[0].force.cwiseAbs().sum() + state_[1].force.cwiseAbs().sum();
+    if (g.norm() <= 1e-13 * scale) break;
+    const Eigen::Vector2d n = zl_.segment<2>(3);
+    const Eigen::Vector2d step = -slope.partialPivLu().solve(g);
+    if (!step.allFinite() || step.norm() <= 1e-14 * (1e-3 + n.norm())) break;
+    // Backtracking: the residual's norm must fall (kinks of the hinges and the contact).
+    double t = 1.0;
+    Eigen::Vector2d g_next;
+    for (int cut = 0; cut < 30; ++cut, t *= 0.5) {
+      zl_.segment<2>(3) = n + t * step;
+      g_next = node_residual(slope);
+      if (g_next.norm() < g.norm()) break;
+    }
+    if (!(g_next.norm() < g.norm())) {
+      zl_.segment<2>(3) = n;
+      g = node_residual(slope);
+      break;
+    }
+    g = g_next;
+  }
+}
+
+void StruckColumn3D::add_force(Eigen::VectorXd& f) const {
+  for (const int k : kRest) {
+    const int d = global_dof(k);
+    if (d >= 0) f[d] += fl_(k);
+  }
+}
+
+void StruckColumn3D::condensed_tangent(double velocity_factor) const {
+  // The contact's k and c apart: the slab's rate follows the stepper's factor, the node's its
+  // own rule (1/h behind a dashpot, else none).
+  kk_.setZero();
+  contact_.add_tangent(kk_, 0.0);
+  kd_.setZero();
+  contact_.add_tangent(kd_, 1.0);
+  kd_ -= kk_;
+  const double node_factor = damped_commit_ && velocity_factor > 0 && h_ > 0 ? 1.0 / h_ : 0.0;
+  for (int j = 0; j < kLocal; ++j)
+    kz_.col(j) = kk_.col(j) + kd_.col(j) * (j == 3 || j == 4 ? node_factor : velocity_factor);
+  for (int i = 0; i < 2; ++i) kz_ += map_[i].transpose() * state_[i].tangent * map_[i];
+  // The twist is T z: K <- T^T K T folds its column, then its row, into the floors' theta.
+  const double w = twist_weight_;
+  kz_.col(7) += (1.0 - w) * kz_.col(kTwist);
+  kz_.col(10) += w * kz_.col(kTwist);
+  kz_.row(7) += (1.0 - w) * kz_.row(kTwist);
+  kz_.row(10) += w * kz_.row(kTwist);
+  const Eigen::Matrix2d k_nn = kz_.block<2, 2>(3, 3);
+  const Eigen::PartialPivLU<Eigen::Matrix2d> lu(k_nn);
+  const bool invertible = std::abs(k_nn.determinant()) > 0;
+  for (int j = 0; j < 9; ++j) {
+    Eigen::Vector2d k_nj = kz_.block<2, 1>(3, kRest[j]);
+    const Eigen::Vector2d x =
+        invertible ? Eigen::Vector2d(lu.solve(k_nj)) : Eigen::Vector2d::Zero();
+    for (int i = 0; i < 9; ++i)
+      kc_(i, j) = kz_(kRest[i], kRest[j]) - kz_.block<1, 2>(kRest[i], 3).dot(x);
+  }
+}
+
+void StruckColumn3D::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
+  condensed_tangent(velocity_factor);
+  for (int i = 0; i < 9; ++i) {
+    const int di = global_dof(kRest[i]);
+    if (di < 0) continue;
+    for (int j = 0; j < 9; ++j) {
+      const int dj = global_dof(kRest[j]);
+      if (dj >= 0) K(di, dj) += kc_(i, j);
+    }
+  }
+}
+
+void StruckColumn3D::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  condensed_tangent(0.0);
+  for (int i = 0; i < 9; ++i) {
+    const int di = global_dof(kRest[i]);
+    if (di < 0) continue;
+    for (int j = 0; j < 9; ++j) {
+      const int dj = global_dof(kRest[j]);
+      if (dj >= 0) y[di] += kc_(i, j) * x[dj];
+    }
+  }
+}
+
+double StruckColumn3D::power(const Eigen::VectorXd& v) const {
+  double p = 0.0;
+  for (const int k : kRest) {
+    const int d = global_dof(k);
+    if (d >= 0) p += v[d] * fl_(k);
+  }
+  return p;
+}
+
+double StruckColumn3D::stored_energy() const {
+  return state_[0].stored_energy + state_[1].stored_energy + contact_.stored_energy();
+}
+
+bool StruckColumn3D::contact_damped() const {
+  kk_.setZero();
+  contact_.add_tangent(kk_, 0.0);
+  kd_.setZero();
+  contact_.add_tangent(kd_, 1.0);
+  return (kd_.block<2, 2>(3, 3) - kk_.block<2, 2>(3, 3)).cwiseAbs().maxCoeff() > 0;
+}
+
+void StruckColumn3D::commit() {
+  contact_.commit();
+  for (int i = 0; i < 2; ++i) {
+    hinge_energy_ +=
+        spec_.axis[i].yield_moment * (state_[i].plastic - plastic_commit_[i]).cwiseAbs().sum();
+    plastic_commit_[i] = state_[i].plastic;
+  }
+  node_commit_ = zl_.segment<2>(3);
+  rate_commit_ = zdl_.segment<2>(3);
+  offset_commit_ = node_commit_ - chord(zl_, column_[0].shape_at_node());
+  damped_commit_ = contact_damped();
+  if (spec_.shear_capacity > 0 && shear() >= spec_.shear_capacity) shear_failed_ = true;
+  shear_failed_commit_ = shear_failed_;
+}
+
+void StruckColumn3D::revert() {
+  contact_.revert();
+  zl_.segment<2>(3) = node_commit_;
+  zdl_.segment<2>(3) = rate_commit_;
+  shear_failed_ = shear_failed_commit_;
+}
+
+double StruckColumn3D::shear() const {
+  const double lower = std::hypot(state_[0].shear_lower, state_[1].shear_lower);
+  const double upper = std::hypot(state_[0].shear_upper, state_[1].shear_upper);
+  return std::max(lower, upper);
+}
+
+Vec2 StruckColumn3D::local_drift() const {
+  const HingedColumnSection& s = spec_.axis[0];
+  const Eigen::Vector2d d = zl_.segment<2>(3) - chord(zl_, s.node / s.length);
+  return {d.x(), d.y()};
+}
+
+double StruckColumn3D::hinge_dissipated_energy() const {
+  double e = hinge_energy_;
+  for (int i = 0; i < 2; ++i)
+    e += spec_.axis[i].yield_moment * (state_[i].plastic - plastic_commit_[i]).cwiseAbs().sum();
+  return e;
+}
+
+namespace {
+constexpr const char* kNames[] = {
+    "column_shear",           "shear_failed",     "moment_1_bottom", "moment_1_node",
+    "moment_1_top",           "moment_2_bottom",  "moment_2_node",   "moment_2_top",
+    "ductility_1_bottom",     "ductility_1_node", "ductility_1_top", "ductility_2_bottom",
+    "ductility_2_node",       "ductility_2_top",  "local_drift_x",   "local_drift_y",
+    "hinge_dissipated_energy"};
+constexpr const char* kUnits[] = {"N", "-", "N m", "N m", "N m", "N m", "N m", "N m", "-",
+                                  "-", "-", "-",   "-",   "-",   "m",   "m",   "J"};
+}  // namespace
+
+std::string StruckColumn3D::output_name(int i) const {
+  const int c = contact_.output_count();
+  return i < c ? contact_.output_name(i) : kNames[i - c];
+}
+
+std::string StruckColumn3D::output_unit(int i) const {
+  const int c = contact_.output_count();
+  return i < c ? contact_.output_unit(i) : kUnits[i - c];
+}
+
+double StruckColumn3D::output(int i) const {
+  const int c = contact_.output_count();
+  if (i < c) return contact_.output(i);
+  const int k = i - c;
+  if (k == 0) return shear();
+  if (k == 1) return shear_failed_ || (spec_.shear_capacity > 0 && shear() >= spec_.shear_capacity);
+  if (k < 8) return state_[(k - 2) / 3].moment((k - 2) % 3);
+  if (k < 14) {
+    const HingedColumnSection& s = spec_.axis[(k - 8) / 3];
+    const double theta_y = s.yield_moment * s.length / (6.0 * s.E * s.I);
+    return theta_y > 0 ? 1.0 + std::abs(state_[(k - 8) / 3].plastic((k - 8) % 3)) / theta_y : 0.0;
+  }
+  if (k == 14) return local_drift().x;
+  if (k == 15) return local_drift().y;
+  return hinge_dissipated_energy();
+}
+
+}  // namespace isopound
