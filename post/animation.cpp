@@ -139,8 +139,8 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
     z = z_lo + l.r * (hi.elevation - z_lo);
     return (1.0 - l.r) * u_lo + l.r * u_of(hi) + (l.drift >= 0 ? value_at(run, l.drift, t) : 0.0);
   };
-  // A column line of storey `upper` of s from (x_a, z_a) to (x_b, z_b), bent at the struck node
-  // when the line faces its striker.
+  // A column line of storey `upper` of s between points a and b, bent at the struck node when the
+  // line faces its striker.
   const auto column_line = [&](const Structure& s, std::size_t upper, double side, int a, int b,
                                double ratio) {
     for (const StruckLine& l : struck) {

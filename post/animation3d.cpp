@@ -99,8 +99,8 @@ std::vector<BodyState> body_states(const RunData& run, double t) {
 }
 
 // A struck column's node at time t: displacement (the floors' at the column, interpolated at the
-// node's height, plus the element's local drift), its twist, and an acceleration interpolated
-// between the floors'.
+// node's height, plus the element's local drift), its twist (the floors', interpolated alike: the
+// solver's StruckColumn3D), and an acceleration interpolated between the floors'.
 struct NodeState {
   Vec2 d, a;
   double theta = 0.0;
@@ -117,8 +117,7 @@ NodeState node_state(const RunData& run, const PlanColumn& c, const std::vector<
   n.d = (1.0 - r) * lo.displacement(c.p_W) + r * hi.displacement(c.p_W) +
         Vec2{at(c.struck.drift_x), at(c.struck.drift_y)};
   n.a = (1.0 - r) * lo.acceleration(c.p_W) + r * hi.acceleration(c.p_W);
-  const double w = c.struck.twist_weight;
-  n.theta = (1.0 - w) * lo.theta + w * hi.theta;
+  n.theta = (1.0 - r) * lo.theta + r * hi.theta;
   return n;
 }
 

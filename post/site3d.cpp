@@ -163,12 +163,9 @@ Site3D site_geometry(const ModelConfig& config) {
       const std::string column =
           b.name + "/story " + std::to_string(s.storey) + "/" + s.column_label;
       for (PlanColumn& c : site.columns)
-        if (c.label == column) {
-          const double length = s.z_upper - s.z_lower;
+        if (c.label == column)
           c.struck = {s.label(), s.slab_elevation - s.z_lower,
-                      site.find(s.striker_name + "/" + s.slab_level),
-                      (s.slab_elevation - s.z_lower) / length, s.section_W};
-        }
+                      site.find(s.striker_name + "/" + s.slab_level), s.section_W};
     }
   return site;
 }

@@ -35,7 +35,6 @@ struct PlanStruck {
   std::string label;         // the element's ("<striker>/<level> on <struck> story <k> column <C>")
   double node_height = 0.0;  // m, the struck node above the storey's lower floor
   int striker = -1;          // body index of the striking slab
-  double twist_weight = 0.0;    // the node's twist: (1 - w) theta_lower + w theta_upper
   std::vector<Vec2> section_W;  // the column's section at rest (its contact polygon)
   // History columns of the node's drift from the chord between the floors (read_run; -1: none).
   int drift_x = -1, drift_y = -1;
