@@ -240,8 +240,9 @@ TEST(FloorToColumn3DReduction, NothingStruckEqualsTheModelWithoutTheNodes) {
 // its top storey `top` high: 3.2 m pounds slab to slab at every floor, 3.21 m makes the
 // building's roof strike the tower's top column 1 cm below its roof (elevation_tolerance 5 mm:
 // floors closer than that meet slab to slab).
-std::string tower_text(const std::string& top, const std::string& m_y = "50 MN*m",
-                       const std::string& extra = "") {
+std::string tower_text(
+    const std::string& top, const std::string& m_y = "50 MN*m", const std::string& extra = "",
+    const std::string& contact = "{friction: false, elevation_tolerance: 5 mm}") {
   const std::string storey = "{height: 3.2 m, mass: 60 t, columns: [{at: [0 m, 0 m]}]}";
   return "structures:\n"
          "  - name: building\n"
@@ -265,7 +266,7 @@ std::string tower_text(const std::string& top, const std::string& m_y = "50 MN*m
          ", mass: 60 t, columns: [{at: [0 m, 0 m]}]}\n"
          "    damping: {type: rayleigh, ratios: [5 %, 5 %], modes: [1, 3]}\n"
          "    struck_columns: {M_y: " +
-         m_y + "}\n" + "contact: {friction: false, elevation_tolerance: 5 mm}\n" + extra +
+         m_y + "}\n" + "contact: " + contact + "\n" + extra +
          "ground_motion:\n"
          "  pulse: {amplitude: 1 m/s, period: 0.4 s, t_peak: 0.5 s, duration: 2 s}\n";
 }
@@ -333,6 +334,49 @@ TEST(FloorToColumn3DEnergy, BalanceAndPassivityPerEpisode) {
   EXPECT_GE(episodes, 1);
   EXPECT_GT(hinges, 0.0);  // the hinges yielded
   EXPECT_LT(r.energy.relative_error, 1e-6);
+}
+
+// The massless node is balanced at every accepted step, through onsets, slip and separations
+// (the building's roof against the tower's top column 0.8 m below its roof, with friction and
+// the thesis indentation rule for slab-to-slab contact, adaptive steps): its net force at the
+// round-off of the column's at nearly every step. The bound is 10 % of the column's force, the
+// order of what the node's own rate left: a Kelvin-Voigt force c_N v_impact jumped on at touch
+// that no node position could balance, and the thesis rule's triangle-to-quadrilateral jump of
+// c_N left nodes 25 % out of balance. Measured: 1.2 % at worst, a node at a friction kink that
+// the one-sided slopes do not yet resolve (docs/floor-to-column.md, open limitation).
+TEST(FloorToColumn3DNode, BalancedAtEveryStepThroughImpactsAndSlip) {
+  ModelConfig config =
+      test::load_model_text(tower_text("4.0 m", "100 kN*m", "", "{elevation_tolerance: 5 mm}"));
+  config.analysis.t_end = 1.5;
+  config.output.histories = false;
+  Model model = build_model(config);
+  const GroundMotion motion = load_ground_motion(config.ground_motion, true);
+  RunOptions options = run_options(config);
+  struct Check final : StepObserver {
+    int steps = 0, in_contact = 0, slipping = 0;
+    double worst = 0.0;
+    std::string where;
+    void after_step(double t, const Model& m) override {
+      ++steps;
+      for (const StruckColumn3D* c : struck(m)) {
+        const Vec2 f = c->node_force();
+        const double r = std::hypot(f.x, f.y) / (c->column_force() + 1.0);
+        if (r > worst) worst = r, where = c->label() + " at " + std::to_string(t) + " s";
+        const ContactSnapshot s = c->contact().snapshot();
+        in_contact += s.in_contact && s.normal_force > 0;
+        slipping += s.slipping;
+      }
+    }
+  } check;
+  options.observer = &check;
+  const AnalysisResult r = run_analysis(model, motion, options);
+  std::printf(
+      "[node 3D] worst residual %.3e (%s), %d steps, %d column-steps in contact, %d slipping\n",
+      check.worst, check.where.c_str(), check.steps, check.in_contact, check.slipping);
+  EXPECT_GT(check.in_contact, 20);
+  EXPECT_GT(check.slipping, 0);
+  EXPECT_LT(check.worst, 0.1) << check.where;
+  EXPECT_LT(r.energy.relative_error, 1e-4);
 }
 
 // Each bad input of tests/data/bad_models/floor_to_column3d_*.yaml is an InputError at the key

@@ -300,6 +300,11 @@ double PolygonContact::trial_witness() const {
   return copy.witness;
 }
 
+double PolygonContact::trial_depth() const {
+  const Vec6& q = trial_.q;
+  return -separation_of(place(a_, q[0], q[1], q[2]), place(b_, q[3], q[4], q[5])).distance;
+}
+
 void PolygonContact::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
   Vec6 q, qdot;
   gather(u, q);

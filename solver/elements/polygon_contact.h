@@ -146,6 +146,11 @@ class PolygonContact final : public Element {
   double normal_damping_ratio() const { return xi_; }
   // Witness (penetration −separation, m) and its rate (m/s) at the trial state.
   double trial_witness() const;
+  // The trial state's status, approach rate δ̇_N (m/s, > 0 closing) and penetration depth (m,
+  // −separation: continuous in the placement, 0 at touch; without the witness's rate).
+  bool trial_closed() const { return trial_.closed; }
+  double trial_approach_rate() const { return trial_.rate_n; }
+  double trial_depth() const;
 
   enum { kOutputCount = 12 };
 

@@ -1,6 +1,7 @@
 // A slab against one column of a 3D storey: the massless node (x, y) found by a damped Newton
-// iteration on its two equilibrium equations (column + contact), then condensed out of the
-// tangent on the slab and the two floors.
+// iteration on its two equilibrium equations (column + contact; in contact with the slope of
+// differences of the residual, and one-sided slopes at kinks), then condensed out of the tangent
+// on the slab and the two floors.
 #include "solver/elements/struck_column3d.h"
 
 #include <algorithm>
@@ -25,6 +26,14 @@ PolygonBody section_body(const StruckColumn3DSpec& s) {
   return PolygonBody{3, 4, 11, s.p_W, polygon_of(s.section_W), s.struck_mass};
 }
 
+// The slab-to-slab law with the mean-depth indentation in its damping, c_N ∝ √(A_c/δ_N) = √w:
+// the thesis rule's δ_N = 2A_c/w for a triangle halves c_N's A_c/δ_N when the overlap turns
+// from a triangle into a quadrilateral, a force jump that a massless node cannot balance.
+PolygonContactConfig struck_law(PolygonContactConfig law) {
+  law.indentation = IndentationRule::kMeanDepth;
+  return law;
+}
+
 }  // namespace
 
 StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec,
@@ -33,7 +42,7 @@ StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec
       spec_(spec),
       column_{HingedColumn(spec.axis[0]), HingedColumn(spec.axis[1])},
       twist_weight_(spec.axis[0].node / spec.axis[0].length),
-      contact_(label_, slab_body(spec), section_body(spec), law),
+      contact_(label_, slab_body(spec), section_body(spec), struck_law(law)),
       zl_(Eigen::VectorXd::Zero(kLocal)),
       zdl_(Eigen::VectorXd::Zero(kLocal)),
       fl_(Eigen::VectorXd::Zero(kLocal)),
@@ -57,8 +66,14 @@ StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec
     m(1, 3) = a[i].x;
     m(1, 4) = a[i].y;
   }
-  for (int i = 0; i < 2; ++i)
+  for (int i = 0; i < 2; ++i) {
     state_[i] = column_[i].respond(Eigen::Vector3d::Zero(), plastic_commit_[i]);
+    // The fixed-fixed beam's elastic stiffness at the node, 3 E I L^3 / (a^3 b^3), times 1 m.
+    const HingedColumnSection& c = spec.axis[i];
+    const double b = c.length - c.node;
+    force_per_length_ = std::max(force_per_length_, 3 * c.E * c.I * std::pow(c.length, 3) /
+                                                        (std::pow(c.node, 3) * std::pow(b, 3)));
+  }
 }
 
 bool StruckColumn3D::add_dofs(std::vector<int>& dofs) const {
@@ -109,7 +124,7 @@ Eigen::Vector2d StruckColumn3D::chord(const Eigen::VectorXd& z, double w) const 
   return (1.0 - w) * at(5) + w * at(8);
 }
 
-Eigen::Vector2d StruckColumn3D::node_residual(Eigen::Matrix2d& slope) {
+Eigen::Vector2d StruckColumn3D::node_residual(Eigen::Matrix2d* slope) {
   Eigen::Matrix2d k_nn = Eigen::Matrix2d::Zero();
   Eigen::Matrix<double, 2, 9> k_nr = Eigen::Matrix<double, 2, 9>::Zero();
   fl_.setZero();
@@ -117,9 +132,10 @@ Eigen::Vector2d StruckColumn3D::node_residual(Eigen::Matrix2d& slope) {
     const Eigen::Matrix<double, 3, 1> q = map_[i] * zl_;
     state_[i] = column_[i].respond(q, plastic_commit_[i]);
     fl_.noalias() += map_[i].transpose() * state_[i].force;
-    const MatL k = map_[i].transpose() * state_[i].tangent * map_[i];
-    k_nn += k.block<2, 2>(3, 3);
-    for (int j = 0; j < 9; ++j) k_nr.col(j) += k.block<2, 1>(3, kRest[j]);
+    // The node's rows of M^T T M (M: map_[i]), the only ones needed.
+    const Eigen::Matrix<double, 2, 3> a = map_[i].middleCols<2>(3).transpose() * state_[i].tangent;
+    k_nn.noalias() += a * map_[i].middleCols<2>(3);
+    for (int j = 0; j < 9; ++j) k_nr.col(j).noalias() += a * map_[i].col(kRest[j]);
   }
   // The node's rate: behind the contact's dashpot the backward difference (L-stable: the
   // trapezoidal rule would leave a massless node ringing); free of it, the quasi-static rate
@@ -135,49 +151,104 @@ Eigen::Vector2d StruckColumn3D::node_residual(Eigen::Matrix2d& slope) {
   }
   zdl_.segment<2>(3) = rate;
   contact_.set_trial(zl_, zdl_);
+  // In contact, the node's rate along the normal is set so that the approach rate is the
+  // backward difference of the penetration depth D (-separation, continuous in the placement)
+  // from max(D_commit, 0): (D - D_c+) / h, at a restart 0 after an onset, else the committed
+  // one. The dashpot force then starts from zero at touch (the massless node takes the slab's
+  // approach at once) and is continuous in the node's position, so the node always has a
+  // balanced position. (With the node's own rate, c_N v_impact jumped on at A_c -> 0+ and the
+  // node could stop out of balance at the contact surface.)
+  depth_rule_ = contact_.trial_closed() && (h_ > 0 || !damped);
+  if (depth_rule_) {
+    const Vec2 n = contact_.snapshot().n_AB;
+    normal_ = Eigen::Vector2d(n.x, n.y);
+    const double target = h_ > 0 ? (contact_.trial_depth() - depth_commit_) / h_ : 0.0;
+    zdl_.segment<2>(3) += (contact_.trial_approach_rate() - target) * normal_;
+    contact_.set_trial(zl_, zdl_);
+  }
   contact_.add_force(fl_);
   spread_twist_force();
-  kk_.setZero();
-  contact_.add_tangent(kk_, damped && h_ > 0 ? 1.0 / h_ : 0.0);
-  slope = k_nn + kk_.block<2, 2>(3, 3);
+  if (slope) *slope = k_nn;  // the column's; a closed contact's by differences (set_trial)
   return fl_.segment<2>(3);
 }
 
 void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
   gather(u, v);
-  Eigen::Matrix2d slope;
-  if (!(h_ > 0)) {
-    // A restart (zero-length step): the node keeps its committed state.
-    zl_.segment<2>(3) = node_commit_;
-    node_residual(slope);
-    return;
-  }
-  // Predictor: the node moves with the elastic shape of the column between its floors (exact
-  // for an elastic column away from the slab).
-  zl_.segment<2>(3) = offset_commit_ + chord(zl_, column_[0].shape_at_node());
-  Eigen::Vector2d g = node_residual(slope);
-  for (int it = 0; it < 100; ++it) {
-    // Converged: the residual at the round-off of the column's forces, or a step below that of
-    // the node's position.
-    const double scale = state_[0].force.cwiseAbs().sum() + state_[1].force.cwiseAbs().sum();
-    if (g.norm() <= 1e-13 * scale) break;
-    const Eigen::Vector2d n = zl_.segment<2>(3);
-    const Eigen::Vector2d step = -slope.partialPivLu().solve(g);
-    if (!step.allFinite() || step.norm() <= 1e-14 * (1e-3 + n.norm())) break;
-    // Backtracking: the residual's norm must fall (kinks of the hinges and the contact).
-    double t = 1.0;
-    Eigen::Vector2d g_next;
-    for (int cut = 0; cut < 30; ++cut, t *= 0.5) {
-      zl_.segment<2>(3) = n + t * step;
-      g_next = node_residual(slope);
-      if (g_next.norm() < g.norm()) break;
+  // The node's residual and its slope at n. In contact the slope is the central difference of
+  // the residual itself (the contact's law, the depth rule and the friction return map as
+  // applied; the node's rate makes it stiff, c / h): a step of 1e-11 m resolves the friction's
+  // stick ramp (width ~ mu F_N h / c_T) at any step and stays well above the round-off of the
+  // placements (~1e-15 m). The one-sided differences are kept for kinks (below).
+  std::array<Eigen::Matrix2d, 2> one_sided;  // forward, backward
+  const auto residual = [&](const Eigen::Vector2d& n, Eigen::Matrix2d& slope) {
+    zl_.segment<2>(3) = n;
+    Eigen::Vector2d g = node_residual(&slope);
+    one_sided = {slope, slope};
+    if (!contact_.trial_closed()) return g;
+    constexpr double eps = 1e-11;
+    Eigen::Vector2d g_plus[2], g_minus[2];
+    for (int j = 0; j < 2; ++j) {
+      zl_.segment<2>(3) = n + eps * Eigen::Vector2d::Unit(j);
+      g_plus[j] = node_residual(nullptr);
+      zl_.segment<2>(3) = n - eps * Eigen::Vector2d::Unit(j);
+      g_minus[j] = node_residual(nullptr);
     }
-    if (!(g_next.norm() < g.norm())) {
-      zl_.segment<2>(3) = n;
-      g = node_residual(slope);
+    zl_.segment<2>(3) = n;
+    g = node_residual(nullptr);
+    for (int j = 0; j < 2; ++j) {
+      slope.col(j) = (g_plus[j] - g_minus[j]) / (2 * eps);
+      one_sided[0].col(j) = (g_plus[j] - g) / eps;
+      one_sided[1].col(j) = (g - g_minus[j]) / eps;
+    }
+    return g;
+  };
+  // Predictor: the node moves with the elastic shape of the column between its floors (exact
+  // for an elastic column away from the slab). A restart (zero-length step, the floors where
+  // they were) starts from the committed node: there it is balanced unless the settled event
+  // changed the contact's force (an onset inside the overlap, a stick-slip switch).
+  Eigen::Vector2d n = h_ > 0
+                          ? Eigen::Vector2d(offset_commit_ + chord(zl_, column_[0].shape_at_node()))
+                          : node_commit_;
+  Eigen::Matrix2d slope;
+  Eigen::Vector2d g = residual(n, slope);
+  for (int it = 0; it < 100; ++it) {
+    // Converged: the residual at the round-off of the column's forces, or of its force at a
+    // node moved by the round-off of its placement (an unloaded column).
+    const double scale = state_[0].force.cwiseAbs().sum() + state_[1].force.cwiseAbs().sum() +
+                         1e-2 * force_per_length_;
+    if (g.norm() <= 1e-13 * scale) break;
+    // Newton with backtracking (the residual's norm must fall). At a kink (the no-tension
+    // clamp, stick to slip, a hinge) the central slope averages the two sides and its step may
+    // not descend: then the slopes of each side, one-sided per coordinate.
+    // (Balanced to 1e-6 of the column's forces, the round-off of the dashpot's D / h at the
+    // shortest steps is near: the kink slopes are not tried.)
+    const std::array<Eigen::Matrix2d, 2> side = one_sided;
+    const double column_force = scale - 1e-2 * force_per_length_;
+    const int candidates = g.norm() <= 1e-6 * column_force ? 1 : 5;
+    bool moved = false;
+    for (int candidate = 0; candidate < candidates && !moved; ++candidate) {
+      Eigen::Matrix2d j_try = slope;
+      if (candidate > 0)
+        for (int c = 0; c < 2; ++c) j_try.col(c) = side[((candidate - 1) >> c) & 1].col(c);
+      const Eigen::Vector2d step = -j_try.partialPivLu().solve(g);
+      if (!step.allFinite() || step.norm() <= 1e-14 * (1e-3 + n.norm())) continue;
+      double t = 1.0;
+      for (int cut = 0; cut < 30; ++cut, t *= 0.5) {
+        Eigen::Matrix2d slope_next;
+        const Eigen::Vector2d g_next = residual(n + t * step, slope_next);
+        if (g_next.norm() < g.norm()) {
+          n += t * step;
+          g = g_next;
+          slope = slope_next;
+          moved = true;
+          break;
+        }
+      }
+    }
+    if (!moved) {
+      g = residual(n, slope);  // the state back at the best node
       break;
     }
-    g = g_next;
   }
 }
 
@@ -196,9 +267,18 @@ void StruckColumn3D::condensed_tangent(double velocity_factor) const {
   kd_.setZero();
   contact_.add_tangent(kd_, 1.0);
   kd_ -= kk_;
-  const double node_factor = damped_commit_ && velocity_factor > 0 && h_ > 0 ? 1.0 / h_ : 0.0;
   for (int j = 0; j < kLocal; ++j)
-    kz_.col(j) = kk_.col(j) + kd_.col(j) * (j == 3 || j == 4 ? node_factor : velocity_factor);
+    if (j != 3 && j != 4) kz_.col(j) = kk_.col(j) + kd_.col(j) * velocity_factor;
+  kz_.middleCols<2>(3) = kk_.middleCols<2>(3);
+  if (velocity_factor > 0 && h_ > 0 && (damped_commit_ || depth_rule_)) {
+    const Eigen::Matrix<double, kLocal, 2> k_v = kd_.middleCols<2>(3);
+    kz_.middleCols<2>(3).noalias() += k_v * node_rate_slope() / h_;
+    // The depth rule's normal rate n.(v_slab) - (D - D_c+) / h from the slab's translation
+    // (its rotation and the twist left out): its dashpot no longer sees the slab's rate.
+    if (depth_rule_)
+      kz_.leftCols<2>().noalias() +=
+          k_v * normal_ * normal_.transpose() * (velocity_factor - 1.0 / h_);
+  }
   for (int i = 0; i < 2; ++i) kz_ += map_[i].transpose() * state_[i].tangent * map_[i];
   // The twist is T z: K <- T^T K T folds its column, then its row, into the floors' theta.
   const double w = twist_weight_;
@@ -255,6 +335,14 @@ double StruckColumn3D::stored_energy() const {
   return state_[0].stored_energy + state_[1].stored_energy + contact_.stored_energy();
 }
 
+Eigen::Matrix2d StruckColumn3D::node_rate_slope() const {
+  // Backward difference: I; the depth rule after an onset (quasi-static across the normal):
+  // n n^T. (Behind the dashpot the depth rule's normal part is I too: D falls as the node moves
+  // along n.)
+  if (damped_commit_) return Eigen::Matrix2d::Identity();
+  return depth_rule_ ? Eigen::Matrix2d(normal_ * normal_.transpose()) : Eigen::Matrix2d::Zero();
+}
+
 bool StruckColumn3D::contact_damped() const {
   kk_.setZero();
   contact_.add_tangent(kk_, 0.0);
@@ -274,6 +362,7 @@ void StruckColumn3D::commit() {
   rate_commit_ = zdl_.segment<2>(3);
   offset_commit_ = node_commit_ - chord(zl_, column_[0].shape_at_node());
   damped_commit_ = contact_damped();
+  depth_commit_ = contact_.trial_closed() ? std::max(contact_.trial_depth(), 0.0) : 0.0;
   if (spec_.shear_capacity > 0 && shear() >= spec_.shear_capacity) shear_failed_ = true;
   shear_failed_commit_ = shear_failed_;
 }

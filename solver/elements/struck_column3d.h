@@ -8,7 +8,11 @@
 // turns with the column's twist at the node, linear between the floors (uniform torsion between
 // two rigid diaphragms): theta_n = (1 - w) theta_lower + w theta_upper, w = a / L; the contact's
 // moment on the section goes to the floors with the same weights (so a slab at a floor meets the
-// section as it would meet that floor).
+// section as it would meet that floor). In contact the node's rate along the normal makes the
+// approach rate the backward difference of the penetration depth D (-separation) since
+// max(D_commit, 0), so that the Kelvin-Voigt dashpot starts from zero force at touch (a massless
+// node takes the slab's approach at once) and the node's residual is continuous; for the same
+// reason the damping uses the mean-depth indentation A_c / w (docs/floor-to-column.md).
 #pragma once
 
 #include <array>
@@ -77,6 +81,13 @@ class StruckColumn3D final : public Element {
   // The node's plan displacement (x, y), m, at the trial state.
   Vec2 node_displacement() const { return {zl_(3), zl_(4)}; }
   const ColumnState& column_state(int axis) const { return state_[axis]; }
+  // The node's net force (column + contact), N, and the column's force scale (the sum of the
+  // magnitudes of its end and node forces, both axes), N, at the trial state: the node is
+  // balanced when the first is at the round-off of the second.
+  Vec2 node_force() const { return {fl_(3), fl_(4)}; }
+  double column_force() const {
+    return state_[0].force.cwiseAbs().sum() + state_[1].force.cwiseAbs().sum();
+  }
   double shear() const;
   Vec2 local_drift() const;
   double hinge_dissipated_energy() const;
@@ -92,11 +103,13 @@ class StruckColumn3D final : public Element {
 
   void gather(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
   // Column states and contact at the node's trial position z_(3..4); the node's residual and
-  // its 2 x 2 derivative.
-  Eigen::Vector2d node_residual(Eigen::Matrix2d& slope);
+  // (given a slope) the column's 2 x 2 part of its derivative.
+  Eigen::Vector2d node_residual(Eigen::Matrix2d* slope);
   // The local tangent (column + contact, node velocity by its rule) into kz_; the condensed one
   // on the 9 floor/slab coordinates into kc_.
   void condensed_tangent(double velocity_factor) const;
+  // d(node rate)/d(node) times h, by the trial's rule.
+  Eigen::Matrix2d node_rate_slope() const;
   // The contact at its present state acts through a dashpot on the node.
   bool contact_damped() const;
   // The floors' lateral displacement (or rate) at the column, plan frame: (1 - w) d_l + w d_u.
@@ -109,8 +122,9 @@ class StruckColumn3D final : public Element {
   std::string label_;
   StruckColumn3DSpec spec_;
   std::array<HingedColumn, 2> column_;
-  double twist_weight_ = 0.0;  // w = a / L of the upper floor's twist in the section's
-  std::array<Map3xL, 2> map_;  // (lower, node, upper) of axis i from z
+  double twist_weight_ = 0.0;      // w = a / L of the upper floor's twist in the section's
+  double force_per_length_ = 0.0;  // N/m: the stiffer axis's elastic stiffness at the node
+  std::array<Map3xL, 2> map_;      // (lower, node, upper) of axis i from z
   PolygonContact contact_;
   double h_ = 0.0;
   Eigen::Vector2d node_commit_ = Eigen::Vector2d::Zero(), rate_commit_ = Eigen::Vector2d::Zero();
@@ -118,6 +132,11 @@ class StruckColumn3D final : public Element {
   std::array<HingeRotations, 2> plastic_commit_{HingeRotations::Zero(), HingeRotations::Zero()};
   std::array<ColumnState, 2> state_;
   bool damped_commit_ = false;
+  // The trial's node rate along the contact normal by the depth rule (node_residual), and the
+  // normal; the committed depth max(D, 0), m.
+  bool depth_rule_ = false;
+  Eigen::Vector2d normal_ = Eigen::Vector2d::Zero();
+  double depth_commit_ = 0.0;
   bool shear_failed_ = false, shear_failed_commit_ = false;
   double hinge_energy_ = 0.0;
   // Local displacement, rate and force (the contact works on vectors of kLocal; allocated once).
