@@ -214,8 +214,7 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   for (int it = 0; it < 100; ++it) {
     // Converged: the residual at the round-off of the column's forces, or of its force at a
     // node moved by the round-off of its placement (an unloaded column).
-    const double scale = state_[0].force.cwiseAbs().sum() + state_[1].force.cwiseAbs().sum() +
-                         1e-2 * force_per_length_;
+    const double scale = column_force() + 1e-2 * force_per_length_;
     if (g.norm() <= 1e-13 * scale) break;
     // Newton with backtracking (the residual's norm must fall). At a kink (the no-tension
     // clamp, stick to slip, a hinge) the central slope averages the two sides and its step may
@@ -223,8 +222,7 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
     // (Balanced to 1e-6 of the column's forces, the round-off of the dashpot's D / h at the
     // shortest steps is near: the kink slopes are not tried.)
     const std::array<Eigen::Matrix2d, 2> side = one_sided;
-    const double column_force = scale - 1e-2 * force_per_length_;
-    const int candidates = g.norm() <= 1e-6 * column_force ? 1 : 5;
+    const int candidates = g.norm() <= 1e-6 * column_force() ? 1 : 5;
     bool moved = false;
     for (int candidate = 0; candidate < candidates && !moved; ++candidate) {
       Eigen::Matrix2d j_try = slope;
