@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -592,6 +593,129 @@ TEST(PolygonContactTangent, CornerSlipMatchesTheClosedForm) {
   c.add_tangent(K, vf);
   EXPECT_NEAR(K(0, 0), df_du + vf * df_dv, 1e-6 * (df_du + vf * df_dv));
   EXPECT_NEAR(K(1, 0), cfg.mu_kinetic * (df_du + vf * df_dv), 1e-6 * (df_du + vf * df_dv));
+}
+
+// PolygonContactConfig::continuous_force (struck columns' massless nodes): a trial's
+// tangential force is continuous in the placement. A slab corner on a wall, committed in stick,
+// slid along the wall: by default F_T drops from mu_s F_N to mu_k F_N where the trial starts to
+// slip, continuous it stays at mu_s F_N (until the located event settles the drop). Committed in
+// slip, a frozen trial whose f_tr turns: by default F_T = mu_k F_N sign(f_tr) flips by 2 mu_k F_N,
+// continuous it sticks (F_T = f_tr) in between. The largest change of F_T between neighbouring
+// samples against the jump the default has (the spring's own change per sample is ~1e-3 of it).
+TEST(PolygonContactFriction, ContinuousFrictionHasNoJumpInATrial) {
+  const double theta = std::numbers::pi / 4, d = 0.01, h = 1e-4;
+  const double reach = 0.5 * kSide * std::sqrt(2.0);
+  const auto largest_jump = [&](bool continuous, bool from_slip, double& f_n) {
+    PolygonContactConfig cfg;
+    cfg.continuous_force = continuous;
+    PolygonContact c("c", slab(0), wall_at(reach), cfg);
+    Eigen::VectorXd u = Eigen::Vector3d(-d, 0.0, theta), v = Eigen::Vector3d(0.0, 0.0, 0.0);
+    c.begin_step(h, false);
+    c.set_trial(u, v);
+    c.commit();  // apart, turned
+    u[0] = d;
+    c.set_trial(u, v);
+    c.commit();  // stick, F_T = 0
+    if (from_slip) {
+      u[1] = 0.05;
+      c.set_trial(u, v);
+      c.commit();  // slipping (settled as the event would be: the trial's status committed)
+      c.begin_step(h, true);
+    }
+    f_n = c.output(0);
+    double jump = 0.0, previous = 0.0;
+    for (int i = 0; i <= 20000; ++i) {
+      if (from_slip)
+        v[1] = -2.0 + 2e-4 * i;  // f_tr = s_C + c_T rate_t turns
+      else
+        u[1] = 5e-8 * i;  // s_tr = k_T u climbs through mu_s F_N
+      c.set_trial(u, v);
+      if (i > 0) jump = std::max(jump, std::abs(c.output(1) - previous));
+      previous = c.output(1);
+    }
+    return jump;
+  };
+  PolygonContactConfig cfg;
+  double f_n = 0.0;
+  const double drop_default = largest_jump(false, false, f_n);
+  const double drop = (cfg.mu_static - cfg.mu_kinetic) * f_n;
+  const double drop_continuous = largest_jump(true, false, f_n);
+  const double flip_default = largest_jump(false, true, f_n);
+  const double flip = 2 * cfg.mu_kinetic * f_n;
+  const double flip_continuous = largest_jump(true, true, f_n);
+  std::printf(
+      "[friction] largest change per sample: stick->slip %.4g (default %.4g, drop %.4g), "
+      "frozen slip %.4g (default %.4g, flip %.4g) N\n",
+      drop_continuous, drop_default, drop, flip_continuous, flip_default, flip);
+  EXPECT_GT(drop_default, 0.9 * drop);
+  EXPECT_LT(drop_continuous, 1e-2 * drop);
+  EXPECT_GT(flip_default, 0.9 * flip);
+  EXPECT_LT(flip_continuous, 1e-2 * flip);
+}
+
+// continuous_force, the shallow overlap's shape: a slab corner (a triangular overlap, w = 2 x
+// depth) approaching a wall at 0.3 m/s, pressed through the sliver's depth. By default the shape
+// (w, n, C) of an overlap shallower than the sliver is that of one a sliver deeper, so c_N ∝ √w
+// jumps where the overlap reaches the sliver's depth; continuous, it is that of an overlap as
+// deep as the sliver, the same shape there. The largest change of F_N between neighbouring
+// samples against the default's.
+TEST(PolygonContactShape, ContinuousForceHasNoJumpAtTheSliversDepth) {
+  const double theta = std::numbers::pi / 4, rate = 0.3;
+  const double reach = 0.5 * kSide * std::sqrt(2.0);
+  const auto largest_jump = [&](bool continuous) {
+    PolygonContactConfig cfg;
+    cfg.friction = false;
+    cfg.continuous_force = continuous;
+    PolygonContact c("c", slab(0), wall_at(reach), cfg);
+    c.begin_step(1e-4, false);
+    double jump = 0.0, previous = 0.0;
+    for (int i = 1; i <= 4000; ++i) {
+      // depths 1e-10 .. 4e-7 m: the sliver is 1e-8 of the slab's size, 1e-7 m
+      const Eigen::VectorXd u = Eigen::Vector3d(1e-10 * i, 0.0, theta);
+      c.set_trial(u, Eigen::Vector3d(rate, 0.0, 0.0));
+      if (i > 1) jump = std::max(jump, std::abs(c.output(0) - previous));
+      previous = c.output(0);
+    }
+    return jump;
+  };
+  const double jump_default = largest_jump(false), jump = largest_jump(true);
+  std::printf("[shape] largest change of F_N per 1e-10 m: %.4g N (default %.4g N)\n", jump,
+              jump_default);
+  EXPECT_LT(jump, 0.05 * jump_default);
+}
+
+// The friction status forced (a caller solving by the two smooth branches): stick keeps
+// F_T = f_tr beyond the limit, slip gives mu F_N where the return map sticks; kFree the law.
+TEST(PolygonContactFriction, ForcedStatusGivesEachSmoothBranch) {
+  const double theta = std::numbers::pi / 4, d = 0.01;
+  const double reach = 0.5 * kSide * std::sqrt(2.0);
+  PolygonContactConfig cfg;
+  PolygonContact c("c", slab(0), wall_at(reach), cfg);
+  Eigen::VectorXd u = Eigen::Vector3d(-d, 0.0, theta), v = Eigen::Vector3d(0.0, 0.0, 0.0);
+  c.begin_step(1e-4, false);
+  c.set_trial(u, v);
+  c.commit();  // apart, turned
+  u[0] = d;
+  c.set_trial(u, v);
+  c.commit();   // stick, F_T = 0
+  u[1] = 1e-3;  // s_tr = k_T * ~1e-3 m, several times mu_s F_N
+  c.set_trial(u, v);
+  const double f_n = c.output(0), slip = std::abs(c.output(1));
+  ASSERT_EQ(c.output(6), 1.0);
+  EXPECT_NEAR(slip, cfg.mu_kinetic * f_n, 1e-9 * f_n);
+  c.force_friction_status(PolygonContact::FrictionStatus::kStick);
+  c.set_trial(u, v);
+  EXPECT_EQ(c.output(6), 0.0);
+  EXPECT_GT(std::abs(c.output(1)), 2 * cfg.mu_static * f_n);
+  u[1] = 1e-6;  // the return map sticks here
+  c.force_friction_status(PolygonContact::FrictionStatus::kSlip);
+  c.set_trial(u, v);
+  EXPECT_EQ(c.output(6), 1.0);
+  EXPECT_NEAR(std::abs(c.output(1)), cfg.mu_kinetic * c.output(0), 1e-9 * f_n);
+  c.force_friction_status(PolygonContact::FrictionStatus::kFree);
+  c.set_trial(u, v);
+  EXPECT_EQ(c.output(6), 0.0);
+  EXPECT_LT(std::abs(c.output(1)), cfg.mu_kinetic * c.output(0));
 }
 
 // Newton on a static problem K u + f_e(u) = p with the element's tangent and an LU solve (the

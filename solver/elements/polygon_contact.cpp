@@ -113,7 +113,8 @@ void PolygonContact::gather(const Eigen::VectorXd& x, Vec6& q) const {
 //   Δu_T = (d_B(C) − d_A(C))·t, d = material displacement from the committed placement
 //   s_tr = s_C + k_T Δu_T, f_tr = s_tr + c_T u̇_T; slip if |f_tr| > μ F_N (μ = μ_s from
 //     stick, μ_k from slip): F_T = μ_k F_N sign(f_tr), s = sign(s_tr) min(|s_tr|, μ_k F_N);
-//     else stick: s = s_tr, F_T = f_tr
+//     else stick: s = s_tr, F_T = f_tr (option continuous_force: from stick the slip takes
+//     μ_s F_N, and a frozen slip sticks if |f_tr| ≤ μ_k F_N; a forced status overrides)
 //   on B: F = F_N n − F_T t at C; on A: −F; generalized forces with (C − O') × F.
 void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, State& out) const {
   const State& C = committed_;
@@ -156,8 +157,12 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // damping c_N ∝ √(A_c/δ_N) is continuous across A_c = 0. (An edge tilted by 1e-15 rad makes
     // a 1e-16 m² overlap a triangle with w ≪ L, while the at-surface sliver is the full face:
     // the two would differ ~10x in c_N, and Newton flips between them at a separation.)
-    const ConvexPolygon deeper =
-        b_.shape.placed({q[3] - sliver * ov.n_AB.x, q[4] - sliver * ov.n_AB.y, q[5]}, b_.p_WO);
+    // (continuous_force: a sliver as deep as the overlap is short of it, so that the shape is
+    // continuous where the overlap reaches the sliver's depth too.)
+    const double mean_depth = ov.area / length(ov.p_WP2 - ov.p_WP1);
+    const double deeper_by = cfg_.continuous_force ? sliver - mean_depth : sliver;
+    const ConvexPolygon deeper = b_.shape.placed(
+        {q[3] - deeper_by * ov.n_AB.x, q[4] - deeper_by * ov.n_AB.y, q[5]}, b_.p_WO);
     const Overlap shape = overlap_of(pa, deeper, cfg_.overlap);
     if (shape.area > 0.0) ov = shape;
   }
@@ -219,13 +224,20 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // along f_tr and the spring is only ever lowered, s = sign(s_tr) min(|s_tr|, μ_k F_N); the
     // rest, F_T − s, has the sign of u̇_T, so it dissipates. Slip → stick is continuous.
     const double f_tr = s_tr + c_tangential_ * out.rate_t;
+    const bool from_stick = !out.slipping;
     if (!freeze) {
       const double mu = out.slipping ? cfg_.mu_kinetic : cfg_.mu_static;
       out.slipping = std::abs(f_tr) > mu * std::max(out.normal, 0.0);
+    } else if (out.slipping && cfg_.continuous_force) {
+      out.slipping = std::abs(f_tr) > cap;
     }
+    if (forced_friction_ != FrictionStatus::kFree)
+      out.slipping = forced_friction_ == FrictionStatus::kSlip;
     if (out.slipping) {
-      out.spring = sign_or_zero(s_tr) * std::min(std::abs(s_tr), cap);
-      out.tangential = sign_or_zero(f_tr) * cap;
+      const double limit =
+          cfg_.continuous_force && from_stick ? cfg_.mu_static * std::max(out.normal, 0.0) : cap;
+      out.spring = sign_or_zero(s_tr) * std::min(std::abs(s_tr), limit);
+      out.tangential = sign_or_zero(f_tr) * limit;
     } else {
       out.spring = s_tr;
       out.tangential = f_tr;

@@ -61,6 +61,14 @@ struct PolygonContactConfig {
   IndentationRule indentation = IndentationRule::kThesis;
   OverlapMethod overlap = OverlapMethod::kFast;
   double steps_per_contact = 100;  // step limit in contact: T_c / steps_per_contact
+  // The force continuous in the placement (struck columns: a massless node cannot balance a
+  // jump). Friction: from stick, a slipping trial takes mu_s F_N, the stick limit (such a trial
+  // always ends at its located stick-slip event, where the drop to mu_k F_N is settled); frozen
+  // in slip (a step cut at an event, a restart), the trial may stick (|f_tr| <= mu_k F_N), as
+  // unfrozen. Shallower than the sliver, the shape (w, n, C) of an overlap as deep as the sliver
+  // (not of one a sliver deeper). False: mu_k F_N from stick, a frozen slip stays slip
+  // (mu_k F_N sign(f_tr)), and the shape jumps where the overlap reaches the sliver's depth.
+  bool continuous_force = false;
   // What counts as an impact (impacts(), impacts_above_1mm_s()): every onset of a compressive
   // normal force pulse (kForcePulses: an onset of overlap, and a closed contact whose F_N was
   // clamped at 0 loading again while approaching), or overlap onsets only (kOnsets).
@@ -151,6 +159,12 @@ class PolygonContact final : public Element {
   bool trial_closed() const { return trial_.closed; }
   double trial_approach_rate() const { return trial_.rate_n; }
   double trial_depth() const;
+  // The friction status of the trials from now on: the return map's (kFree), or forced to stick
+  // (F_T = f_tr) or slip (F_T = mu F_N sign(f_tr)), each smooth in the placement. For a caller
+  // that solves for a body through the nonsmooth return map by its two smooth branches (a struck
+  // column's node), and sets it back to kFree before the trial is used.
+  enum class FrictionStatus { kFree, kStick, kSlip };
+  void force_friction_status(FrictionStatus status) { forced_friction_ = status; }
 
   enum { kOutputCount = 12 };
 
@@ -235,6 +249,7 @@ class PolygonContact final : public Element {
   double h_ = 0.0;
   double longest_step_ = 0.0;  // s, the longest step tried so far (the analysis interval)
   bool freeze_ = false;
+  FrictionStatus forced_friction_ = FrictionStatus::kFree;
   State committed_, trial_;
   double contact_step_ = 1e300;  // s, the contact step from the current contact's onset
   int steps_in_contact_ = 0;     // accepted steps since the current contact began

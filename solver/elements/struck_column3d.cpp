@@ -28,9 +28,13 @@ PolygonBody section_body(const StruckColumn3DSpec& s) {
 
 // The slab-to-slab law with the mean-depth indentation in its damping, c_N ∝ √(A_c/δ_N) = √w:
 // the thesis rule's δ_N = 2A_c/w for a triangle halves c_N's A_c/δ_N when the overlap turns
-// from a triangle into a quadrilateral, a force jump that a massless node cannot balance.
+// from a triangle into a quadrilateral, a force jump that a massless node cannot balance. For
+// the same reason the force is continuous otherwise too (PolygonContactConfig::continuous_force:
+// no mu_s -> mu_k drop inside a trial, no sign flip of a slip frozen where the node would stick,
+// no jump of the shallow overlap's shape at the sliver's depth).
 PolygonContactConfig struck_law(PolygonContactConfig law) {
   law.indentation = IndentationRule::kMeanDepth;
+  law.continuous_force = true;
   return law;
 }
 
@@ -209,44 +213,66 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   Eigen::Vector2d n = h_ > 0
                           ? Eigen::Vector2d(offset_commit_ + chord(zl_, column_[0].shape_at_node()))
                           : node_commit_;
-  Eigen::Matrix2d slope;
-  Eigen::Vector2d g = residual(n, slope);
-  for (int it = 0; it < 100; ++it) {
-    // Converged: the residual at the round-off of the column's forces, or of its force at a
-    // node moved by the round-off of its placement (an unloaded column).
-    const double scale = column_force() + 1e-2 * force_per_length_;
-    if (g.norm() <= 1e-13 * scale) break;
-    // Newton with backtracking (the residual's norm must fall). At a kink (the no-tension
-    // clamp, stick to slip, a hinge) the central slope averages the two sides and its step may
-    // not descend: then the slopes of each side, one-sided per coordinate.
-    // (Balanced to 1e-6 of the column's forces, the round-off of the dashpot's D / h at the
-    // shortest steps is near: the kink slopes are not tried.)
-    const std::array<Eigen::Matrix2d, 2> side = one_sided;
-    const int candidates = g.norm() <= 1e-6 * column_force() ? 1 : 5;
-    bool moved = false;
-    for (int candidate = 0; candidate < candidates && !moved; ++candidate) {
-      Eigen::Matrix2d j_try = slope;
-      if (candidate > 0)
-        for (int c = 0; c < 2; ++c) j_try.col(c) = side[((candidate - 1) >> c) & 1].col(c);
-      const Eigen::Vector2d step = -j_try.partialPivLu().solve(g);
-      if (!step.allFinite() || step.norm() <= 1e-14 * (1e-3 + n.norm())) continue;
-      double t = 1.0;
-      for (int cut = 0; cut < 30; ++cut, t *= 0.5) {
-        Eigen::Matrix2d slope_next;
-        const Eigen::Vector2d g_next = residual(n + t * step, slope_next);
-        if (g_next.norm() < g.norm()) {
-          n += t * step;
-          g = g_next;
-          slope = slope_next;
-          moved = true;
-          break;
+  // Newton from the node; true when converged: the residual at the round-off of the column's
+  // forces, or of its force at a node moved by the round-off of its placement (an unloaded one).
+  const auto solve = [&](Eigen::Vector2d& node, Eigen::Vector2d& g, Eigen::Matrix2d& slope) {
+    g = residual(node, slope);
+    for (int it = 0; it < 100; ++it) {
+      const double scale = column_force() + 1e-2 * force_per_length_;
+      if (g.norm() <= 1e-13 * scale) return true;
+      // Newton with backtracking (the residual's norm must fall). At a kink (the no-tension
+      // clamp, stick to slip, a hinge) the central slope averages the two sides and its step may
+      // not descend: then the slopes of each side, one-sided per coordinate.
+      // (Balanced to 1e-6 of the column's forces, the round-off of the dashpot's D / h at the
+      // shortest steps is near: the kink slopes are not tried.)
+      const std::array<Eigen::Matrix2d, 2> side = one_sided;
+      const int candidates = g.norm() <= 1e-6 * column_force() ? 1 : 5;
+      bool moved = false;
+      for (int candidate = 0; candidate < candidates && !moved; ++candidate) {
+        Eigen::Matrix2d j_try = slope;
+        if (candidate > 0)
+          for (int c = 0; c < 2; ++c) j_try.col(c) = side[((candidate - 1) >> c) & 1].col(c);
+        const Eigen::Vector2d step = -j_try.partialPivLu().solve(g);
+        if (!step.allFinite() || step.norm() <= 1e-14 * (1e-3 + node.norm())) continue;
+        double t = 1.0;
+        for (int cut = 0; cut < 30; ++cut, t *= 0.5) {
+          Eigen::Matrix2d slope_next;
+          const Eigen::Vector2d g_next = residual(node + t * step, slope_next);
+          if (g_next.norm() < g.norm()) {
+            node += t * step;
+            g = g_next;
+            slope = slope_next;
+            moved = true;
+            break;
+          }
         }
       }
+      if (!moved) {
+        g = residual(node, slope);  // the state back at the best node
+        return false;
+      }
     }
-    if (!moved) {
-      g = residual(n, slope);  // the state back at the best node
-      break;
+    return false;
+  };
+  Eigen::Matrix2d slope;
+  Eigen::Vector2d g;
+  if (!solve(n, g, slope) && contact_.trial_closed() && g.norm() > 1e-6 * column_force()) {
+    // The return map's stick band is narrow at short steps (2 mu F_N / (k_T + c_T / h) wide in
+    // the node's position) and the residual flat in slip outside it: Newton from a slip may not
+    // find a node that sticks. The two smooth branches apart, stick then slip, from the best
+    // node; the node is taken where the law itself (the status then consistent) balances best.
+    for (const auto status :
+         {PolygonContact::FrictionStatus::kStick, PolygonContact::FrictionStatus::kSlip}) {
+      Eigen::Vector2d n_branch = n, g_branch;
+      contact_.force_friction_status(status);
+      solve(n_branch, g_branch, slope);
+      contact_.force_friction_status(PolygonContact::FrictionStatus::kFree);
+      g_branch = residual(n_branch, slope);
+      const bool better = g_branch.norm() < g.norm();
+      if (better) n = n_branch, g = g_branch;
+      if (g.norm() <= 1e-13 * (column_force() + 1e-2 * force_per_length_)) break;
     }
+    g = residual(n, slope);
   }
 }
 
