@@ -595,6 +595,22 @@ TEST(PolygonContactTangent, CornerSlipMatchesTheClosedForm) {
   EXPECT_NEAR(K(1, 0), cfg.mu_kinetic * (df_du + vf * df_dv), 1e-6 * (df_du + vf * df_dv));
 }
 
+// A slab corner (turned 45 degrees) pressed d = 1 cm into a wall and committed in stick with its
+// spring at 0: committed apart at the same turn first, so that the onset slides nothing.
+PolygonContact corner_in_stick(const PolygonContactConfig& cfg, Eigen::VectorXd& u,
+                               const Eigen::VectorXd& v, double h) {
+  const double theta = std::numbers::pi / 4, d = 0.01;
+  PolygonContact c("c", slab(0), wall_at(0.5 * kSide * std::sqrt(2.0)), cfg);
+  u = Eigen::Vector3d(-d, 0.0, theta);
+  c.begin_step(h, false);
+  c.set_trial(u, v);
+  c.commit();  // apart, turned
+  u[0] = d;
+  c.set_trial(u, v);
+  c.commit();  // stick, F_T = 0
+  return c;
+}
+
 // PolygonContactConfig::continuous_force (struck columns' massless nodes): a trial's
 // tangential force is continuous in the placement. A slab corner on a wall, committed in stick,
 // slid along the wall: by default F_T drops from mu_s F_N to mu_k F_N where the trial starts to
@@ -603,19 +619,12 @@ TEST(PolygonContactTangent, CornerSlipMatchesTheClosedForm) {
 // continuous it sticks (F_T = f_tr) in between. The largest change of F_T between neighbouring
 // samples against the jump the default has (the spring's own change per sample is ~1e-3 of it).
 TEST(PolygonContactFriction, ContinuousFrictionHasNoJumpInATrial) {
-  const double theta = std::numbers::pi / 4, d = 0.01, h = 1e-4;
-  const double reach = 0.5 * kSide * std::sqrt(2.0);
+  const double h = 1e-4;
   const auto largest_jump = [&](bool continuous, bool from_slip, double& f_n) {
     PolygonContactConfig cfg;
     cfg.continuous_force = continuous;
-    PolygonContact c("c", slab(0), wall_at(reach), cfg);
-    Eigen::VectorXd u = Eigen::Vector3d(-d, 0.0, theta), v = Eigen::Vector3d(0.0, 0.0, 0.0);
-    c.begin_step(h, false);
-    c.set_trial(u, v);
-    c.commit();  // apart, turned
-    u[0] = d;
-    c.set_trial(u, v);
-    c.commit();  // stick, F_T = 0
+    Eigen::VectorXd u, v = Eigen::Vector3d(0.0, 0.0, 0.0);
+    PolygonContact c = corner_in_stick(cfg, u, v, h);
     if (from_slip) {
       u[1] = 0.05;
       c.set_trial(u, v);
@@ -687,17 +696,9 @@ TEST(PolygonContactShape, ContinuousForceHasNoJumpAtTheSliversDepth) {
 // The friction status forced (a caller solving by the two smooth branches): stick keeps
 // F_T = f_tr beyond the limit, slip gives mu F_N where the return map sticks; kFree the law.
 TEST(PolygonContactFriction, ForcedStatusGivesEachSmoothBranch) {
-  const double theta = std::numbers::pi / 4, d = 0.01;
-  const double reach = 0.5 * kSide * std::sqrt(2.0);
   PolygonContactConfig cfg;
-  PolygonContact c("c", slab(0), wall_at(reach), cfg);
-  Eigen::VectorXd u = Eigen::Vector3d(-d, 0.0, theta), v = Eigen::Vector3d(0.0, 0.0, 0.0);
-  c.begin_step(1e-4, false);
-  c.set_trial(u, v);
-  c.commit();  // apart, turned
-  u[0] = d;
-  c.set_trial(u, v);
-  c.commit();   // stick, F_T = 0
+  Eigen::VectorXd u, v = Eigen::Vector3d(0.0, 0.0, 0.0);
+  PolygonContact c = corner_in_stick(cfg, u, v, 1e-4);
   u[1] = 1e-3;  // s_tr = k_T * ~1e-3 m, several times mu_s F_N
   c.set_trial(u, v);
   const double f_n = c.output(0), slip = std::abs(c.output(1));

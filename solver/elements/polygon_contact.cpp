@@ -152,15 +152,15 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   bool at_surface = false;
   const double sliver = kSurfaceSliver * length_scale_;
   const double actual_area = ov.area;
-  if (overlapping && ov.area < sliver * length(ov.p_WP2 - ov.p_WP1)) {
+  const double overlap_width = length(ov.p_WP2 - ov.p_WP1);
+  if (overlapping && ov.area < sliver * overlap_width) {
     // Shallower than the sliver: the shape (w, n, C) is taken from the sliver too, so that the
     // damping c_N ∝ √(A_c/δ_N) is continuous across A_c = 0. (An edge tilted by 1e-15 rad makes
     // a 1e-16 m² overlap a triangle with w ≪ L, while the at-surface sliver is the full face:
     // the two would differ ~10x in c_N, and Newton flips between them at a separation.)
     // (continuous_force: a sliver as deep as the overlap is short of it, so that the shape is
     // continuous where the overlap reaches the sliver's depth too.)
-    const double mean_depth = ov.area / length(ov.p_WP2 - ov.p_WP1);
-    const double deeper_by = cfg_.continuous_force ? sliver - mean_depth : sliver;
+    const double deeper_by = cfg_.continuous_force ? sliver - ov.area / overlap_width : sliver;
     const ConvexPolygon deeper = b_.shape.placed(
         {q[3] - deeper_by * ov.n_AB.x, q[4] - deeper_by * ov.n_AB.y, q[5]}, b_.p_WO);
     const Overlap shape = overlap_of(pa, deeper, cfg_.overlap);

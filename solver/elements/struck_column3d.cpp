@@ -213,13 +213,16 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   Eigen::Vector2d n = h_ > 0
                           ? Eigen::Vector2d(offset_commit_ + chord(zl_, column_[0].shape_at_node()))
                           : node_commit_;
-  // Newton from the node; true when converged: the residual at the round-off of the column's
-  // forces, or of its force at a node moved by the round-off of its placement (an unloaded one).
+  // Converged: the residual at the round-off of the column's forces, or of its force at a node
+  // moved by the round-off of its placement (an unloaded one).
+  const auto converged = [&](const Eigen::Vector2d& g) {
+    return g.norm() <= 1e-13 * (column_force() + 1e-2 * force_per_length_);
+  };
+  // Newton from the node; true when converged.
   const auto solve = [&](Eigen::Vector2d& node, Eigen::Vector2d& g, Eigen::Matrix2d& slope) {
     g = residual(node, slope);
     for (int it = 0; it < 100; ++it) {
-      const double scale = column_force() + 1e-2 * force_per_length_;
-      if (g.norm() <= 1e-13 * scale) return true;
+      if (converged(g)) return true;
       // Newton with backtracking (the residual's norm must fall). At a kink (the no-tension
       // clamp, stick to slip, a hinge) the central slope averages the two sides and its step may
       // not descend: then the slopes of each side, one-sided per coordinate.
@@ -270,7 +273,7 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
       g_branch = residual(n_branch, slope);
       const bool better = g_branch.norm() < g.norm();
       if (better) n = n_branch, g = g_branch;
-      if (g.norm() <= 1e-13 * (column_force() + 1e-2 * force_per_length_)) break;
+      if (converged(g)) break;
     }
     g = residual(n, slope);
   }
