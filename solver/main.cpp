@@ -48,10 +48,14 @@ namespace {
 
 enum ExitCode { kOk = 0, kFailure = 1, kBadInput = 2, kDiverged = 3 };
 
-// A progress line on stderr for runs longer than a few seconds (rewritten in place).
+// A progress line on stderr for runs longer than a few seconds (rewritten in place). The time
+// left is at the pace of the last ~10 s of wall time, not the average since the start: a run
+// whose steps shrink (contacts, struck columns) would otherwise be promised far too soon.
 class ProgressLine {
  public:
-  explicit ProgressLine(bool enabled) : enabled_(enabled), start_(Clock::now()) {}
+  explicit ProgressLine(bool enabled) : enabled_(enabled), start_(Clock::now()) {
+    samples_[0] = {start_, 0.0};
+  }
   ~ProgressLine() {
     if (shown_) std::fputc('\n', stderr);
   }
@@ -62,18 +66,33 @@ class ProgressLine {
       return;
     last_ = now;
     shown_ = true;
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const double left = t > 0 ? elapsed * (total - t) / t : 0.0;
-    std::fprintf(stderr, "\r  analysed %.1f of %.1f s (%.0f %%), about %.0f s left   ", t, total,
+    // One sample per line (every 0.5 s): the oldest of the last kSamples spans ~10 s.
+    const Sample& from = samples_[count_ < kSamples ? 0 : count_ % kSamples];
+    samples_[count_++ % kSamples] = {now, t};
+    const double wall = std::chrono::duration<double>(now - from.wall).count();
+    const double done = t - from.t;
+    char left[64];
+    if (done > 0)
+      std::snprintf(left, sizeof left, "about %.0f s left", wall * (total - t) / done);
+    else
+      std::snprintf(left, sizeof left, "no step for %.0f s", wall);
+    std::fprintf(stderr, "\r  analysed %.4g of %.4g s (%.0f %%), %s   ", t, total,
                  100 * t / total, left);
     std::fflush(stderr);
   }
 
  private:
   using Clock = std::chrono::steady_clock;
+  struct Sample {
+    Clock::time_point wall;
+    double t = 0.0;
+  };
+  static constexpr int kSamples = 20;
   bool enabled_;
   bool shown_ = false;
   Clock::time_point start_, last_{};
+  Sample samples_[kSamples];
+  int count_ = 1;
 };
 
 void create_output_directory(const std::string& out_dir) {

@@ -7,9 +7,14 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <unistd.h>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 
@@ -268,6 +273,25 @@ TEST(IsolationLevel3D, BadInputNamesFileLineAndKey) {
   EXPECT_NE(e.find("isolation_height: only used with isolation_level > 0"), std::string::npos) << e;
   e = error_of(thesis_yaml("    walls: {gap: 5 cm, level: 4}\n"));
   EXPECT_NE(e.find("walls.level: no level 4"), std::string::npos) << e;
+}
+
+// Issue 37: the shipped 3D mid-storey config analysed its record and then crashed (SIGSEGV)
+// writing summary.json: the 2D ground-shear entry read storey shears a 3D building does not
+// have. It ends with exit 0 and a summary that names its isolation level and height.
+TEST(IsolationLevel3D, ShippedConfigWritesItsSummary) {
+  ISOPOUND_REQUIRE_RECORDS();
+  const std::filesystem::path out = std::filesystem::temp_directory_path() /
+                                    ("isopound-mid3d-" + std::to_string(::getpid()));
+  const test::CommandResult r = test::run_isopound(
+      "run " + (test::source_dir() / "configs" / "3d-mid-storey-isolation.yaml").string() +
+      " --until 0.2 -q -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json& b = j.at("buildings_3d").at(0);
+  EXPECT_EQ(b.at("isolation_level").get<int>(), 1);
+  EXPECT_DOUBLE_EQ(b.at("isolation_height_m").get<double>(), 1.5);
+  std::filesystem::remove_all(out);
 }
 
 }  // namespace

@@ -103,6 +103,26 @@ TEST(StudySweep, TablesAreByteIdenticalForOneAndTwoThreads) {
   fs::remove_all(dir);  // kept when an assertion failed above
 }
 
+// Issue 37: the README's recipes write to out/studies/x.db; a missing folder is made (as run -o
+// makes its output folder), not refused with "cannot create the lock file".
+TEST(StudySweep, DatabaseInAFolderThatDoesNotExistIsMade) {
+  const fs::path dir = test::study_scratch("db-folder");
+  test::write_file(dir / "study.yaml", "name: folder\nmodel: " + test::thesis_model() + R"(
+set:
+  ground_motion.pulse: {amplitude: 0.8 m/s, period: 2 s, duration: 4 s, dt: 0.01 s}
+axes:
+  - {path: building.isolator.QW, values: [5 %, 10 %]}
+outputs: [base.displacement]
+)");
+  const fs::path db = dir / "out" / "studies" / "x.db";
+  ASSERT_FALSE(fs::exists(db.parent_path()));
+  const auto r =
+      run_isopound("sweep '" + (dir / "study.yaml").string() + "' -q --db '" + db.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(query_int(db, "SELECT COUNT(*) FROM runs WHERE status = 'done'"), 2);
+  fs::remove_all(dir);
+}
+
 pid_t spawn_isopound(const std::vector<std::string>& args) {
   std::vector<std::string> all{ISOPOUND_BINARY};
   all.insert(all.end(), args.begin(), args.end());

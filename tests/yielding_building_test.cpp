@@ -9,9 +9,11 @@
 
 #include "solver/io/model_input.h"
 #include "solver/io/report.h"
+#include "solver/io/report_modes2d.h"
 #include "solver/io/yaml_reader.h"
 #include "solver/structures/job.h"
 #include "solver/study/study_outputs.h"
+#include "tests/model_test_support.h"
 
 namespace isopound {
 namespace {
@@ -223,6 +225,25 @@ INSTANTIATE_TEST_SUITE_P(
                       "building.floors.hysteresis.yield_shear", "give one of"},
         BadHysteresis{"{model: bilinear}", "building.floors.hysteresis.yield_drift_ratio",
                       "missing"}));
+
+// Issue 37: `isopound modes` (and isopound-pre) on a building with yielding storeys refused it
+// as a mechanism: the storeys' stiffness is in their elements, not in the model's linear K. The
+// periods are now those of the initial (elastic) model: the same table, digit for digit, as for
+// the building with its storeys elastic.
+TEST(YieldingBuilding, ModesAreThoseOfTheInitialElasticModel) {
+  ISOPOUND_REQUIRE_RECORDS();
+  for (const char* name :
+       {"thesis-3storey-bw-yielding.yaml", "thesis-3storey-peak-oriented-pdelta.yaml"}) {
+    const ModelConfig yielding = test::load_shipped_config(name);
+    BuildingConfig elastic = yielding.building;
+    for (FloorConfig& f : elastic.floors) f.hysteresis = StoryHysteresisConfig{};
+    std::ostringstream a, b;
+    print_modes2d(a, yielding.building);
+    print_modes2d(b, elastic);
+    EXPECT_EQ(a.str(), b.str()) << name;
+    EXPECT_NE(a.str().find("Isolated, isolators at their initial stiffness"), std::string::npos);
+  }
+}
 
 }  // namespace
 }  // namespace isopound

@@ -144,8 +144,9 @@ struct RunOptions {
 std::vector<Story> stories_of(const Model& model);
 
 // The model's stiffness linearised at rest: K plus every element's tangent at u = v = 0 (each
-// element's trial state is reverted after).
-Eigen::MatrixXd stiffness_at_rest(Model& model);
+// element's trial state is reverted after), but for element `excluded` (an index into
+// model.elements; -1: none), e.g. an isolator whose stiffness the caller chooses itself.
+Eigen::MatrixXd stiffness_at_rest(Model& model, int excluded = -1);
 
 // Shortest undamped period of the model linearised at rest (element tangents at zero), s;
 // 0 if the model is a mechanism at rest.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 #include <memory>
 #include <string>
 #include <utility>
@@ -58,6 +59,9 @@ struct StructureInfo {
   std::vector<int> upper_contact_elements;
   // Per story: index into Model::elements of its hysteretic law, or -1 (a linear spring in K).
   std::vector<int> story_elements;
+  // Per story of a 2D building with façade columns: the element indices of its left and right
+  // column lines (a ColumnLine, or the StruckColumn that replaced it); empty without columns.
+  std::vector<std::array<int, 2>> facade_columns;
   // An elastic storey whose peak drift ratio exceeds this is outside the elastic model's range:
   // reports flag it (outputs only; 0: never). The model input sets it (default 1 %).
   double elastic_limit_drift_ratio = 0.0;

@@ -2,6 +2,7 @@
 #include "solver/core/pushover.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -78,9 +79,16 @@ std::vector<PushoverStep> run_pushover(Model& model, const PushoverOptions& o) {
       converged = residual_small && du.norm() <= 1e-12 * std::max(u.norm(), 1e-9) &&
                   std::abs(dlambda) <= 1e-12 * std::max(std::abs(lambda), 1.0);
     }
-    if (!converged)
-      throw std::runtime_error("pushover: Newton did not converge at step " + std::to_string(step) +
-                               " of " + std::to_string(o.steps));
+    if (!converged) {
+      char where[160];
+      std::snprintf(where, sizeof where, " (control coordinate %.4g m, load factor %.4g)",
+                    target, lambda);
+      // A diverged analysis (exit 3), as a time-history run's.
+      throw AnalysisError(0.0, "",
+                          "pushover: Newton did not converge at step " + std::to_string(step) +
+                              " of " + std::to_string(o.steps) + where +
+                              "; more steps (--steps) take smaller increments");
+    }
     linearise(model, u, lambda, o.pattern, tangent, residual);
     for (auto& e : model.elements) e->commit();
     curve.push_back({o.control.dot(u), lambda, u});

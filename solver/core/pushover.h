@@ -28,8 +28,9 @@ struct PushoverStep {
   Eigen::VectorXd u;     // displacements, m
 };
 
-// Runs from rest (the elements' committed state). Throws std::runtime_error when a step does not
-// converge (the curve up to it is in the message's step number) or the tangent is singular.
+// Runs from rest (the elements' committed state). Throws AnalysisError (analysis.h: exit 3) when
+// a step does not converge (the curve up to it is in the message's step number), and
+// std::runtime_error when the tangent is singular.
 std::vector<PushoverStep> run_pushover(Model& model, const PushoverOptions& options);
 
 // The pattern M phi_1 of the model's first mode linearised at rest (element tangents at zero),

@@ -6,6 +6,7 @@
 
 #include <optional>
 
+#include "solver/elements/column_line.h"
 #include "solver/elements/column_link.h"
 #include "solver/elements/contact.h"
 #include "solver/elements/polygon_contact.h"
@@ -174,12 +175,31 @@ std::optional<nlohmann::json> unobstructed_structure_json(const JobResult& job,
 // Energy dissipated by yielding 3D columns (their final state); nullopt when the model has none.
 std::optional<double> column_energy(const Model& model) {
   std::optional<double> sum;
-  for (const auto& el : model.elements)
+  for (const auto& el : model.elements) {
     if (const auto* c = dynamic_cast<const ColumnLink*>(el.get()))
       sum = sum.value_or(0.0) + c->hysteretic_energy();
+    if (const auto* c = dynamic_cast<const ColumnLine*>(el.get()))  // columns: hinges
+      sum = sum.value_or(0.0) + c->hinge_dissipated_energy();
+  }
   if (const std::optional<double> struck = struck_column_energy(model))  // 2D struck columns
     sum = sum.value_or(0.0) + *struck;
   return sum;
+}
+
+// The structures' isolators (2D) or bearings (3D): any isolated structure has them.
+bool has_isolators(const Model& model) {
+  for (const StructureInfo& s : model.structures)
+    if (s.has_base) return true;
+  return false;
+}
+
+// The hysteretic total less every term with an owner (contacts, friction, storeys, columns):
+// the isolators' (or bearings') dissipation; without isolators what the trapezoidal rule's
+// integration of the element powers leaves over (reported as unattributed, never as an
+// isolator's: issue 37).
+double unattributed_hysteretic_energy(const Model& model, const AnalysisResult& r) {
+  return r.energy.hysteretic - impact_energy(model) - friction_energy(model).value_or(0.0) -
+         story_hysteretic_energy(model) - column_energy(model).value_or(0.0);
 }
 
 double structure_weight(const Model& model, const StructureInfo& s) {
@@ -318,9 +338,10 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
       add_story_damage_json(stories.back(), model, r, s, k, story_index);  // report_damage2d
     }
     js["stories"] = stories;
-    if (s.has_base && s.base_level > 0) {
-      // Isolated above storey k: where the slab sits, and the shear that reaches the ground
-      // (storey 1's, below the substructure).
+    if (s.has_base && s.base_level > 0 && count > 0) {
+      // Isolated above storey k (2D: a 3D building's storeys are its column probes, and
+      // report3d.cpp gives its isolation level): where the slab sits, and the shear that
+      // reaches the ground (storey 1's, below the substructure).
       js["isolation_level"] = s.base_level;
       js["isolation_height_m"] = s.isolation_height;
       const std::size_t first_story = story_index - count;
@@ -376,8 +397,8 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                  {"elastic_J", en.elastic},
                  {"viscous_J", en.viscous},
                  {"hysteretic_J", en.hysteretic},
-                 {"isolator_hysteretic_J", en.hysteretic - impacts - friction.value_or(0.0) -
-                                               stories_hysteretic - columns.value_or(0.0)},
+                 {has_isolators(model) ? "isolator_hysteretic_J" : "unattributed_hysteretic_J",
+                  unattributed_hysteretic_energy(model, r)},
                  {"impact_dissipated_J", impacts},
                  {"balance_error_J", en.error},
                  {"relative_error", en.relative_error},
@@ -618,32 +639,26 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
     }
     print_struck_columns(out, model, r);  // report_struck_columns
   }
-  if (const std::optional<double> friction = friction_energy(model)) {
-    std::snprintf(line, sizeof line,
-                  "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
-                  "friction %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
-                  r.energy.input / 1e3,
-                  (r.energy.hysteretic - impact_energy(model) - *friction -
-                   column_energy(model).value_or(0.0)) /
-                      1e3,
-                  impact_energy(model) / 1e3, *friction / 1e3, r.energy.viscous / 1e3,
-                  r.energy.relative_error);
-  } else if (has_yielding_stories(model)) {
-    const double stories = story_hysteretic_energy(model);
-    std::snprintf(line, sizeof line,
-                  "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, storey hysteretic %.4g kJ, "
-                  "impact-dissipated %.4g kJ, viscous %.4g kJ, balance error %.2e\n",
-                  r.energy.input / 1e3,
-                  (r.energy.hysteretic - impact_energy(model) - stories) / 1e3, stories / 1e3,
-                  impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
-  } else {
-    std::snprintf(
-        line, sizeof line,
-        "Energy: input %.4g kJ, isolator hysteretic %.4g kJ, impact-dissipated %.4g kJ, "
-        "viscous %.4g kJ, balance error %.2e\n",
-        r.energy.input / 1e3,
-        (r.energy.hysteretic - impact_energy(model) - column_energy(model).value_or(0.0)) / 1e3,
-        impact_energy(model) / 1e3, r.energy.viscous / 1e3, r.energy.relative_error);
+  {
+    const std::optional<double> friction = friction_energy(model);
+    const bool stories = has_yielding_stories(model);
+    std::snprintf(line, sizeof line, "Energy: input %.4g kJ, %s %.4g kJ", r.energy.input / 1e3,
+                  has_isolators(model) ? "isolator hysteretic" : "unattributed hysteretic",
+                  unattributed_hysteretic_energy(model, r) / 1e3);
+    out << line;
+    if (stories) {
+      std::snprintf(line, sizeof line, ", storey hysteretic %.4g kJ",
+                    story_hysteretic_energy(model) / 1e3);
+      out << line;
+    }
+    std::snprintf(line, sizeof line, ", impact-dissipated %.4g kJ", impact_energy(model) / 1e3);
+    out << line;
+    if (friction) {
+      std::snprintf(line, sizeof line, ", friction %.4g kJ", *friction / 1e3);
+      out << line;
+    }
+    std::snprintf(line, sizeof line, ", viscous %.4g kJ, balance error %.2e\n",
+                  r.energy.viscous / 1e3, r.energy.relative_error);
   }
   out << line;
   if (const std::optional<double> columns = column_energy(model)) {

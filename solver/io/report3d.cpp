@@ -148,7 +148,10 @@ nlohmann::json summary3d_json(const JobResult& job) {
     }
     jb["bearings"] = bearings;
     // Isolated above a storey (levels3d.h): the bearings' deformation is relative to floor k.
-    if (s.has_base && s.base_level > 0) jb["isolation_level"] = s.base_level;
+    if (s.has_base && s.base_level > 0) {
+      jb["isolation_level"] = s.base_level;
+      jb["isolation_height_m"] = s.isolation_height;
+    }
     if (s.has_base) {  // everything reaching the foundation (analysis.h), in x, y and resultant
       const std::size_t si = static_cast<std::size_t>(&s - model.structures.data());
       jb["base_shear"] = {{"x", peak_json(r.base_shear[si], "N")},

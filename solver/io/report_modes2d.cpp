@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/core/analysis.h"
 #include "solver/core/modes.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/isolator.h"
@@ -64,8 +65,10 @@ void print_modes2d(std::ostream& out, const BuildingConfig& b) {
         std::pair{"initial stiffness K_el", p.elastic_stiffness}}) {
     if (b.isolator.model == IsolatorConfig::Model::kLinear && stiffness != p.post_yield_stiffness)
       continue;
-    // The isolation layer as a spring between the slab and what it stands on.
-    Eigen::MatrixXd K = model.stiffness;
+    // The storeys at rest (a yielding storey's initial tangent is in its element, not in
+    // model.stiffness), and the isolation layer as a spring between the slab and what it
+    // stands on.
+    Eigen::MatrixXd K = stiffness_at_rest(model, info.isolator_element);
     K(base, base) += stiffness;
     if (bottom >= 0) {
       K(bottom, bottom) += stiffness;

@@ -39,17 +39,27 @@ StruckColumnsConfig read_struck_columns(const InputNode& node, const BuildingCon
   // Hardening keeps the node stable once all three hinges have formed (a mechanism).
   node.read_number("hardening_ratio", Bound::kPositive, c.hardening_ratio);
   read_shear_check(node, c.shear_check, c.shear_capacity);
-  // The struck columns are part of the storey: their share must fit in its stiffness.
+  // The two façade lines (left and right, `count` columns each) are part of every storey
+  // (column_line.h): their share must fit in its stiffness, and their hinges are the storey's
+  // yielding, so a storey's own hysteresis: would define it twice.
   for (std::size_t f = 0; f < b.floors.size(); ++f) {
     const double h = b.floors[f].height;
-    const double k = c.count * 12.0 * c.E * c.I / (h * h * h);
+    const double k = 2.0 * c.count * 12.0 * c.E * c.I / (h * h * h);
     if (k > b.floors[f].stiffness) {
-      char what[200];
+      char what[240];
       std::snprintf(what, sizeof what,
-                    "the struck columns (count x 12 E I / h^3 = %.4g MN/m) are stiffer than "
-                    "storey %zu of '%s' (%.4g MN/m)",
+                    "the façade columns (2 lines x count x 12 E I / h^3 = %.4g MN/m) are stiffer "
+                    "than storey %zu of '%s' (%.4g MN/m)",
                     k / 1e6, f + 1, b.name.c_str(), b.floors[f].stiffness / 1e6);
       node.fail_at_key("I", what);
+    }
+    if (b.floors[f].hysteresis.model != StoryHysteresisConfig::Model::kElastic) {
+      char what[240];
+      std::snprintf(what, sizeof what,
+                    "storey %zu of '%s' yields through its hysteresis: law; with columns: its "
+                    "yielding is the façade columns' hinges (M_y). Give one of the two",
+                    f + 1, b.name.c_str());
+      node.fail_at_key("M_y", what);
     }
   }
   return c;

@@ -15,6 +15,12 @@ namespace {
 constexpr double kMaxSubincrementStiffness = 0.25;  // h |dPhi/dz| per sub-increment
 constexpr long kMaxSubincrements = 100000;
 constexpr int kMaxNewton = 50;
+// A component of z within this of 0 (relative to z_sat) is taken as 0 at the start of a branch:
+// it is on neither side of 0, so its branch is the loading one and no split waits for its
+// crossing. Split there, the crossing point's gradient 2 z_i / (Phi_i + A e_i)^2 blows up when
+// e_i is as small (a push along an axis: z_i and e_i both round-off, the tangent then ~1e19 and
+// Newton never converges, issue 37).
+constexpr double kNegligibleZ = 1e-12;
 using Eigen::Matrix2d;
 using Eigen::RowVector2d;
 using Eigen::Vector2d;
@@ -155,6 +161,10 @@ template <class T>
 decltype(T() < T()) CoupledBoucWenMaterial::n2_setup(const N2Parameters<T>& p, T z0x, T z0y, T dx0,
                                                      T dx1, N2Terms<T>& s) {
   const T zero = T();
+  // A component at round-off from 0 is 0 (kNegligibleZ), as branch_start() takes it.
+  const T negligible_sq = kNegligibleZ * kNegligibleZ * p.z_saturation_sq;
+  z0x = z0x * z0x <= negligible_sq ? zero : z0x;
+  z0y = z0y * z0y <= negligible_sq ? zero : z0y;
   const auto unloading0 = z0x * dx0 < zero, unloading1 = z0y * dx1 < zero;
   const T c0 = p.beta + (unloading0 ? -p.gamma : p.gamma);
   const T c1 = p.beta + (unloading1 ? -p.gamma : p.gamma);
@@ -429,6 +439,9 @@ void CoupledBoucWenMaterial::path_start(const Vector2d& z0, const Vector2d& dx, 
 }
 
 void CoupledBoucWenMaterial::branch_start(Path& p) const {
+  // A component at round-off from 0 is 0: it is on neither side, so no branch split waits for it.
+  for (int i = 0; i < 2; ++i)
+    if (std::abs(p.z[i]) <= kNegligibleZ * z_saturation_) p.z[i] = 0.0;
   const Vector2d& z = p.z;
   const Vector2d& e = p.e;
   p.unloading[0] = z[0] * e[0] < 0.0;

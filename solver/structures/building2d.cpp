@@ -7,6 +7,7 @@
 
 #include "solver/core/modes.h"
 #include "solver/elements/bearing_link.h"
+#include "solver/elements/column_line.h"
 #include "solver/elements/story_link.h"
 #include "solver/elements/uniaxial_link.h"
 #include "solver/structures/bearing.h"
@@ -92,6 +93,47 @@ Eigen::MatrixXd substructure_damping(const BuildingConfig& b) {
                        "the fixed-base substructure");
 }
 
+namespace {
+
+// The façade column lines of every storey (column_line.h), left and right, and the storey spring
+// less their share 2 n 12 E I / h^3. A slab that strikes a line replaces it (pounding2d.cpp).
+template <class FloorDof>
+void add_facade_columns(Model& model, const BuildingConfig& b, StructureInfo& info,
+                        const FloorDof& floor_dof, int base) {
+  const StruckColumnsConfig& c = b.columns;
+  const int k = b.isolated ? b.isolation_level : 0;
+  for (std::size_t i = 0; i < b.floors.size(); ++i) {
+    const int f = static_cast<int>(i);
+    ColumnLineSpec spec;
+    const double L = b.floors[i].height;
+    ColumnLineSpec::Direction& x = spec.directions[0];
+    x.column = {c.E, c.I, L, 0.5 * L, c.yield_moment, c.hardening_ratio * 6.0 * c.E * c.I / L};
+    spec.count = c.count;
+    spec.shear_capacity = c.shear_check ? c.shear_capacity : 0.0;
+    const int upper = floor_dof(f);
+    const int lower = b.isolated && f == k ? base : (f > 0 ? floor_dof(f - 1) : -1);
+    x.add_term(upper, 1.0);
+    x.add_term(lower, -1.0);
+    const double k_lines = 2.0 * c.count * 12.0 * c.E * c.I / (L * L * L);
+    model.stiffness(upper, upper) -= k_lines;
+    if (lower >= 0) {
+      model.stiffness(lower, lower) -= k_lines;
+      model.stiffness(lower, upper) += k_lines;
+      model.stiffness(upper, lower) += k_lines;
+    }
+    std::array<int, 2> lines;
+    for (int side = 0; side < 2; ++side) {
+      lines[static_cast<std::size_t>(side)] = static_cast<int>(model.elements.size());
+      model.elements.push_back(std::make_unique<ColumnLine>(
+          b.name + "/story " + std::to_string(f + 1) + "/columns " + (side == 0 ? "left" : "right"),
+          spec));
+    }
+    info.facade_columns.push_back(lines);
+  }
+}
+
+}  // namespace
+
 void add_building(Model& model, const BuildingConfig& b) {
   const int floors = static_cast<int>(b.floors.size());
   if (floors < 1) throw std::invalid_argument("building '" + b.name + "' has no floors");
@@ -154,6 +196,7 @@ void add_building(Model& model, const BuildingConfig& b) {
     }
   }
   info.elastic_limit_drift_ratio = b.elastic_limit_drift_ratio;
+  if (b.columns.given) add_facade_columns(model, b, info, floor_dof, base);
 
   // Superstructure damping, relative to the base slab (or the ground if fixed): w = T u.
   const Eigen::MatrixXd c_s = superstructure_damping(b);

@@ -7,8 +7,10 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "solver/core/modes.h"
+#include "solver/elements/column_line.h"
 #include "solver/structures/bearing_element.h"
 #include "solver/structures/column_element.h"
 #include "solver/structures/levels3d.h"
@@ -90,8 +92,8 @@ Assembly assemble(const Building3DConfig& b) {
     const Storey3DConfig& storey = b.storeys[s];
     if (!(storey.height > 0))
       throw std::invalid_argument("storey " + std::to_string(s + 1) + ": height must be > 0");
-    const StoreyStiffness k = storey_stiffness_split(columns_in_plan(b, storey.columns),
-                                                     storey.height, b.column_coupling);
+    const StoreyStiffness k = storey_stiffness_split(
+        columns_in_plan(b, storey.columns), storey.height, b.column_coupling, b.struck_columns.given);
     const int storey_number = static_cast<int>(s) + 1;
     const int upper = 3 * floor_level3d(b, storey_number);
     const int lower = 3 * storey_lower_level3d(b, storey_number);  // < 0: the ground
@@ -122,6 +124,35 @@ Assembly assemble(const Building3DConfig& b) {
       if (m == 0.0) m = b.bearing.carried_mass > 0 ? b.bearing.carried_mass : share;
   }
   return a;
+}
+
+// A column of a building with struck_columns: as a ColumnLine, per section axis a column fixed
+// at both ends with hinges at M_y along that axis (axis 1 from x at its orientation: I22 and
+// M_y[0]; axis 2: I11 and M_y[1]); its drift along the axis from both diaphragms' (u, v, theta)
+// at the column's plan position (lower < 0: the ground).
+ColumnLineSpec hinged_column_line(const StruckColumns3DConfig& sc, const Column3DConfig& c,
+                                  double height, int upper, int lower) {
+  ColumnLineSpec spec;
+  spec.direction_count = 2;
+  spec.count = 1;
+  spec.shear_capacity = sc.shear_check ? sc.shear_capacity : 0.0;
+  const double cr = std::cos(c.orientation), sr = std::sin(c.orientation);
+  const Vec2 axis[2] = {{cr, sr}, {-sr, cr}};
+  const double I[2] = {c.I22, c.I11};
+  for (std::size_t i = 0; i < 2; ++i) {
+    ColumnLineSpec::Direction& d = spec.directions[i];
+    d.column = {c.E, I[i], height, 0.5 * height, sc.yield_moment[i],
+                sc.hardening_ratio * 6.0 * c.E * I[i] / height};
+    // The point p's displacement (u - p_y theta, v + p_x theta) along the axis.
+    const double ct = -c.position.y * axis[i].x + c.position.x * axis[i].y;
+    for (const auto& [dofs, sign] : {std::pair{upper, 1.0}, std::pair{lower, -1.0}}) {
+      if (dofs < 0) continue;
+      d.add_term(dofs, sign * axis[i].x);
+      d.add_term(dofs + 1, sign * axis[i].y);
+      d.add_term(dofs + 2, sign * ct);
+    }
+  }
+  return spec;
 }
 
 // Linear springs (k in x and y) at the bearings, between the base slab's block and the block of
@@ -197,7 +228,7 @@ Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, dou
 }
 
 StoreyStiffness storey_stiffness_split(const std::vector<Column3DConfig>& columns, double h,
-                                       ColumnCoupling coupling) {
+                                       ColumnCoupling coupling, bool hinged) {
   StoreyStiffness k{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   for (const Column3DConfig& c : columns) {
     if (!(c.I11 > 0) || !(c.I22 > 0) || !(c.J > 0) || !(c.E > 0) || !(c.G > 0))
@@ -208,14 +239,15 @@ StoreyStiffness storey_stiffness_split(const std::vector<Column3DConfig>& column
     Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
     local(0, 0) = k1 * cr * cr + k2 * sr * sr;  // k^I
     local(1, 1) = k1 * sr * sr + k2 * cr * cr;  // k^II
-    // A yielding column's law acts in its section axes: always the full rotated stiffness.
-    if (coupling == ColumnCoupling::kFull || c.hysteresis.yields())
+    // A yielding or hinged column's element acts in its section axes: the full rotated stiffness.
+    const bool in_element = c.hysteresis.yields() || hinged;
+    if (coupling == ColumnCoupling::kFull || in_element)
       local(0, 1) = local(1, 0) = (k1 - k2) * sr * cr;
     local(2, 2) = c.G * c.J / h;  // k^theta
     const Eigen::Matrix3d T = point_transform(c.position);
     const Eigen::Matrix3d k_c = T.transpose() * local * T;
     k.initial += k_c;
-    if (c.hysteresis.yields())
+    if (in_element)
       k.matrix(2, 2) += local(2, 2);  // T^T diag(0, 0, k_theta) T: torsion only
     else
       k.matrix += k_c;
@@ -267,7 +299,10 @@ void add_building3d(Model& model, const Building3DConfig& b) {
   StructureInfo info;
   info.name = b.name;
   info.has_base = b.isolated;
-  if (b.isolated) info.base_level = b.isolation_level;
+  if (b.isolated) {
+    info.base_level = b.isolation_level;
+    info.isolation_height = b.isolation_height;
+  }
   for (Dof d : a.dofs) {
     d.structure = structure;
     model.dofs.push_back(d);
@@ -349,6 +384,17 @@ void add_building3d(Model& model, const Building3DConfig& b) {
     const int upper = offset + storey_upper(s);
     const int lower = storey_lower(s);
     for (const Column3DConfig& c : columns_in_plan(b, b.storeys[s].columns)) {
+      if (b.struck_columns.given) {
+        const std::string label = hinged_column_label(b.name, static_cast<int>(s), c.label);
+        // Every column with the hinges of struck_columns: (column_line.h), struck or not.
+        if (c.hysteresis.yields())
+          throw std::invalid_argument(
+              label + ": with struck_columns: a column yields through its hinges (M_y); give it "
+                      "no hysteresis:, or drop struck_columns:");
+        model.elements.push_back(std::make_unique<ColumnLine>(
+            label, hinged_column_line(b.struck_columns, c, b.storeys[s].height, upper, lower)));
+        continue;
+      }
       if (!c.hysteresis.yields()) continue;
       model.elements.push_back(make_column_element(
           column_element_label(b.name, static_cast<int>(s), c.label), c, b.storeys[s].height,

@@ -30,14 +30,15 @@ Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns_W, d
 // plan (THEORY eq. 5.9; `rule` says whether the eccentricity's m e^2 is added).
 double polar_moment_about_cm(const Diaphragm3DConfig& diaphragm, EccentricPolarMoment rule);
 
-// The same split for the model: `matrix` holds the elastic columns and the torsion of yielding
-// ones (their shear is an element, column_element.h); `initial` every column elastic (= the
+// The same split for the model: `matrix` holds the elastic columns and the torsion of the
+// columns whose shear is an element (yielding ones, column_element.h, and with `hinged` every
+// column: a building with struck_columns:, column_line.h); `initial` every column elastic (= the
 // storey_stiffness above), for damping and modes.
 struct StoreyStiffness {
   Eigen::Matrix3d matrix, initial;
 };
 StoreyStiffness storey_stiffness_split(const std::vector<Column3DConfig>& columns_W, double height,
-                                       ColumnCoupling coupling);
+                                       ColumnCoupling coupling, bool hinged = false);
 
 // P-Delta (p_delta_stiffness.cpp): storey s's geometric stiffness about the plan origin.
 Eigen::Matrix3d p_delta_stiffness(const Building3DConfig& building, std::size_t storey);

@@ -32,6 +32,10 @@ std::string column_element_label(const std::string& building, int storey,
   return building + "/story " + std::to_string(storey + 1) + "/column " + label;
 }
 
+std::string hinged_column_label(const std::string& building, int storey, const std::string& label) {
+  return building + "/story " + std::to_string(storey + 1) + "/hinged column " + label;
+}
+
 std::unique_ptr<Element> make_column_element(const std::string& label, const Column3DConfig& c,
                                              double height, DiaphragmDofs upper,
                                              DiaphragmDofs lower) {

@@ -22,6 +22,9 @@ ColumnYield column_yield(const Column3DConfig& column, double height);
 
 // The element's label: "<building>/story <s + 1>/column <label>".
 std::string column_element_label(const std::string& building, int storey, const std::string& label);
+// "<building>/story <k>/hinged column <label>": the ColumnLine (column_line.h) of a column of a
+// structure with struck_columns:, which a struck column replaces (struck_columns3d.cpp).
+std::string hinged_column_label(const std::string& building, int storey, const std::string& label);
 
 // The column (position and orientation in the plan frame, relative to the DOFs' origin) between
 // the upper diaphragm and the lower one (DiaphragmDofs{}: the ground). Throws

@@ -87,6 +87,8 @@ int add_struck_columns(Model& model, int striker, const std::vector<double>& z_a
       if (done == f) throw std::invalid_argument(label + ": a storey struck by two levels");
     struck_storeys.push_back(f);
     ++added;
+    // The façade the striker faces: its left one when it closes the gap moving +x.
+    const int line = info.facade_columns[static_cast<std::size_t>(f - 1)][side > 0 ? 0 : 1];
     if (!neighbour.pounding) continue;
     StruckColumnSpec spec;
     const StruckColumnsConfig& c = b.columns;
@@ -98,14 +100,6 @@ int add_struck_columns(Model& model, int striker, const std::vector<double>& z_a
     spec.side = side;
     spec.upper = info.level_dofs[static_cast<std::size_t>(upper_level)];
     spec.lower = lower_level >= 0 ? info.level_dofs[static_cast<std::size_t>(lower_level)] : -1;
-    // The storey spring keeps k - n 12 E I / L^3 (the element holds the rest).
-    const double k_columns = c.count * 12.0 * c.E * c.I / (L * L * L);
-    model.stiffness(spec.upper, spec.upper) -= k_columns;
-    if (spec.lower >= 0) {
-      model.stiffness(spec.lower, spec.lower) -= k_columns;
-      model.stiffness(spec.lower, spec.upper) += k_columns;
-      model.stiffness(spec.upper, spec.lower) += k_columns;
-    }
     // m_eff: the slab against the floors' masses shared as the reactions of a point load on
     // a column fixed at both ends (the ground: immovable).
     const double r_lower = bb * bb * (L + 2 * a) / (L * L * L);
@@ -119,12 +113,13 @@ int add_struck_columns(Model& model, int striker, const std::vector<double>& z_a
     impact.mass_2 = m_struck;
     std::unique_ptr<ImpactLaw> law = make_impact_law(impact);
     if (neighbour.bumper.thickness > 0) law = make_bumper_law(neighbour.bumper, std::move(law));
-    const int element = static_cast<int>(model.elements.size());
     if (is_base_dof(model, striker, spec.slab))
-      model.structures[striker].base_contact_elements.push_back(element);
-    model.elements.push_back(std::make_unique<StruckColumn>(
+      model.structures[striker].base_contact_elements.push_back(line);
+    // The struck line takes the place of the façade's ColumnLine (the storey spring already
+    // keeps k less both lines' share): the same columns, now with their node at the slab.
+    model.elements[static_cast<std::size_t>(line)] = std::make_unique<StruckColumn>(
         label, spec, neighbour.gap - neighbour.bumper.thickness, std::move(law),
-        effective_mass(m_slab, m_struck), steps_per_contact));
+        effective_mass(m_slab, m_struck), steps_per_contact);
   }
   return added;
 }

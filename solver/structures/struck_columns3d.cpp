@@ -9,6 +9,7 @@
 #include "geometry/overlap.h"
 #include "solver/elements/struck_column3d.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/column_element.h"
 #include "solver/structures/levels3d.h"
 #include "solver/structures/pounding3d.h"
 #include "solver/structures/site_plan.h"
@@ -24,21 +25,6 @@ std::vector<Vec2> section_of(const Column3DConfig& c_W) {
   p.orientation = c_W.orientation;
   column_rectangle(c_W.I11, c_W.I22, p.b, p.h);
   return p.outline_W();
-}
-
-// The column's lateral stiffness about the plan origin, T^T R diag(k_1, k_2) R^T T (no torsion).
-Eigen::Matrix3d lateral_stiffness(const Column3DConfig& c, double h) {
-  const double h3 = h * h * h;
-  const double k1 = 12.0 * c.E * c.I22 / h3, k2 = 12.0 * c.E * c.I11 / h3;
-  const double cr = std::cos(c.orientation), sr = std::sin(c.orientation);
-  Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
-  local(0, 0) = k1 * cr * cr + k2 * sr * sr;
-  local(1, 1) = k1 * sr * sr + k2 * cr * cr;
-  local(0, 1) = local(1, 0) = (k1 - k2) * sr * cr;
-  Eigen::Matrix3d T = Eigen::Matrix3d::Identity();
-  T(0, 2) = -c.position.y;
-  T(1, 2) = c.position.x;
-  return T.transpose() * local * T;
 }
 
 }  // namespace
@@ -152,20 +138,17 @@ void add_struck_columns3d(Model& model, const ModelConfig& config) {
                            ? r_lower * levels[static_cast<std::size_t>(lower)].diaphragm->mass +
                                  r_upper * levels[static_cast<std::size_t>(upper)].diaphragm->mass
                            : std::numeric_limits<double>::infinity();
-    // The column's lateral stiffness leaves the storey matrix: the element carries it.
-    const Eigen::Matrix3d k = lateral_stiffness(c, L);
-    const int up = spec.upper[0], lo = spec.lower[0];
-    model.stiffness.block<3, 3>(up, up) -= k;
-    if (lo >= 0) {
-      model.stiffness.block<3, 3>(lo, lo) -= k;
-      model.stiffness.block<3, 3>(lo, up) += k;
-      model.stiffness.block<3, 3>(up, lo) += k;
-    }
-    const int element = static_cast<int>(model.elements.size());
+    // The column's lateral stiffness and hinges are its ColumnLine's (building3d.cpp, every
+    // column of a building with struck_columns:): the struck column takes its place.
+    const std::string line = hinged_column_label(b.name, site.storey - 1, c.label);
+    int element = -1;
+    for (std::size_t e = 0; e < model.elements.size() && element < 0; ++e)
+      if (model.elements[e]->label() == line) element = static_cast<int>(e);
+    if (element < 0) throw std::logic_error(site.label() + ": no column line " + line);
     for (const int u : {spec.slab[0], spec.lower[0], spec.upper[0]})
       note_upper_contact(model, u, element, false);
-    model.elements.push_back(std::make_unique<StruckColumn3D>(
-        site.label(), spec, pair_law(config, spec.slab_mass, spec.struck_mass)));
+    model.elements[static_cast<std::size_t>(element)] = std::make_unique<StruckColumn3D>(
+        site.label(), spec, pair_law(config, spec.slab_mass, spec.struck_mass));
   }
 }
 

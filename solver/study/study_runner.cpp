@@ -153,6 +153,15 @@ class DatabaseLock {
  public:
   explicit DatabaseLock(const std::string& db_path) : path_(db_path + ".lock") {
     const std::string& path = path_;
+    // The database's folder is made as `run -o` makes its output folder (README's recipes write
+    // to out/studies/...).
+    const std::filesystem::path folder = std::filesystem::path(db_path).parent_path();
+    std::error_code ec;
+    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+    if (ec)
+      throw InputError(db_path, 0, 0, "",
+                       "cannot create the database's folder " + folder.string() + ": " +
+                           ec.message());
     fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
     if (fd_ < 0)
       throw InputError(path, 0, 0, "", "cannot create the lock file beside the database");
