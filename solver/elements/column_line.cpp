@@ -14,6 +14,14 @@ HingedColumnSection at_mid_height(HingedColumnSection s) {
   s.node = 0.5 * s.length;
   return s;
 }
+
+// sum c_i x[dof_i]: the drift (or its rate) along one direction.
+double along(const ColumnLineSpec::Direction& dir, const Eigen::VectorXd& x) {
+  double d = 0.0;
+  for (int i = 0; i < dir.terms; ++i)
+    d += dir.coefficient[static_cast<std::size_t>(i)] * x[dir.dof[static_cast<std::size_t>(i)]];
+  return d;
+}
 }  // namespace
 
 ColumnLine::ColumnLine(std::string label, const ColumnLineSpec& spec)
@@ -47,10 +55,7 @@ void ColumnLine::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd&) {
   for (int d = 0; d < spec_.direction_count; ++d) {
     const ColumnLineSpec::Direction& dir = spec_.directions[static_cast<std::size_t>(d)];
     Axis& a = axes_[static_cast<std::size_t>(d)];
-    double drift = 0.0;
-    for (int i = 0; i < dir.terms; ++i)
-      drift +=
-          dir.coefficient[static_cast<std::size_t>(i)] * u[dir.dof[static_cast<std::size_t>(i)]];
+    const double drift = along(dir, u);
     // The column between its floors moved by (0, drift): only the drift deforms it.
     double u_node = 0.5 * drift;
     const double scale = a.column.storey_stiffness() * (std::abs(drift) + 1e-9);
@@ -93,10 +98,7 @@ void ColumnLine::add_tangent(Eigen::MatrixXd& K, double) const {
 void ColumnLine::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   for (int d = 0; d < spec_.direction_count; ++d) {
     const ColumnLineSpec::Direction& dir = spec_.directions[static_cast<std::size_t>(d)];
-    double drift = 0.0;
-    for (int i = 0; i < dir.terms; ++i)
-      drift +=
-          dir.coefficient[static_cast<std::size_t>(i)] * x[dir.dof[static_cast<std::size_t>(i)]];
+    const double drift = along(dir, x);
     const double f = axes_[static_cast<std::size_t>(d)].stiffness * drift;
     for (int i = 0; i < dir.terms; ++i)
       y[dir.dof[static_cast<std::size_t>(i)]] += dir.coefficient[static_cast<std::size_t>(i)] * f;
@@ -107,10 +109,7 @@ double ColumnLine::power(const Eigen::VectorXd& v) const {
   double p = 0.0;
   for (int d = 0; d < spec_.direction_count; ++d) {
     const ColumnLineSpec::Direction& dir = spec_.directions[static_cast<std::size_t>(d)];
-    double rate = 0.0;
-    for (int i = 0; i < dir.terms; ++i)
-      rate +=
-          dir.coefficient[static_cast<std::size_t>(i)] * v[dir.dof[static_cast<std::size_t>(i)]];
+    const double rate = along(dir, v);
     p += axes_[static_cast<std::size_t>(d)].force * rate;
   }
   return p;
