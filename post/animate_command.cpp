@@ -90,6 +90,7 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   } catch (const TimelineError& e) {
     throw BadInput(e.what());
   }
+  if (!line.note.empty()) std::fprintf(stderr, "isopound-post: note: %s\n", line.note.c_str());
   remove_old_frames(out_dir);
   std::vector<std::string> files;
   std::fflush(stdout);
@@ -116,7 +117,7 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   view.absolute_dir = fs::absolute(out_dir).lexically_normal().string();
   view.three_d = run.three_d;
   view.scale = opt.scale;
-  view.fps = tl.fps;
+  view.fps = line.fps;
   view.force_length = opt.force_length;
   view.peaks = contact_peaks(run);
   // 2D frames draw gaps and overlaps × scale; 3D overlaps are drawn true.
@@ -127,9 +128,11 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
 
   std::printf("Wrote %s/animation.pvd and %zu frames (%.4g s to %.4g s, %g frames/s",
               out_dir.string().c_str(), files.size(), line.times.front(), line.times.back(),
-              tl.fps);
-  if (tl.uniform)
+              line.fps);
+  if (line.uniform)
     std::printf(", uniform");
+  else if (line.episodes == 0)
+    std::printf("; no contact episode");
   else
     std::printf("; %zu contact episodes, %d frames each", line.episodes, line.frames_per_episode);
   std::printf("; scale %g)\n", opt.scale);

@@ -40,8 +40,9 @@ double round_down_125(double limit) {
 }
 
 // Keeps the periods the sampling resolves, or says why not (FloorSpectraError).
-std::vector<double> resolved_periods(const std::vector<double>& asked, const HistorySampling& h,
-                                     const FloorSpectraOptions& o,
+// `given`: the periods were asked for (not the defaults).
+std::vector<double> resolved_periods(const std::vector<double>& asked, bool given,
+                                     const HistorySampling& h, const FloorSpectraOptions& o,
                                      std::vector<std::string>& notes) {
   const double dt = h.effective(), t_min = o.samples_per_period * dt;
   std::vector<double> kept, dropped;
@@ -54,8 +55,12 @@ std::vector<double> resolved_periods(const std::vector<double>& asked, const His
                                           " (rows every " + seconds(h.row_interval) +
                                           " between its steps are interpolated)"
                                     : "histories.csv has a row every " + seconds(dt);
-  if (!o.clip_short_periods) {
-    const std::string needed = seconds(round_down_125(shortest / o.samples_per_period));
+  const std::string needed = seconds(round_down_125(shortest / o.samples_per_period));
+  const std::string rerun = "output.interval: " + needed + " or less" +
+                            (steps ? " (and analysis.dt: " + needed + ")" : std::string());
+  const bool refuse = o.short_periods == FloorSpectraOptions::ShortPeriods::kRefuse ||
+                      (o.short_periods == FloorSpectraOptions::ShortPeriods::kAuto && given);
+  if (refuse) {
     throw FloorSpectraError(
         sampled + ", too coarse for the period " + seconds(shortest) + ": the rule dt <= T/" +
         number(o.samples_per_period) + " allows T >= " + seconds(t_min) + ". Rerun with " +
@@ -65,8 +70,13 @@ std::vector<double> resolved_periods(const std::vector<double>& asked, const His
         "small), or ask for periods >= " +
         seconds(t_min) + " (--periods), or drop the short ones with --short-periods clip");
   }
-  notes.push_back(std::to_string(dropped.size()) + " periods shorter than " + seconds(t_min) +
-                  " dropped: " + sampled + ", rule dt <= T/" + number(o.samples_per_period));
+  const double longest = *std::max_element(dropped.begin(), dropped.end());
+  notes.push_back(
+      std::to_string(dropped.size()) + " of the " + (given ? "periods asked" : "default periods") +
+      ", " + seconds(shortest) + (dropped.size() > 1 ? " to " + seconds(longest) : std::string()) +
+      ", dropped: " + sampled + " and the rule dt <= T/" + number(o.samples_per_period) +
+      " needs T >= " + seconds(t_min) + "; a run with " + rerun + " computes them" +
+      (given ? std::string() : " (--short-periods refuse: an error instead)"));
   if (std::none_of(kept.begin(), kept.end(), [](double t) { return t > 0.0; }))
     throw FloorSpectraError("no period left after clipping: every period asked is shorter than " +
                             seconds(t_min) + "; rerun with a smaller output.interval");
@@ -179,8 +189,9 @@ FloorSpectra floor_spectra(const RunData& run, const FloorSpectraOptions& option
   out.damping = options.spectrum.damping;
   out.sampling = history_sampling(run);
   const double dt = out.sampling.row_interval;
-  out.periods = resolved_periods(options.periods.empty() ? default_periods() : options.periods,
-                                 out.sampling, options, out.notes);
+  const bool given = !options.periods.empty();
+  out.periods = resolved_periods(given ? options.periods : default_periods(), given, out.sampling,
+                                 options, out.notes);
   const SpectrumOptions& o = options.spectrum;
 
   const int gx = run.find("", "ground_acceleration");
@@ -214,7 +225,7 @@ std::string floor_spectra_csv(const FloorSpectra& f) {
   for (const PlaceSpectra& p : f.places) all.push_back(&p);
   std::ostringstream csv;
   csv.precision(10);
-  csv << "period_s";
+  csv << "period_s,damping_ratio";
   for (const PlaceSpectra* p : all) {
     if (!f.three_d) {
       csv << "," << p->label << " PSA [g]," << p->label << " SD [m]";
@@ -226,7 +237,7 @@ std::string floor_spectra_csv(const FloorSpectra& f) {
   }
   csv << "\n";
   for (std::size_t i = 0; i < f.periods.size(); ++i) {
-    csv << f.periods[i];
+    csv << f.periods[i] << "," << f.damping;
     for (const PlaceSpectra* p : all) {
       if (!f.three_d) {
         csv << "," << p->x.psa[i] / kGravity << "," << p->x.sd[i];

@@ -29,8 +29,11 @@ struct FloorSpectraOptions {
   // for every nonzero period T (the rows are joined by straight lines, a filter of gain
   // sinc^2(pi dt / T) at period T: 0.967 at 10 samples per period; docs/floor-spectra.md).
   double samples_per_period = 10.0;
-  // Periods shorter than the rule allows: refuse (FloorSpectraError) or drop them (a note).
-  bool clip_short_periods = false;
+  // Periods shorter than the rule allows: kRefuse (FloorSpectraError), kClip (dropped, one note
+  // that says how to compute them), or kAuto: kClip for the default periods (a default never
+  // refuses), kRefuse for periods given.
+  enum class ShortPeriods { kAuto, kRefuse, kClip };
+  ShortPeriods short_periods = ShortPeriods::kAuto;
 };
 
 // The interval the spectra see: histories.csv's row interval, or the solver's analysis interval
@@ -72,8 +75,8 @@ GroundMotion column_motion(const RunData& run, int column, double dt, const std:
 // Throws FloorSpectraError (sampling, missing columns) and std::invalid_argument (options).
 FloorSpectra floor_spectra(const RunData& run, const FloorSpectraOptions& options = {});
 
-// CSV: period_s, then per place "<label> PSA [g]" and "<label> SD [m]" (2D), or PSA_x, PSA_y,
-// PSA_RotD50, PSA_RotD100 and the same SD columns (3D); the ground first.
+// CSV: period_s, damping_ratio, then per place "<label> PSA [g]" and "<label> SD [m]" (2D), or
+// PSA_x, PSA_y, PSA_RotD50, PSA_RotD100 and the same SD columns (3D); the ground first.
 std::string floor_spectra_csv(const FloorSpectra& spectra);
 // Where each place is: label, structure, level, x_m, y_m (3D), elevation_m.
 std::string floor_spectra_places_csv(const FloorSpectra& spectra);

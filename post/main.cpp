@@ -36,12 +36,19 @@ using namespace isopound::post;
 
 namespace {
 
+// A damping ratio the SDOF recurrence takes: below critical (the plausibility row allows 1).
+void check_damping(double ratio) {
+  if (!(ratio < 1.0))
+    throw BadInput("--damping: must be below 100 % (critical damping), got " +
+                   readable_number(100.0 * ratio) + " %");
+}
+
 // ---- spectra -----------------------------------------------------------------------------
 
 struct SpectraArgs {
   std::vector<std::string> records;
   bool pair = false;
-  double damping = 5.0;  // %
+  double damping = 0.05;  // ratio
   std::string out = "spectra";
   std::string unit;  // g | m/s2 | cm/s2 (columns)
   double dt = 0.0;
@@ -78,12 +85,12 @@ int run_spectra(const SpectraArgs& a) {
   if (a.pair && a.records.size() % 2 != 0)
     throw BadInput("--pair: give the records two by two (component 1, component 2, ...); got " +
                    std::to_string(a.records.size()));
-  if (!(a.damping >= 0.0 && a.damping < 100.0)) throw BadInput("--damping: must be in [0, 100) %");
+  check_damping(a.damping);
   if (a.oversample < 1) throw BadInput("--oversample: must be >= 1");
   std::vector<GroundMotion> motions;
   for (const std::string& r : a.records) motions.push_back(load(r, a));
   SpectrumOptions opt;
-  opt.damping = a.damping / 100.0;
+  opt.damping = a.damping;
   opt.oversample = a.oversample;
   const std::vector<double> periods = default_periods();
   fs::create_directories(a.out);
@@ -105,11 +112,11 @@ int run_spectra(const SpectraArgs& a) {
       }
     }
 
-  // CSV: PSA in g and SD in m per record; for a set the log-space median exp(mean ln), σ_ln and
-  // the band exp(mean ln ∓ σ_ln) (spectra.h); RotD.
+  // CSV: the damping ratio, PSA in g and SD in m per record; for a set the log-space median
+  // exp(mean ln), σ_ln and the band exp(mean ln ∓ σ_ln) (spectra.h); RotD.
   std::ostringstream csv;
   csv.precision(10);
-  csv << "period_s";
+  csv << "period_s,damping_ratio";
   for (const Spectrum& s : spectra) csv << "," << s.name << "_PSA_g," << s.name << "_SD_m";
   const bool stats = spectra.size() > 1;
   if (stats)
@@ -120,7 +127,7 @@ int run_spectra(const SpectraArgs& a) {
         << "_RotD50_SD_m," << r.name << "_RotD100_SD_m";
   csv << "\n";
   for (std::size_t i = 0; i < periods.size(); ++i) {
-    csv << periods[i];
+    csv << periods[i] << "," << a.damping;
     for (const Spectrum& s : spectra) csv << "," << s.psa[i] / kGravity << "," << s.sd[i];
     if (stats)
       csv << "," << st.median_psa[i] / kGravity << "," << st.sigma_ln_psa[i] << ","
@@ -135,7 +142,7 @@ int run_spectra(const SpectraArgs& a) {
   write_text(fs::path(a.out) / "spectra.csv", csv.str());
 
   const PrivateDisplay display;
-  render_png(spectra_figure(spectra, st, rotd, a.damping),
+  render_png(spectra_figure(spectra, st, rotd, 100.0 * a.damping),
              (fs::path(a.out) / "spectra.png").string());
   std::printf("Wrote %s/spectra.csv and %s/spectra.png\n", a.out.c_str(), a.out.c_str());
   return kOk;
@@ -228,27 +235,30 @@ int run_pushover(const std::string& dir, const std::string& out) {
 
 struct FloorSpectraArgs {
   std::string dir, out, model;
-  double damping = 5.0;  // %
+  double damping = 0.05;  // ratio
   std::vector<double> periods;
   double samples_per_period = 10.0;
-  std::string short_periods = "refuse";  // refuse | clip
+  std::string short_periods;  // refuse | clip; "": clip the default periods, refuse those given
   int oversample = 1;
 };
 
 // Spectra of every level's absolute acceleration (docs/floor-spectra.md); `out` a directory
 // (default: the run directory).
 int run_floor_spectra(const FloorSpectraArgs& a) {
-  if (!(a.damping >= 0.0 && a.damping < 100.0)) throw BadInput("--damping: must be in [0, 100) %");
+  check_damping(a.damping);
   if (a.oversample < 1) throw BadInput("--oversample: must be >= 1");
-  if (a.short_periods != "refuse" && a.short_periods != "clip")
+  if (!a.short_periods.empty() && a.short_periods != "refuse" && a.short_periods != "clip")
     throw BadInput("--short-periods: '" + a.short_periods + "' is not refuse or clip");
   const RunData run = load_run(a.dir, a.model);
   FloorSpectraOptions opt;
   opt.periods = a.periods;
-  opt.spectrum.damping = a.damping / 100.0;
+  opt.spectrum.damping = a.damping;
   opt.spectrum.oversample = a.oversample;
   opt.samples_per_period = a.samples_per_period;
-  opt.clip_short_periods = a.short_periods == "clip";
+  using ShortPeriods = FloorSpectraOptions::ShortPeriods;
+  opt.short_periods = a.short_periods == "clip"     ? ShortPeriods::kClip
+                      : a.short_periods == "refuse" ? ShortPeriods::kRefuse
+                                                    : ShortPeriods::kAuto;
   FloorSpectra f;
   try {
     f = floor_spectra(run, opt);
@@ -279,19 +289,25 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("isopound-post ") + kIsopoundVersion);
 
+  CliWarnings warnings;  // implausible quantity options, printed after parsing
   SpectraArgs sa;
   auto* spectra =
       app.add_subcommand("spectra", "5 %-damped PSA and SD spectra of records (CSV, PNG)");
   spectra->add_option("records", sa.records, "record files (PEER .AT2 or columns)")->required();
   spectra->add_flag("--pair", sa.pair, "records two by two form horizontal pairs: RotD50/RotD100");
-  spectra->add_option("--damping", sa.damping, "damping ratio in % (default 5)");
+  quantity_option(spectra->add_option("--damping", sa.damping,
+                                      "damping ratio, e.g. '5 %' (default 5 %; a bare number is a "
+                                      "ratio: 0.05)"),
+                  {dim::kNone, "damping.ratio"}, &warnings);
   spectra->add_option("-o,--output,--out", sa.out, "output directory (default: spectra)");
   spectra->add_option("--unit", sa.unit, "columns files: g | m/s2 | cm/s2");
-  spectra->add_option("--dt", sa.dt, "columns files without a time column: time step, e.g. '5 ms'")
-      ->transform(quantity_of(dim::kTime, true));
+  quantity_option(spectra->add_option(
+                      "--dt", sa.dt, "columns files without a time column: time step, e.g. '5 ms'"),
+                  {dim::kTime, "ground_motion.dt", true}, &warnings);
   spectra->add_option("--column", sa.column, "columns files: acceleration column (0-based)");
   spectra->add_option("--time-column", sa.time_column, "columns files: time column (0-based)");
-  spectra->add_option("--scale", sa.scale, "multiplies the acceleration");
+  quantity_option(spectra->add_option("--scale", sa.scale, "multiplies the acceleration"),
+                  {dim::kNone, "ground_motion.scale"}, &warnings);
   spectra->add_option("--oversample", sa.oversample,
                       "sub-steps per record step for the peak (exact either way; default 1)");
 
@@ -308,30 +324,32 @@ int main(int argc, char** argv) {
       ->required();
   animate->add_option("--scale", aa.frame.scale, "displacement magnification (default 1)");
   animate->add_option("--fps", aa.timeline.fps,
-                      "regular frames per second of analysis time (default 25)");
+                      "regular frames per second of analysis time (default 25, thinned down to 5 "
+                      "to fit --max-frames)");
   animate->add_flag("--uniform", aa.timeline.uniform,
                     "only the regular frames (no extra frames inside contact episodes)");
   animate->add_option("--impact-frames", aa.timeline.frames_per_episode,
                       "frames inside each contact episode, start and end included (default 12, "
-                      "at least 8)");
+                      "thinned down to 8 to fit --max-frames; at least 8)");
   animate->add_option("--max-frames", aa.timeline.max_frames,
-                      "frame budget of the whole animation (default 1500)");
+                      "frame budget of the whole animation (default 1500): defaults are thinned "
+                      "to fit it, with a note");
   animate->add_option("-o,--output,--out", out, "output directory (default: RUN_DIR/animation)");
-  animate
-      ->add_option("--start", aa.timeline.start, "time of the first frame, e.g. '2 s' (default 0)")
-      ->transform(quantity_of(dim::kTime, false));
-  animate
-      ->add_option("--end", aa.timeline.end,
-                   "time of the last frame, e.g. '8 s' (default: end of the run)")
-      ->transform(quantity_of(dim::kTime, false));
-  animate
-      ->add_option("--preview", aa.preview, "also write preview.png of the frame at this time (s)")
-      ->transform(quantity_of(dim::kTime, false));
+  quantity_option(animate->add_option("--start", aa.timeline.start,
+                                      "time of the first frame, e.g. '2 s' (default 0)"),
+                  {dim::kTime});
+  quantity_option(
+      animate->add_option("--end", aa.timeline.end,
+                          "time of the last frame, e.g. '8 s' (default: end of the run)"),
+      {dim::kTime});
+  quantity_option(animate->add_option("--preview", aa.preview,
+                                      "also write preview.png of the frame at this time (s)"),
+                  {dim::kTime});
   animate->add_option("--model", model, "model file (default: the one named in summary.json)");
-  animate
-      ->add_option("--force-length", aa.frame.force_length,
-                   "drawn length of the run's largest contact force, e.g. '3 m' (default 3 m)")
-      ->transform(quantity_of(dim::kLength, true));
+  quantity_option(animate->add_option(
+                      "--force-length", aa.frame.force_length,
+                      "drawn length of the run's largest contact force, e.g. '3 m' (default 3 m)"),
+                  {dim::kLength, "", true});
   animate->add_option("--exaggerate", aa.exaggeration,
                       "view.py draws contact overlaps this many times deeper (default: automatic, "
                       "the deepest about 5 % of the drawing)");
@@ -384,15 +402,21 @@ int main(int argc, char** argv) {
   auto* floor = app.add_subcommand(
       "floor-spectra", "PSA and SD spectra of every level's absolute acceleration (CSV, PNG)");
   floor->add_option("run_dir", fa.dir, "directory with histories.csv and summary.json")->required();
-  floor->add_option("--damping", fa.damping, "damping ratio in % (default 5)");
-  floor
-      ->add_option("--periods", fa.periods,
-                   "periods in s, e.g. 0,0.05,0.1,0.2 (default: spectra's)")
-      ->delimiter(',');
+  quantity_option(floor->add_option("--damping", fa.damping,
+                                    "damping ratio, e.g. '5 %' (default 5 %; a bare number is a "
+                                    "ratio: 0.05)"),
+                  {dim::kNone, "damping.ratio"}, &warnings);
+  quantity_option(floor
+                      ->add_option("--periods", fa.periods,
+                                   "periods, e.g. 0,0.05,0.1,0.2 or '0,50 ms,0.1 s' (a bare "
+                                   "number is s; default: spectra's)")
+                      ->delimiter(','),
+                  {dim::kTime});
   floor->add_option("--samples-per-period", fa.samples_per_period,
                     "sampling rule: history interval <= T / this (default 10)");
   floor->add_option("--short-periods", fa.short_periods,
-                    "periods the history is too coarse for: refuse (exit 2, default) | clip");
+                    "periods the history is too coarse for: refuse (exit 2) | clip (dropped, a "
+                    "note); default: clip the default periods, refuse the --periods given");
   floor->add_option("--oversample", fa.oversample,
                     "sub-steps per history row for the peak (exact either way; default 1)");
   floor->add_option("-o,--output,--out", fa.out, "output directory (default: the run directory)");
@@ -403,6 +427,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? kOk : kBadInput;
   }
+  for (const std::string& w : warnings)
+    std::fprintf(stderr, "isopound-post: warning: %s\n", w.c_str());
+  aa.timeline.fps_given = animate->count("--fps") > 0;
+  aa.timeline.frames_per_episode_given = animate->count("--impact-frames") > 0;
   try {
     if (*spectra) return run_spectra(sa);
     if (*plot) return run_plot(run_dir, out, model);

@@ -213,7 +213,10 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
   std::map<std::pair<std::string, double>, std::vector<const StudyTableRow*>> cells;
   for (const StudyTableRow* r : rows)
     cells[{g >= 0 ? cell_text(r->axes[g]) : "", r->axes[x].number}].push_back(r);
-  std::vector<std::string> varying;
+  // A default never refuses: such axes are fixed at the study's first selected run (a zip
+  // partner keeps its own value there), said in one note and in the subtitle.
+  std::vector<std::string> varying, fixed;
+  std::vector<int> fixed_axes;
   for (std::size_t a = 0; a < table.axes.size(); ++a) {
     if (static_cast<int>(a) == x || static_cast<int>(a) == g) continue;
     const bool varies = std::any_of(cells.begin(), cells.end(), [&](const auto& cell) {
@@ -223,11 +226,27 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
     const std::vector<std::string> levels = levels_of(rows, static_cast<int>(a));
     varying.push_back(table.axes[a] + " (" + std::to_string(levels.size()) +
                       " values: " + join(levels, 6) + ")");
+    const StudyTableCell& first = rows.front()->axes[a];
+    const DisplayUnit au = axis_unit(table.axes[a]);
+    const std::string shown =
+        first.numeric && first.text.empty() && au.unit != "SI"
+            ? number_text(axis_display(first.number, au.divisor)) + " " + au.unit
+            : cell_text(first);
+    fixed.push_back(table.axes[a] + " = " + shown);
+    data.where.push_back({table.axes[a], shown});
+    fixed_axes.push_back(static_cast<int>(a));
   }
-  if (!varying.empty())
-    throw SweepPlotError(
-        "axes that are neither --x nor --group vary: " + join(varying, 100) +
-        "; fix each with --where AXIS=VALUE or choose one as --group (runs are never averaged)");
+  if (!varying.empty()) {
+    const StudyTableRow* first = rows.front();
+    std::erase_if(rows, [&](const StudyTableRow* r) {
+      return std::any_of(fixed_axes.begin(), fixed_axes.end(),
+                         [&](int a) { return cell_text(r->axes[a]) != cell_text(first->axes[a]); });
+    });
+    data.notes.push_back("axes that are neither --x nor --group vary: " + join(varying, 100) +
+                         "; drawn at " + join(fixed, 100) +
+                         " (the first run's; runs are never averaged): --where AXIS=VALUE "
+                         "chooses another value, --group AXIS one curve per value");
+  }
 
   // The curves, in the order the study enumerates the groups.
   const auto value = [&](const StudyTableRow* r, int column) {

@@ -1,5 +1,6 @@
 // A study's peak against one numeric swept axis (read through solver/study/study_table.h), one
-// curve per level of a grouping axis; every other axis fixed by --where, never averaged over.
+// curve per level of a grouping axis; every other axis fixed by --where (an axis that varies and
+// is left open: at the study's first selected run's value, with a note), never averaged over.
 // Ensembles as in polar_study.h: line = ensemble mean (Q_ens_mean), band = ensemble min–max.
 #pragma once
 
@@ -12,8 +13,8 @@
 
 namespace isopound::post {
 
-// Bad input (unknown axis or output, labels on the x axis, varying unfixed axes, nothing left
-// after the filters): the message names the option and the value; the CLI exits 2.
+// Bad input (unknown axis or output, labels on the x axis, nothing left after the filters): the
+// message names the option and the value; the CLI exits 2.
 class SweepPlotError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

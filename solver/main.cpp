@@ -300,10 +300,13 @@ int main(int argc, char** argv) {
   run->add_flag("--no-histories", no_histories, "Skip histories.csv");
   run->add_flag("--compare-unobstructed", compare_unobstructed,
                 "Also run without walls and neighbours; report each peak's amplification");
+  CliWarnings cli_warnings;  // implausible quantity options, listed with the model's warnings
   double until = 0.0;
-  run->add_option("--until", until,
-                  "Stop the analysis at this time, e.g. '5 s' (a bare number is s; analysis.t_end)")
-      ->transform(quantity_of(dim::kTime, true));
+  quantity_option(
+      run->add_option("--until", until,
+                      "Stop the analysis at this time, e.g. '5 s' (a bare number is s; the rule "
+                      "of analysis.t_end)"),
+      {dim::kTime, "analysis.t_end", true}, &cli_warnings);
   bool strict = false;
   run->add_flag("--strict", strict, "Implausible values (warnings) are errors: exit 2");
   EnsembleOptions ensemble;
@@ -357,16 +360,19 @@ int main(int argc, char** argv) {
       "pushover.csv (capacity curve) and pushover.json");
   pushover->add_option("model", model_path, "Model file (YAML)")->required();
   pushover->add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
-  std::string target_drift = "2 %", pattern = "first_mode", push_angle;
+  std::string pattern = "first_mode";
+  double target_drift = 0.02, push_angle = 0.0;
   int pushover_steps = 200;
-  pushover->add_option("--target-drift", target_drift, "Roof drift ratio to reach, e.g. '2 %'")
-      ->capture_default_str();
+  quantity_option(pushover->add_option("--target-drift", target_drift,
+                                       "Roof drift ratio to reach, e.g. '2 %' (default 2 %; a "
+                                       "bare number is a ratio: 0.02)"),
+                  {dim::kNone, "pushover.target_drift_ratio", true}, &cli_warnings);
   pushover->add_option("--pattern", pattern, "Lateral load pattern")
       ->check(CLI::IsMember({"first_mode", "uniform"}))
       ->capture_default_str();
-  pushover->add_option("--angle", push_angle,
-                       "3D: direction of the push in plan from x, counter-clockwise, with its "
-                       "unit, e.g. '30 deg' (default 0 deg)");
+  angle_option(pushover->add_option("--angle", push_angle,
+                                    "3D: direction of the push in plan from x, counter-clockwise, "
+                                    "with its unit, e.g. '30 deg' (default 0 deg)"));
   pushover->add_option("--steps", pushover_steps, "Displacement steps")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
@@ -395,6 +401,10 @@ int main(int argc, char** argv) {
       config.ground_motion.use_pulse = false;
       config.ground_motion.record_path = record_path;
     }
+    // Implausible quantity options are warned like the model's values (refused under --strict).
+    const bool has_strict = *run || *modes || *check;
+    for (const std::string& w : cli_warnings)
+      config.warnings.push_back(w + (has_strict ? " (--strict makes this an error)" : ""));
     if (no_histories) config.output.histories = false;
     if (until > 0) config.analysis.t_end = until;
     if (ensemble.jobs == 0)
@@ -421,26 +431,19 @@ int main(int argc, char** argv) {
                            ensemble.members > 0 ? &ensemble : nullptr);
     if (*pushover) {
       BuildingPushoverOptions options;
-      try {
-        options.target_drift_ratio = parse_quantity_as(target_drift, dim::kNone);
-      } catch (const UnitError& e) {
-        throw std::invalid_argument(std::string("--target-drift: ") + e.what());
-      }
-      if (!(options.target_drift_ratio > 0 && options.target_drift_ratio < 1))
-        throw std::invalid_argument("--target-drift must be in (0, 100 %), got '" + target_drift +
-                                    "'");
+      options.target_drift_ratio = target_drift;
+      if (!(target_drift < 1))
+        throw std::invalid_argument("--target-drift must be in (0, 100 %), got " +
+                                    readable_number(100 * target_drift) +
+                                    " % (a bare number is a ratio)");
       options.pattern = pattern == "uniform" ? BuildingPushoverOptions::Pattern::kUniform
                                              : BuildingPushoverOptions::Pattern::kFirstMode;
       options.steps = pushover_steps;
       const bool plan = !config.structures3d.empty();
-      if (!push_angle.empty()) {
+      if (pushover->count("--angle") > 0) {
         if (!plan)
           throw std::invalid_argument("--angle is for 3D models: a 2D building is pushed in x");
-        try {
-          options.angle = parse_angle(push_angle);
-        } catch (const UnitError& e) {
-          throw std::invalid_argument(std::string("--angle: ") + e.what());
-        }
+        options.angle = push_angle;
       }
       const BuildingPushoverResult result =
           plan ? run_pushover3d(config, options) : run_pushover2d(config, options);

@@ -158,5 +158,69 @@ TEST(CliRun, ThesisConfigsRunOnTheirRecord) {
   }
 }
 
+// --until takes a unit like analysis.t_end (a bare number is s) and gets its plausibility row: the
+// same run from '0.5 s', '500 ms' and 0.5; 5000 (easily meant in ms) is warned with the hint and
+// refused under --strict; 200000 is impossible.
+TEST(CliQuantities, UntilTakesUnitsAndTheRuleOfAnalysisTEnd) {
+  const std::string model = (test::source_dir() / "configs" / "tutorial.yaml").string();
+  const fs::path dir = scratch_dir("until-units");
+  std::string first;
+  int k = 0;
+  for (const char* until : {"0.5", "'0.5 s'", "'500 ms'"}) {
+    const fs::path out = dir / std::to_string(k++);
+    const Command c = run("run -q " + model + " --until " + until + " -o '" + out.string() + "'");
+    ASSERT_EQ(c.exit_code, 0) << until << ": " << c.output;
+    const std::string histories = test::file_text(out / "histories.csv");
+    ASSERT_GT(histories.size(), 1000u);
+    if (first.empty())
+      first = histories;
+    else
+      EXPECT_EQ(histories, first) << until;
+  }
+  Command c = run("run " + model + " --until 5000 --strict -o '" + (dir / "never").string() + "'");
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_NE(c.output.find("--until: '5000' is implausible"), std::string::npos) << c.output;
+  EXPECT_NE(c.output.find("did you mean '5000 ms'?"), std::string::npos) << c.output;
+  EXPECT_FALSE(fs::exists(dir / "never" / "summary.json"));
+  c = run("run " + model + " --until 200000 -o '" + (dir / "never").string() + "'");
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_NE(c.output.find("--until"), std::string::npos) << c.output;
+  EXPECT_NE(c.output.find("impossible"), std::string::npos) << c.output;
+  fs::remove_all(dir);
+}
+
+// pushover --target-drift is a ratio with a unit ('2 %' = 0.02, the default) and --angle an angle
+// that needs its unit, as in the model files; bad values exit 2 naming the option.
+TEST(CliQuantities, PushoverTargetDriftAndAngleTakeUnits) {
+  const std::string model =
+      (test::source_dir() / "configs" / "thesis-3storey-pushover.yaml").string();
+  const fs::path dir = scratch_dir("pushover-units");
+  std::string first;
+  int k = 0;
+  for (const char* drift :
+       {"", "--target-drift '2 %'", "--target-drift 2%", "--target-drift 0.02"}) {
+    const fs::path out = dir / std::to_string(k++);
+    const Command c = run("pushover -q " + model + " " + drift + " -o '" + out.string() + "'");
+    ASSERT_EQ(c.exit_code, 0) << drift << ": " << c.output;
+    const std::string curve = test::file_text(out / "pushover.csv");
+    if (first.empty())
+      first = curve;
+    else
+      EXPECT_EQ(curve, first) << drift;
+  }
+  for (const char* bad : {"--target-drift 2", "--target-drift '2 m'", "--target-drift 0"}) {
+    const Command c =
+        run("pushover -q " + model + " " + bad + " -o '" + (dir / "x").string() + "'");
+    EXPECT_EQ(c.exit_code, 2) << bad << ": " << c.output;
+    EXPECT_NE(c.output.find("--target-drift"), std::string::npos) << bad << ": " << c.output;
+  }
+  const fs::path model3d = test::source_dir() / "configs" / "tutorial-3d.yaml";
+  const Command bare =
+      run("pushover -q '" + model3d.string() + "' --angle 30 -o '" + (dir / "x").string() + "'");
+  EXPECT_EQ(bare.exit_code, 2) << bare.output;
+  EXPECT_NE(bare.output.find("did you mean '30 deg'?"), std::string::npos) << bare.output;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace isopound

@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace isopound::test {
@@ -31,6 +33,14 @@ inline bool shared_required() {
 
 inline std::filesystem::path source_dir() {
   return ISOPOUND_SOURCE_DIR;
+}
+
+// The whole text of a file ("" when absent).
+inline std::string file_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 struct CommandResult {

@@ -12,6 +12,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <regex>
 #include <sstream>
 
 #include "post/floor_spectra.h"
@@ -55,6 +56,10 @@ std::string building_2d(const std::string& k, const std::string& ground,
          "ground_motion:\n" +
          ground + "  extra_time: 0 s\noutput: " + output + "\n";
 }
+
+// The ground of building_2d in tests (c), (c') and (g): a 1 m/s pulse of 2 s over 6 s.
+constexpr const char* kPulse6s =
+    "  pulse: {amplitude: 1.0 m/s, period: 2 s, t_peak: 3 s, duration: 6 s, dt: 0.005 s}\n";
 
 // A 3D 2-storey building on Bouc-Wen bearings (2 x 2 bays of 6 m; `eccentricity` a YAML line or
 // "") under the built-in pulse pair (0.8 and 0.4 m/s, 1 s) at `angle`, histories at every sample.
@@ -224,19 +229,17 @@ TEST(PostFloorSpectra, RigidSuperstructureFloorsHaveTheBaseSlabsSpectrum) {
 // with exit 2, naming output.interval; with --short-periods clip the short periods are dropped.
 TEST(PostFloorSpectra, CoarseHistoryIsRefusedOrClipped) {
   const auto dir = test::scratch_dir("floor-coarse");
-  const auto run_dir = solve(
-      dir, building_2d("600 MN/m",
-                       "  pulse: {amplitude: 1.0 m/s, period: 2 s, t_peak: 3 s, duration: 6 s, "
-                       "dt: 0.005 s}\n",
-                       "{interval: 0.02 s}"));
+  const auto run_dir = solve(dir, building_2d("600 MN/m", kPulse6s, "{interval: 0.02 s}"));
   const auto refused =
       test::run_post("floor-spectra " + run_dir.string() + " --periods 0,0.1,0.5,1");
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
   EXPECT_NE(refused.output.find("output.interval"), std::string::npos) << refused.output;
   EXPECT_NE(refused.output.find("0.1 s"), std::string::npos) << refused.output;
   EXPECT_FALSE(std::filesystem::exists(run_dir / "floor-spectra.csv"));
-  // The default periods start at 0.02 s: refused too.
-  EXPECT_EQ(test::run_post("floor-spectra " + run_dir.string()).exit_code, 2);
+  // The default periods start at 0.02 s: refused when asked to (by default the short ones are
+  // dropped: DefaultPeriodsTheRowsCannotResolveAreDroppedWithOneNote).
+  EXPECT_EQ(
+      test::run_post("floor-spectra " + run_dir.string() + " --short-periods refuse").exit_code, 2);
 
   const auto clipped = test::run_post("floor-spectra " + run_dir.string() +
                                       " --periods 0,0.1,0.5,1 --short-periods clip");
@@ -253,11 +256,9 @@ TEST(PostFloorSpectra, CoarseHistoryIsRefusedOrClipped) {
 // analysis.dt, though the rows alone would allow T >= 0.01 s.
 TEST(PostFloorSpectra, RowsDenserThanTheStepsDoNotRelaxTheRule) {
   const auto dir = test::scratch_dir("floor-steps");
-  const auto run_dir = solve(
-      dir, building_2d("600 MN/m",
-                       "  pulse: {amplitude: 1.0 m/s, period: 2 s, t_peak: 3 s, duration: 6 s, "
-                       "dt: 0.005 s}\n",
-                       "{interval: 0.001 s}\nanalysis: {stepping: fixed, dt: 0.005 s}"));
+  const auto run_dir =
+      solve(dir, building_2d("600 MN/m", kPulse6s,
+                             "{interval: 0.001 s}\nanalysis: {stepping: fixed, dt: 0.005 s}"));
   const RunData run = read_run(run_dir);
   const HistorySampling h = history_sampling(run);
   EXPECT_DOUBLE_EQ(h.row_interval, 0.001);
@@ -371,6 +372,85 @@ TEST(PostFloorSpectra, ThreeDPlanPointsPeakAsTheSolversProbes) {
       "corners differ from the CM by up to %.1f %%\n",
       worst, 100 * corner_spread);
   EXPECT_GT(corner_spread, 0.05);  // the building does rotate
+  std::filesystem::remove_all(dir);
+}
+
+// (f) A default 3D run (rows at every record sample, 5 ms) with the default periods: a default
+// never refuses. Exactly the default periods below 10 row intervals (the rule, from the intervals
+// in summary.json) are dropped, the rest computed, one note names output.interval; periods given
+// that the rows cannot resolve stay an error.
+TEST(PostFloorSpectra, DefaultPeriodsTheRowsCannotResolveAreDroppedWithOneNote) {
+  const auto dir = test::scratch_dir("floor-default");
+  std::string model = building_3d("", "0 deg");
+  model.erase(model.find("output: {interval: 0 s}\n"));  // the default: every record sample
+  write_file(dir / "model.yaml", model);
+  const auto run_dir = dir / "run";
+  auto r = test::run_solver("run -q " + (dir / "model.yaml").string() + " --until '1 s' -o " +
+                            run_dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream summary_file(run_dir / "summary.json");
+  const auto settings = nlohmann::json::parse(summary_file).at("settings");
+  const double dt = std::max(settings.at("output_interval_s").get<double>(),
+                             settings.value("analysis_interval_s", 0.0));
+  EXPECT_DOUBLE_EQ(dt, 0.005);
+  std::vector<double> kept, dropped;
+  for (double t : default_periods())
+    (t == 0.0 || t >= 10 * dt * (1 - 1e-9) ? kept : dropped).push_back(t);
+  ASSERT_FALSE(dropped.empty());
+
+  r = test::run_post("floor-spectra " + run_dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::regex note(
+      "isopound-post: note: ([0-9]+) of the default periods[^\n]*output\\.interval");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.output, m, note)) << r.output;
+  EXPECT_EQ(std::stoul(m[1]), dropped.size());
+  std::size_t notes = 0;
+  for (std::size_t at = r.output.find("note:"); at != std::string::npos;
+       at = r.output.find("note:", at + 1))
+    ++notes;
+  EXPECT_EQ(notes, 1u) << r.output;
+  auto csv = read_csv(run_dir / "floor-spectra.csv");
+  ASSERT_EQ(csv["period_s"].size(), kept.size());
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    EXPECT_NEAR(csv["period_s"][i], kept[i], 1e-9 * kept[i]) << i;
+  std::printf(
+      "[ floor ] default periods on rows every %g s: %zu dropped (%g s to %g s), %zu kept\n", dt,
+      dropped.size(), dropped.front(), dropped.back(), kept.size());
+
+  // Periods given: kept as given or refused.
+  r = test::run_post("floor-spectra " + run_dir.string() + " --periods 0,0.02,1 -o " +
+                     (dir / "given").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("output.interval"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+// (g) --damping is a damping ratio read like the model files' damping.ratio: '5 %', 5% and 0.05
+// give the same CSV byte for byte (the default too), which records the ratio in every row; 2 %
+// gives larger ordinates; a bare 5 (500 %) is refused with exit 2 and the table's hint.
+TEST(PostFloorSpectra, DampingTakesAUnitAndTheCsvRecordsIt) {
+  const auto dir = test::scratch_dir("floor-damping");
+  const auto run_dir = solve(dir, building_2d("600 MN/m", kPulse6s, "{interval: 0 s}"));
+  const std::string args = "floor-spectra " + run_dir.string() + " --periods '0,50 ms,0.2,1 s,2'";
+  test::same_text_for_every_five_percent(args, dir, "floor-spectra.csv");
+  test::run_post(args + " --damping '2 %' -o " + (dir / "two").string());
+  auto five = read_csv(dir / "0.05" / "floor-spectra.csv");
+  EXPECT_EQ(five["period_s"], (std::vector<double>{0.0, 0.05, 0.2, 1.0, 2.0}));
+  EXPECT_EQ(five["damping_ratio"], std::vector<double>(5, 0.05));
+  auto two = read_csv(dir / "two" / "floor-spectra.csv");
+  EXPECT_EQ(two["damping_ratio"], std::vector<double>(5, 0.02));
+  ASSERT_EQ(two["b/floor 3 PSA [g]"].size(), 5u);
+  ASSERT_EQ(five["b/floor 3 PSA [g]"].size(), 5u);
+  for (std::size_t i = 1; i < 5; ++i)
+    EXPECT_GT(two["b/floor 3 PSA [g]"][i], five["b/floor 3 PSA [g]"][i]) << five["period_s"][i];
+
+  const auto bare = test::run_post("floor-spectra " + run_dir.string() + " --damping 5 -o " +
+                                   (dir / "never").string());
+  EXPECT_EQ(bare.exit_code, 2) << bare.output;
+  EXPECT_NE(bare.output.find("--damping"), std::string::npos) << bare.output;
+  EXPECT_NE(bare.output.find("did you mean '5 %'?"), std::string::npos) << bare.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "never"));
   std::filesystem::remove_all(dir);
 }
 

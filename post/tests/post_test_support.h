@@ -2,6 +2,7 @@
 // PNG rows are read top to bottom; pixel(x, y_up) takes y from the bottom like Figure coordinates.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -17,6 +18,7 @@
 
 namespace isopound::post::test {
 
+using ::isopound::test::file_text;
 using ::isopound::test::run_command;
 using ::isopound::test::source_dir;
 
@@ -47,6 +49,30 @@ inline std::vector<std::pair<double, std::string>> read_pvd(const std::filesyste
   for (auto it = std::sregex_iterator(s.begin(), s.end(), item); it != std::sregex_iterator(); ++it)
     frames.push_back({std::stod((*it)[1]), (*it)[2]});
   return frames;
+}
+
+// `isopound-post ARGS [--damping D] -o DIR/D` for every way of writing a 5 % damping ratio, and
+// without --damping (the default): each exits 0 and writes the same `file`, byte for byte (checked
+// here); returns its text. The run with 0.05 writes into DIR/0.05.
+inline std::string same_text_for_every_five_percent(const std::string& args,
+                                                    const std::filesystem::path& dir,
+                                                    const std::string& file) {
+  std::string first;
+  int k = 0;
+  for (const char* damping : {"0.05", "'5 %'", "5%", ""}) {
+    const std::filesystem::path out =
+        dir / (k++ == 0 ? std::string("0.05") : "5-" + std::to_string(k));
+    const auto r = run_post(args + (*damping ? std::string(" --damping ") + damping : "") +
+                            " -o '" + out.string() + "'");
+    EXPECT_EQ(r.exit_code, 0) << damping << ": " << r.output;
+    const std::string text = file_text(out / file);
+    if (first.empty())
+      first = text;
+    else
+      EXPECT_EQ(text, first) << "--damping " << damping << " against 0.05";
+  }
+  EXPECT_FALSE(first.empty());
+  return first;
 }
 
 using ::isopound::test::Image;

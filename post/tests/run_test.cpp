@@ -336,15 +336,17 @@ TEST(PostHeadless, PrivateXvfbIsAnnouncedInOneLineAndGoneAfterTheCommand) {
                !std::filesystem::exists("/tmp/.X" + std::string(m[1]) + "-lock"))
       << "socket left behind";
   EXPECT_GT(test::read_png((dir / "out" / "spectra.png").string()).variance(), 50.0);
-  // spectra.csv: header, then T = 0 (PSA = PGA in g) and the 120 default periods.
+  // spectra.csv: header, then T = 0 (PSA = PGA in g) and the 120 default periods, each row with
+  // the damping ratio.
   std::ifstream csv(dir / "out" / "spectra.csv");
   std::string header, first, row;
   std::getline(csv, header);
-  EXPECT_EQ(header, "period_s,rec_PSA_g,rec_SD_m");
+  EXPECT_EQ(header, "period_s,damping_ratio,rec_PSA_g,rec_SD_m");
   std::getline(csv, first);
   double pga = 0.0;
   for (int i = 0; i < 200; ++i) pga = std::max(pga, std::abs(std::sin(0.1 * i)));
-  EXPECT_NEAR(std::stod(first.substr(first.find(',') + 1)), pga / 9.81, 1e-8);
+  EXPECT_EQ(first.substr(0, first.find(',', 2)), "0,0.05");
+  EXPECT_NEAR(std::stod(first.substr(first.find(',', 2) + 1)), pga / 9.81, 1e-8);
   int rows = 1;
   while (std::getline(csv, row)) ++rows;
   EXPECT_EQ(rows, 121);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <sstream>
+#include <string>
 
 #include "post/spectra.h"
 #include "post_test_support.h"
@@ -166,6 +168,45 @@ TEST(PostSpectra, StatisticsAreLogSpaceMedianAndSampleSigmaLn) {
   EXPECT_DOUBLE_EQ(st.median_sd[0], 2.0);  // exp(mean(ln 1, ln 4))
   EXPECT_DOUBLE_EQ(st.sigma_ln_sd[0], std::log(4.0) / std::sqrt(2.0));
   EXPECT_DOUBLE_EQ(st.median_psa[0], 4.0);
+}
+
+// `spectra --damping` is a damping ratio read like the model files' damping.ratio: '5 %', 5% and
+// 0.05 (a bare number is SI) give the same CSV, byte for byte, which records the ratio in every
+// row; a bare 5 (500 %) is refused with exit 2 and the hint of the plausibility table.
+TEST(PostSpectra, DampingTakesAUnitAndTheCsvRecordsIt) {
+  const auto dir = test::scratch_dir("spectra-damping");
+  synthetic_record(dir, "rec", 0.3);
+  const std::string record = (dir / "rec.txt").string() + " --unit m/s2 --dt '10 ms'";
+  const std::string plain =
+      test::same_text_for_every_five_percent("spectra " + record, dir, "spectra.csv");
+  EXPECT_EQ(plain.substr(0, 23), "period_s,damping_ratio,");
+  // Every row records the ratio; 2 % gives larger ordinates (summed over the periods).
+  const auto psa_sum = [](const std::string& csv, const std::string& ratio) {
+    std::istringstream in(csv);
+    std::string row;
+    std::getline(in, row);
+    double sum = 0.0;
+    while (std::getline(in, row)) {
+      std::istringstream cells(row);
+      std::string period, xi, psa;
+      std::getline(cells, period, ',');
+      std::getline(cells, xi, ',');
+      std::getline(cells, psa, ',');
+      EXPECT_EQ(xi, ratio) << row;
+      sum += std::stod(psa);
+    }
+    return sum;
+  };
+  test::run_post("spectra " + record + " --damping '2 %' -o " + (dir / "two").string());
+  EXPECT_GT(psa_sum(test::file_text(dir / "two" / "spectra.csv"), "0.02"),
+            1.1 * psa_sum(plain, "0.05"));
+
+  const auto bare =
+      test::run_post("spectra " + record + " --damping 5 -o " + (dir / "never").string());
+  EXPECT_EQ(bare.exit_code, 2) << bare.output;
+  EXPECT_NE(bare.output.find("--damping"), std::string::npos) << bare.output;
+  EXPECT_NE(bare.output.find("did you mean '5 %'?"), std::string::npos) << bare.output;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -248,10 +248,6 @@ TEST_F(PostSweepPlot, BadInputExitsTwoNamingTheOptionAndTheValue) {
                  "--y 'drift': not an output of the study; its outputs are: u_base, F_impact");
   expect_refusal("--x variant --y u_base --group QW --where gap=0.1",
                  "--x 'variant': the axis holds labels (KV, soft, free), not numbers");
-  expect_refusal("--x gap --y u_base --group variant",
-                 "axes that are neither --x nor --group vary: QW (2 values: 0.05, 0.1)");
-  expect_refusal("--x gap --y u_base",
-                 "vary: QW (2 values: 0.05, 0.1), variant (3 values: KV, soft, free)");
   expect_refusal("--x gap --y u_base --group variant --where QW=0.07",
                  "--where 'QW=0.07': no run has QW = 0.07; its values are: 0.05, 0.1");
   expect_refusal("--x gap --y u_base --group variant --where colour=red",
@@ -264,6 +260,43 @@ TEST_F(PostSweepPlot, BadInputExitsTwoNamingTheOptionAndTheValue) {
       test::run_post("sweep-plot " + (*dir_ / "none.db").string() + " --x gap --y u_base");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.output.find("study database not found"), std::string::npos) << missing.output;
+}
+
+// With neither --where nor --group for an axis that varies (a default), the curves are drawn at
+// the study's first run's value of it, as if --where had fixed it there: the same numbers,
+// one note, the subtitle saying where (runs are never averaged).
+TEST_F(PostSweepPlot, VaryingAxesLeftOpenAreDrawnAtTheFirstRunsValueWithANote) {
+  const StudyTable table = read_study_table(*plain_);
+  SweepPlotOptions o;
+  o.x_axis = "gap";
+  o.output = "u_base";
+  o.group_axis = "variant";
+  const SweepPlotData open = sweep_plot_data(table, *plain_, o);
+  o.where = {{"QW", "0.05"}};
+  const SweepPlotData fixed = sweep_plot_data(table, *plain_, o);
+  ASSERT_EQ(open.curves.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(open.curves[k].label, fixed.curves[k].label);
+    EXPECT_EQ(open.curves[k].x, fixed.curves[k].x);
+    EXPECT_EQ(open.curves[k].y, fixed.curves[k].y);
+  }
+  ASSERT_EQ(open.notes.size(), 1u);
+  EXPECT_NE(open.notes[0].find("QW (2 values: 0.05, 0.1); drawn at QW = 5 %"), std::string::npos)
+      << open.notes[0];
+  EXPECT_EQ(sweep_plot_subtitle(open), "where QW = 5 %");
+  // No --group either: QW and variant at the first run's (5 %, KV), one curve, exit 0.
+  const fs::path out = *dir_ / "open";
+  const auto r = test::run_post("sweep-plot " + *plain_ + " --x gap --y u_base -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("note: axes that are neither --x nor --group vary: QW (2 values: 0.05, "
+                          "0.1), variant (3 values: KV, soft, free); drawn at QW = 5 %, variant = "
+                          "KV"),
+            std::string::npos)
+      << r.output;
+  const auto csv = read_csv(out / "plain-sweep-u_base-gap.csv");
+  ASSERT_EQ(csv.size(), 4u);  // header and the three gaps
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_EQ(std::stod(csv[i + 1][1]), fixed.curves[0].y[i]) << csv[i + 1][1];
 }
 
 // One colour per group curve: each of the three variants' colours is on the plot (left half of
