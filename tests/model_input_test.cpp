@@ -100,10 +100,10 @@ TEST(ModelInputValid, FullModelParsesToSI) {
   EXPECT_DOUBLE_EQ(iso.period, 2.5);
   EXPECT_DOUBLE_EQ(iso.strength_ratio, 0.10);
   EXPECT_DOUBLE_EQ(iso.yield_displacement, 0.025);
-  EXPECT_DOUBLE_EQ(iso.n, 1.0);
-  EXPECT_DOUBLE_EQ(iso.A, 1.0);
-  EXPECT_DOUBLE_EQ(iso.beta, 0.6);
-  EXPECT_DOUBLE_EQ(iso.gamma, 0.4);
+  EXPECT_DOUBLE_EQ(iso.bouc_wen.n, 1.0);
+  EXPECT_DOUBLE_EQ(iso.bouc_wen.A, 1.0);
+  EXPECT_DOUBLE_EQ(iso.bouc_wen.beta, 0.6);
+  EXPECT_DOUBLE_EQ(iso.bouc_wen.gamma, 0.4);
   EXPECT_TRUE(iso.strength_is_yield_force);
   EXPECT_DOUBLE_EQ(iso.carried_mass, 1.27e6);
 

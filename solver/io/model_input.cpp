@@ -49,7 +49,7 @@ bool written(const YAML::Node& map, std::string_view key) {
 
 // A storey's `hysteresis:` map (StoryHysteresisConfig). Keys of another model are refused.
 StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
-  using Model = StoryHysteresisConfig::Model;
+  using Model = HysteresisModel;
   using By = StoryHysteresisConfig::YieldBy;
   static constexpr const char* kBoucWenKeys[] = {"n", "A", "beta", "gamma"};
   static constexpr const char* kPeakKeys[] = {"capping_drift_ratio", "post_capping_ratio",
@@ -58,15 +58,15 @@ StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
                     "post_yield_ratio", "n", "A", "beta", "gamma", "capping_drift_ratio",
                     "post_capping_ratio", "residual_strength_ratio", "deterioration"});
   StoryHysteresisConfig h;
-  h.model = node.required("model").choice<Model>({{"elastic", Model::kElastic},
-                                                  {"bilinear", Model::kBilinear},
-                                                  {"bouc_wen", Model::kBoucWen},
-                                                  {"peak_oriented", Model::kPeakOriented}});
+  h.law.model = node.required("model").choice<Model>({{"elastic", Model::kElastic},
+                                                      {"bilinear", Model::kBilinear},
+                                                      {"bouc_wen", Model::kBoucWen},
+                                                      {"peak_oriented", Model::kPeakOriented}});
   const std::string name = node.required("model").string();
   const auto refuse = [&](const char* key) {
     if (const auto n = node.find(key)) n->fail("not used by hysteresis model '" + name + "'");
   };
-  if (h.model == Model::kElastic) {
+  if (h.law.model == Model::kElastic) {
     for (const char* key :
          {"yield_drift_ratio", "yield_shear", "yield_shear_coefficient", "post_yield_ratio"})
       refuse(key);
@@ -74,9 +74,9 @@ StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
     for (const char* key : kPeakKeys) refuse(key);
     return h;
   }
-  if (h.model != Model::kBoucWen)
+  if (h.law.model != Model::kBoucWen)
     for (const char* key : kBoucWenKeys) refuse(key);
-  if (h.model != Model::kPeakOriented)
+  if (h.law.model != Model::kPeakOriented)
     for (const char* key : kPeakKeys) refuse(key);
   // The yield point: exactly one of three keys.
   int given = 0;
@@ -108,28 +108,30 @@ StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
     }
   };
   ratio_below_one("post_yield_ratio", h.post_yield_ratio);
-  if (h.model == Model::kBoucWen) {
-    node.read_number("n", Bound::kPositive, h.n);
-    node.read_number("A", Bound::kPositive, h.A);
-    node.read_number("beta", Bound::kAny, h.beta);
-    node.read_number("gamma", Bound::kAny, h.gamma);
-    if (!(h.beta + h.gamma > 0.0)) {
+  if (h.law.model == Model::kBoucWen) {
+    BoucWenShape& s = h.law.bouc_wen;
+    node.read_number("n", Bound::kPositive, s.n);
+    node.read_number("A", Bound::kPositive, s.A);
+    node.read_number("beta", Bound::kAny, s.beta);
+    node.read_number("gamma", Bound::kAny, s.gamma);
+    if (!(s.beta + s.gamma > 0.0)) {
       const auto g = node.find("gamma");
       (g ? *g : node).fail("beta + gamma must be > 0 for bouc_wen");
     }
   }
-  if (h.model == Model::kPeakOriented) {
-    h.capping_drift_ratio = node.required("capping_drift_ratio").number(Bound::kPositive);
-    h.post_capping_ratio = node.required("post_capping_ratio").number(Bound::kPositive);
+  if (h.law.model == Model::kPeakOriented) {
+    PeakOrientedShape& p = h.law.peak_oriented;
+    p.capping_drift_ratio = node.required("capping_drift_ratio").number(Bound::kPositive);
+    p.post_capping_ratio = node.required("post_capping_ratio").number(Bound::kPositive);
     if (const auto r = node.find("residual_strength_ratio")) {
-      h.residual_strength_ratio = r->number(Bound::kNonNegative);
-      if (h.residual_strength_ratio > 1.0)
+      p.residual_strength_ratio = r->number(Bound::kNonNegative);
+      if (p.residual_strength_ratio > 1.0)
         r->fail("must be <= 1 (a fraction of the yield strength; got '" + r->string() + "')");
     } else {
       node.note_default("residual_strength_ratio", "0");
     }
     if (const auto l = node.find("deterioration")) {
-      h.deterioration = l->number(Bound::kPositive);
+      p.deterioration = l->number(Bound::kPositive);
     } else {
       node.note_default("deterioration", "none");
     }
@@ -141,10 +143,10 @@ StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
 // every floor, hence the weight above, is read).
 void check_story_hysteresis(const BuildingConfig& b, const std::vector<InputNode>& nodes) {
   for (std::size_t i = 0; i < b.floors.size(); ++i) {
-    const StoryHysteresisConfig& h = b.floors[i].hysteresis;
-    if (h.model != StoryHysteresisConfig::Model::kPeakOriented) continue;
+    const HysteresisLawConfig& law = b.floors[i].hysteresis.law;
+    if (law.model != HysteresisModel::kPeakOriented) continue;
     const double d_y = story_yield_drift(b, static_cast<int>(i));
-    const double d_c = h.capping_drift_ratio * b.floors[i].height;
+    const double d_c = law.peak_oriented.capping_drift_ratio * b.floors[i].height;
     if (!(d_c > d_y)) {
       char what[160];
       std::snprintf(what, sizeof what,
@@ -232,13 +234,14 @@ IsolatorConfig read_isolator(const InputNode& node) {
   node.read_quantity("uy", dim::kLength, Bound::kPositive, iso.yield_displacement);
   node.read_boolean("strength_is_yield_force", iso.strength_is_yield_force);
   if (iso.model != Model::kBoucWen) return iso;
-  node.read_number("n", Bound::kPositive, iso.n);
-  node.read_number("A", Bound::kPositive, iso.A);
-  node.read_number("beta", Bound::kAny, iso.beta);
-  node.read_number("gamma", Bound::kAny, iso.gamma);
-  if (!(iso.beta + iso.gamma > 0.0)) {
+  BoucWenShape& s = iso.bouc_wen;
+  node.read_number("n", Bound::kPositive, s.n);
+  node.read_number("A", Bound::kPositive, s.A);
+  node.read_number("beta", Bound::kAny, s.beta);
+  node.read_number("gamma", Bound::kAny, s.gamma);
+  if (!(s.beta + s.gamma > 0.0)) {
     char sum[32];
-    std::snprintf(sum, sizeof sum, "%g", iso.beta + iso.gamma);
+    std::snprintf(sum, sizeof sum, "%g", s.beta + s.gamma);
     const std::string what = std::string("beta + gamma must be > 0 for bouc_wen (got ") + sum + ")";
     if (const auto gamma = node.find("gamma")) gamma->fail(what);
     if (const auto beta = node.find("beta")) beta->fail(what);

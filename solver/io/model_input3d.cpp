@@ -83,16 +83,16 @@ constexpr Dimension kMoment{2, 1, -2};  // N m
 // post_yield_ratio, and for bouc_wen n, A, beta, gamma}: column_element.h. Keys the model does
 // not use are refused.
 ColumnHysteresisConfig read_column_hysteresis(const InputNode& node) {
-  using M = ColumnHysteresisConfig::Model;
+  using M = HysteresisModel;
   ColumnHysteresisConfig c;
   if (!node.is_map()) node.fail("expected a map {model: bilinear | bouc_wen | elastic, ...}");
-  c.model = node.required("model").choice<M>(
+  c.law.model = node.required("model").choice<M>(
       {{"bilinear", M::kBilinear}, {"bouc_wen", M::kBoucWen}, {"elastic", M::kElastic}});
-  if (c.model == M::kElastic) {
+  if (c.law.model == M::kElastic) {
     node.expect_keys({"model"});
     return c;
   }
-  if (c.model == M::kBilinear)
+  if (c.law.model == M::kBilinear)
     node.expect_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio"});
   else
     node.expect_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio", "n", "A",
@@ -110,13 +110,14 @@ ColumnHysteresisConfig read_column_hysteresis(const InputNode& node) {
   const InputNode alpha = node.required("post_yield_ratio");
   c.post_yield_ratio = alpha.number(Bound::kNonNegative);
   if (!(c.post_yield_ratio < 1.0)) alpha.fail("must be in [0, 1): post-yield / elastic stiffness");
-  if (c.model == M::kBoucWen) {
-    node.read_number("n", Bound::kPositive, c.n);
-    if (c.n < 1.0) node.fail_at_key("n", "must be >= 1");
-    node.read_number("A", Bound::kPositive, c.A);
-    node.read_number("beta", Bound::kAny, c.beta);
-    node.read_number("gamma", Bound::kAny, c.gamma);
-    if (!(c.beta + c.gamma > 0)) node.fail_at_key("beta", "beta + gamma must be > 0");
+  if (c.law.model == M::kBoucWen) {
+    BoucWenShape& s = c.law.bouc_wen;
+    node.read_number("n", Bound::kPositive, s.n);
+    if (s.n < 1.0) node.fail_at_key("n", "must be >= 1");
+    node.read_number("A", Bound::kPositive, s.A);
+    node.read_number("beta", Bound::kAny, s.beta);
+    node.read_number("gamma", Bound::kAny, s.gamma);
+    if (!(s.beta + s.gamma > 0)) node.fail_at_key("beta", "beta + gamma must be > 0");
   }
   return c;
 }
@@ -242,11 +243,12 @@ BearingConfig read_bearing_law(const InputNode& node) {
   node.read_quantity("uy", dim::kLength, Bound::kPositive, c.yield_displacement);
   node.read_boolean("strength_is_yield_force", c.strength_is_yield_force);
   if (c.model == M::kBilinear) return c;
-  node.read_number("n", Bound::kPositive, c.n);
-  node.read_number("A", Bound::kPositive, c.A);
-  node.read_number("beta", Bound::kAny, c.beta);
-  node.read_number("gamma", Bound::kAny, c.gamma);
-  if (!(c.beta + c.gamma > 0)) node.fail_at_key("gamma", "beta + gamma must be > 0");
+  BoucWenShape& s = c.bouc_wen;
+  node.read_number("n", Bound::kPositive, s.n);
+  node.read_number("A", Bound::kPositive, s.A);
+  node.read_number("beta", Bound::kAny, s.beta);
+  node.read_number("gamma", Bound::kAny, s.gamma);
+  if (!(s.beta + s.gamma > 0)) node.fail_at_key("gamma", "beta + gamma must be > 0");
   return c;
 }
 
