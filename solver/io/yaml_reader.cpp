@@ -377,6 +377,14 @@ bool InputNode::has(std::string_view key) const {
   return find(key).has_value();
 }
 
+bool InputNode::written(std::string_view key) const {
+  if (!node_.IsDefined() || !node_.IsMap()) return false;
+  for (const auto& entry : node_)
+    if (entry.first.IsScalar() && entry.first.Scalar() == key)
+      return entry.second.IsDefined() && !entry.second.IsNull();
+  return false;
+}
+
 InputNode InputNode::required(std::string_view key) const {
   std::optional<InputNode> child = find(key);
   if (!child) fail_at_key(key, "missing required key '" + std::string(key) + "'");

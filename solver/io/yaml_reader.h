@@ -94,6 +94,9 @@ class InputNode {
   void expect_keys(std::initializer_list<std::string_view> allowed) const;
   void expect_keys(const std::vector<std::string_view>& allowed) const;
   bool has(std::string_view key) const;
+  // Whether this map holds `key` with a non-null value, without counting it as used (a rule that
+  // asks whether a key was given before it decides to read it).
+  bool written(std::string_view key) const;
   std::optional<InputNode> find(std::string_view key) const;
   // Throws "missing required key" at this node's position when absent.
   InputNode required(std::string_view key) const;
