@@ -61,6 +61,22 @@ TEST(HysteresisLaw, EachShapeKeyIsValidatedAtItsOwnKey) {
   EXPECT_EQ(checked, 8);
 }
 
+// One rule for n: >= 1 for every member (the coupled law needs it), so 0.5 is refused and 1 is not.
+TEST(HysteresisLaw, BoucWenExponentIsAtLeastOne) {
+  HysteresisLawConfig c = valid(HysteresisModel::kBoucWen);
+  c.bouc_wen.n = 0.5;
+  ASSERT_TRUE(hysteresis_law_problem(c));
+  EXPECT_EQ(hysteresis_law_problem(c)->key, "n");
+  EXPECT_NE(hysteresis_law_problem(c)->what.find("must be >= 1"), std::string::npos);
+  EXPECT_THROW(make_uniaxial_hysteresis(c, kYield), std::invalid_argument);
+  c.bouc_wen.n = 1.0;
+  EXPECT_FALSE(hysteresis_law_problem(c));
+  EXPECT_NO_THROW(make_biaxial_hysteresis(c, kYield));
+  EXPECT_TRUE(post_yield_ratio_problem(1.0));
+  EXPECT_TRUE(post_yield_ratio_problem(-0.01));
+  EXPECT_FALSE(post_yield_ratio_problem(0.0));
+}
+
 // Bilinear: past yield F = F_y + alpha K (d - u_y). Bouc-Wen n = 1 on monotonic loading from rest:
 // dz/dx = A - (beta + gamma) z, z = A/(beta + gamma) (1 - exp(-(beta + gamma) x)), x = d/u_y.
 TEST(HysteresisLaw, UniaxialLawsAgainstClosedForms) {

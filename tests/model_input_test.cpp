@@ -368,7 +368,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"qw_zero_bilinear.yaml", 7, "building.isolator.QW",
                  "must be > 0 for the bilinear and bouc_wen models"},
         BadModel{"beta_gamma.yaml", 6, "building.isolator.gamma", "beta + gamma must be > 0"},
-        BadModel{"n_zero.yaml", 4, "building.isolator.n", "must be > 0"},
+        BadModel{"n_zero.yaml", 4, "building.isolator.n", "must be >= 1"},
         BadModel{"empty_floors.yaml", 3, "building.floors", "no floors"},
         BadModel{"count_zero.yaml", 4, "building.floors.count",
                  "must be between 1 and 200 (got 0)"},

@@ -15,8 +15,9 @@
 
 #include "solver/io/bumper_input.h"
 #include "solver/io/contact3d_input.h"
-#include "solver/io/friction_pendulum_input.h"
 #include "solver/io/ground_motion_input.h"
+#include "solver/io/hysteresis_input.h"
+#include "solver/io/isolator_input.h"
 #include "solver/io/model_input3d.h"
 #include "solver/io/site_checks.h"
 #include "solver/io/struck_columns_input.h"
@@ -39,38 +40,17 @@ constexpr int kMaxFloors = 200;
 constexpr int kMaxHalvings = 60;  // dt / 2^60 is already far below any physical time scale
 constexpr const char* kFixedBaseOnly = "not allowed for a fixed-base building (isolated: false)";
 
-// A storey's `hysteresis:` map (StoryHysteresisConfig). Keys of another model are refused.
+// A storey's `hysteresis:` map: the model, the storey's yield point (one of three keys) and
+// alpha, and the law's shape (hysteresis_input.h). Keys the model does not use are refused.
 StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
-  using Model = HysteresisModel;
   using By = StoryHysteresisConfig::YieldBy;
-  static constexpr const char* kBoucWenKeys[] = {"n", "A", "beta", "gamma"};
-  static constexpr const char* kPeakKeys[] = {"capping_drift_ratio", "post_capping_ratio",
-                                              "residual_strength_ratio", "deterioration"};
-  node.expect_keys({"model", "yield_drift_ratio", "yield_shear", "yield_shear_coefficient",
-                    "post_yield_ratio", "n", "A", "beta", "gamma", "capping_drift_ratio",
-                    "post_capping_ratio", "residual_strength_ratio", "deterioration"});
+  using M = HysteresisModel;
+  node.expect_keys(with_hysteresis_keys({"model", "yield_drift_ratio", "yield_shear",
+                                         "yield_shear_coefficient", "post_yield_ratio"}));
   StoryHysteresisConfig h;
-  h.law.model = node.required("model").choice<Model>({{"elastic", Model::kElastic},
-                                                      {"bilinear", Model::kBilinear},
-                                                      {"bouc_wen", Model::kBoucWen},
-                                                      {"peak_oriented", Model::kPeakOriented}});
-  const std::string name = node.required("model").string();
-  const auto refuse = [&](const char* key) {
-    if (const auto n = node.find(key)) n->fail("not used by hysteresis model '" + name + "'");
-  };
-  if (h.law.model == Model::kElastic) {
-    for (const char* key :
-         {"yield_drift_ratio", "yield_shear", "yield_shear_coefficient", "post_yield_ratio"})
-      refuse(key);
-    for (const char* key : kBoucWenKeys) refuse(key);
-    for (const char* key : kPeakKeys) refuse(key);
-    return h;
-  }
-  if (h.law.model != Model::kBoucWen)
-    for (const char* key : kBoucWenKeys) refuse(key);
-  if (h.law.model != Model::kPeakOriented)
-    for (const char* key : kPeakKeys) refuse(key);
-  // The yield point: exactly one of three keys.
+  h.law.model =
+      read_hysteresis_model(node, {M::kElastic, M::kBilinear, M::kBoucWen, M::kPeakOriented});
+  if (!h.yields()) return h;
   int given = 0;
   if (const auto r = node.find("yield_drift_ratio")) {
     h.yield_by = By::kDriftRatio;
@@ -91,43 +71,8 @@ StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
     node.fail_at_key("yield_drift_ratio",
                      "missing: give yield_drift_ratio (d_y / h), yield_shear (a force) or "
                      "yield_shear_coefficient (V_y / weight above)");
-  const auto ratio_below_one = [&](const char* key, double& out) {
-    if (const auto r = node.find(key)) {
-      out = r->number();
-      if (!(out >= 0.0 && out < 1.0)) r->fail("must be in [0, 1) (got '" + r->string() + "')");
-    } else {
-      node.note_default(key, "0");
-    }
-  };
-  ratio_below_one("post_yield_ratio", h.post_yield_ratio);
-  if (h.law.model == Model::kBoucWen) {
-    BoucWenShape& s = h.law.bouc_wen;
-    node.read_number("n", Bound::kPositive, s.n);
-    node.read_number("A", Bound::kPositive, s.A);
-    node.read_number("beta", Bound::kAny, s.beta);
-    node.read_number("gamma", Bound::kAny, s.gamma);
-    if (!(s.beta + s.gamma > 0.0)) {
-      const auto g = node.find("gamma");
-      (g ? *g : node).fail("beta + gamma must be > 0 for bouc_wen");
-    }
-  }
-  if (h.law.model == Model::kPeakOriented) {
-    PeakOrientedShape& p = h.law.peak_oriented;
-    p.capping_drift_ratio = node.required("capping_drift_ratio").number(Bound::kPositive);
-    p.post_capping_ratio = node.required("post_capping_ratio").number(Bound::kPositive);
-    if (const auto r = node.find("residual_strength_ratio")) {
-      p.residual_strength_ratio = r->number(Bound::kNonNegative);
-      if (p.residual_strength_ratio > 1.0)
-        r->fail("must be <= 1 (a fraction of the yield strength; got '" + r->string() + "')");
-    } else {
-      node.note_default("residual_strength_ratio", "0");
-    }
-    if (const auto l = node.find("deterioration")) {
-      p.deterioration = l->number(Bound::kPositive);
-    } else {
-      node.note_default("deterioration", "none");
-    }
-  }
+  h.post_yield_ratio = read_post_yield_ratio(node);
+  read_hysteresis_shape(node, h.law);
   return h;
 }
 
@@ -194,9 +139,7 @@ std::vector<FloorConfig> read_floors(const InputNode& node,
 
 IsolatorConfig read_isolator(const InputNode& node) {
   using Model = IsolatorConfig::Model;
-  node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
-                    "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter",
-                    "friction_hysteresis"});
+  node.expect_keys(isolator_keys());
   IsolatorConfig iso;
   node.read_choice<Model>("model",
                           {{"linear", Model::kLinear},
@@ -204,41 +147,10 @@ IsolatorConfig read_isolator(const InputNode& node) {
                            {"bouc_wen", Model::kBoucWen},
                            {"friction_pendulum", Model::kFrictionPendulum}},
                           iso.model);
-  if (iso.model == Model::kFrictionPendulum) {
-    // No Tb, QW or Bouc-Wen shape: they are refused as unused (the pendulum's period is R's).
-    read_friction_pendulum(node, iso);
-    node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
-    return iso;
-  }
-  node.read_quantity("Tb", dim::kTime, Bound::kPositive, iso.period);
-  node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
-  if (iso.model == Model::kLinear) return iso;  // K_post only: no strength, no yield
-  if (const auto qw = node.find("QW")) {
-    iso.strength_ratio = qw->number(Bound::kNonNegative);
-    if (iso.strength_ratio == 0.0)
-      qw->fail(
-          "must be > 0 for the bilinear and bouc_wen models (an isolator without strength is "
-          "model: linear)");
-    // Q/W > 1 (a bare 5 is 500 %) is refused by the plausibility table (plausibility.h).
-  } else {
-    node.note_default("QW", "0.05");
-  }
-  node.read_quantity("uy", dim::kLength, Bound::kPositive, iso.yield_displacement);
-  node.read_boolean("strength_is_yield_force", iso.strength_is_yield_force);
-  if (iso.model != Model::kBoucWen) return iso;
-  BoucWenShape& s = iso.bouc_wen;
-  node.read_number("n", Bound::kPositive, s.n);
-  node.read_number("A", Bound::kPositive, s.A);
-  node.read_number("beta", Bound::kAny, s.beta);
-  node.read_number("gamma", Bound::kAny, s.gamma);
-  if (!(s.beta + s.gamma > 0.0)) {
-    char sum[32];
-    std::snprintf(sum, sizeof sum, "%g", s.beta + s.gamma);
-    const std::string what = std::string("beta + gamma must be > 0 for bouc_wen (got ") + sum + ")";
-    if (const auto gamma = node.find("gamma")) gamma->fail(what);
-    if (const auto beta = node.find("beta")) beta->fail(what);
-    node.fail(what);
-  }
+  read_isolator_keys(
+      node, iso.model == Model::kFrictionPendulum, isolator_hysteresis_law(iso).model, iso, [&] {
+        node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
+      });
   return iso;
 }
 

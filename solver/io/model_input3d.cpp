@@ -11,7 +11,8 @@
 #include <limits>
 
 #include "solver/io/bumper_input.h"
-#include "solver/io/friction_pendulum_input.h"
+#include "solver/io/hysteresis_input.h"
+#include "solver/io/isolator_input.h"
 #include "solver/io/model_input.h"
 #include "solver/io/struck_columns_input.h"
 #include "solver/structures/building3d.h"
@@ -79,23 +80,17 @@ const std::vector<std::string_view> kColumnPropKeys = {
 constexpr Dimension kMoment{2, 1, -2};  // N m
 
 // hysteresis: {model: bilinear | bouc_wen | elastic, yield_drift_ratio | yield_moment,
-// post_yield_ratio, and for bouc_wen n, A, beta, gamma}: column_element.h. Keys the model does
+// post_yield_ratio, the law's shape (hysteresis_input.h)}: column_element.h. Keys the model does
 // not use are refused.
 ColumnHysteresisConfig read_column_hysteresis(const InputNode& node) {
   using M = HysteresisModel;
   ColumnHysteresisConfig c;
   if (!node.is_map()) node.fail("expected a map {model: bilinear | bouc_wen | elastic, ...}");
-  c.law.model = node.required("model").choice<M>(
-      {{"bilinear", M::kBilinear}, {"bouc_wen", M::kBoucWen}, {"elastic", M::kElastic}});
-  if (c.law.model == M::kElastic) {
-    node.expect_keys({"model"});
-    return c;
-  }
-  if (c.law.model == M::kBilinear)
-    node.expect_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio"});
-  else
-    node.expect_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio", "n", "A",
-                      "beta", "gamma"});
+  node.expect_keys(
+      with_hysteresis_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio"}));
+  // No peak_oriented: it has no biaxial form.
+  c.law.model = read_hysteresis_model(node, {M::kBilinear, M::kBoucWen, M::kElastic});
+  if (!c.yields()) return c;
   const auto ratio = node.find("yield_drift_ratio");
   const auto moment = node.find("yield_moment");
   if (ratio && moment)
@@ -106,18 +101,8 @@ ColumnHysteresisConfig read_column_hysteresis(const InputNode& node) {
                      "yield_moment (V_y = 2 M_y / h)");
   if (ratio) c.yield_drift_ratio = ratio->number(Bound::kPositive);
   if (moment) c.yield_moment = moment->quantity(kMoment, Bound::kPositive);
-  const InputNode alpha = node.required("post_yield_ratio");
-  c.post_yield_ratio = alpha.number(Bound::kNonNegative);
-  if (!(c.post_yield_ratio < 1.0)) alpha.fail("must be in [0, 1): post-yield / elastic stiffness");
-  if (c.law.model == M::kBoucWen) {
-    BoucWenShape& s = c.law.bouc_wen;
-    node.read_number("n", Bound::kPositive, s.n);
-    if (s.n < 1.0) node.fail_at_key("n", "must be >= 1");
-    node.read_number("A", Bound::kPositive, s.A);
-    node.read_number("beta", Bound::kAny, s.beta);
-    node.read_number("gamma", Bound::kAny, s.gamma);
-    if (!(s.beta + s.gamma > 0)) node.fail_at_key("beta", "beta + gamma must be > 0");
-  }
+  c.post_yield_ratio = read_post_yield_ratio(node);
+  read_hysteresis_shape(node, c.law);
   return c;
 }
 
@@ -213,9 +198,7 @@ void read_diaphragm_extras(const InputNode& node, Diaphragm3DConfig& d) {
 
 BearingConfig read_bearing_law(const InputNode& node) {
   using M = BearingConfig::Model;
-  node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
-                    "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter",
-                    "friction_hysteresis"});
+  node.expect_keys(isolator_keys());
   BearingConfig c;
   node.read_choice<M>("model",
                       {{"bouc_wen", M::kBoucWenCoupled},
@@ -226,28 +209,8 @@ BearingConfig read_bearing_law(const InputNode& node) {
                       c.model);
   // Only the keys of the chosen law are read; any other is refused as unused (the key rule).
   node.read_quantity("carried_mass", dim::kMass, Bound::kPositive, c.carried_mass);
-  if (c.model == M::kFrictionPendulum) {  // the keys of the 2D friction pendulum
-    read_friction_pendulum(node, c);
-    return c;
-  }
-  node.read_quantity("Tb", dim::kTime, Bound::kPositive, c.period);
-  if (c.model == M::kLinear) return c;  // K_post only: no strength, no yield
-  if (const auto qw = node.find("QW")) {
-    c.strength_ratio = qw->number(Bound::kNonNegative);
-    if (c.strength_ratio == 0.0)
-      qw->fail("must be > 0 for a yielding bearing (a bearing without strength is model: linear)");
-  } else {
-    node.note_default("QW", "0.05");
-  }
-  node.read_quantity("uy", dim::kLength, Bound::kPositive, c.yield_displacement);
-  node.read_boolean("strength_is_yield_force", c.strength_is_yield_force);
-  if (c.model == M::kBilinear) return c;
-  BoucWenShape& s = c.bouc_wen;
-  node.read_number("n", Bound::kPositive, s.n);
-  node.read_number("A", Bound::kPositive, s.A);
-  node.read_number("beta", Bound::kAny, s.beta);
-  node.read_number("gamma", Bound::kAny, s.gamma);
-  if (!(s.beta + s.gamma > 0)) node.fail_at_key("gamma", "beta + gamma must be > 0");
+  read_isolator_keys(node, c.model == M::kFrictionPendulum, bearing_hysteresis_law(c).model, c,
+                     [] {});
   return c;
 }
 

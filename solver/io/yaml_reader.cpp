@@ -545,6 +545,16 @@ void InputNode::read_string(std::string_view key, std::string& out) const {
     note_default(key, out);
 }
 
+std::size_t InputNode::choice_index(std::span<const std::string_view> names) const {
+  const std::string text = string();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == text) {
+      note_choice(text);
+      return i;
+    }
+  fail_unknown_choice(text, {names.begin(), names.end()});
+}
+
 void InputNode::fail_unknown_choice(const std::string& text,
                                     const std::vector<std::string_view>& names) const {
   const std::size_t dot = path_.find_last_of('.');

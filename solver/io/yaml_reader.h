@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -130,6 +131,8 @@ class InputNode {
     }
     fail_unknown_choice(text, names);
   }
+  // One of the names of a table (hysteresis_model_names()): its index in `names`.
+  std::size_t choice_index(std::span<const std::string_view> names) const;
 
   // --- optional keys of this map: each sets `out` only when `key` is present; when it is
   // absent, a tracked read records `out` as the default used (note_default) ---

@@ -73,7 +73,8 @@ std::span<const HysteresisShapeKey> all_hysteresis_shape_keys() {
 std::optional<HysteresisProblem> hysteresis_law_problem(const HysteresisLawConfig& c) {
   if (c.model == HysteresisModel::kBoucWen) {
     const BoucWenShape& s = c.bouc_wen;
-    if (!(s.n > 0.0 && std::isfinite(s.n))) return problem("n", "must be > 0", s.n);
+    if (!(s.n >= 1.0 && std::isfinite(s.n)))
+      return problem("n", "must be >= 1, in every member (the coupled law needs it)", s.n);
     if (!(s.A > 0.0 && std::isfinite(s.A))) return problem("A", "must be > 0", s.A);
     if (!std::isfinite(s.beta)) return problem("beta", "must be finite", s.beta);
     if (!(s.beta + s.gamma > 0.0 && std::isfinite(s.gamma)))

@@ -22,7 +22,8 @@ namespace isopound {
 // kElastic: no law (a storey or column stays a linear spring in the stiffness matrix).
 enum class HysteresisModel { kElastic, kBilinear, kBoucWen, kPeakOriented };
 
-// Bouc-Wen shape: n > 0 (the coupled biaxial law needs n >= 1), A > 0, beta + gamma > 0.
+// Bouc-Wen shape, one rule for every member: n >= 1 (the biaxial law's z |z|^(n-2) needs it; n = 1
+// is the smoothest, a large n approaches the bilinear), A > 0, beta + gamma > 0.
 struct BoucWenShape {
   double n = 2.0;
   double A = 1.0;
