@@ -93,6 +93,10 @@ std::set<std::string>& registry() {
   static std::set<std::string> keys;
   return keys;
 }
+std::set<std::string>& accepted_registry() {
+  static std::set<std::string> keys;
+  return keys;
+}
 std::vector<std::pair<std::string, Dimension>>& quantity_registry() {
   static std::vector<std::pair<std::string, Dimension>> keys;
   return keys;
@@ -155,6 +159,11 @@ std::vector<std::string> known_model_keys() {
 std::vector<std::pair<std::string, Dimension>> known_quantity_keys() {
   const std::lock_guard<std::mutex> lock(registry_mutex());
   return quantity_registry();
+}
+
+std::vector<std::string> known_accepted_keys() {
+  const std::lock_guard<std::mutex> lock(registry_mutex());
+  return {accepted_registry().begin(), accepted_registry().end()};
 }
 
 InputError::InputError(std::string file, int line, int column, std::string key, std::string what)
@@ -321,6 +330,10 @@ void InputNode::expect_keys(std::initializer_list<std::string_view> allowed) con
 }
 
 void InputNode::expect_keys(const std::vector<std::string_view>& names) const {
+  if (ledger_) {
+    const std::lock_guard<std::mutex> lock(registry_mutex());
+    for (const auto& name : names) accepted_registry().insert(generic_path(child_path(name)));
+  }
   if (!node_.IsDefined() || node_.IsNull()) {
     if (path_.empty()) fail("the document is empty; expected a map with keys: " + join(names));
     return;

@@ -69,6 +69,9 @@ std::vector<std::string> known_model_keys();
 // Every key path a tracked read has read as a quantity or number, with the dimension read
 // (angles as dimensionless): the numeric part of the schema, for the plausibility tests.
 std::vector<std::pair<std::string, Dimension>> known_quantity_keys();
+// Every key path a tracked read has accepted (expect_keys), written or not, list indices
+// dropped: what the readers accept, for the plausibility tests.
+std::vector<std::string> known_accepted_keys();
 
 // A node of an input file together with its key path ("building.floors[1].mass") and the
 // nearest known position. Nodes built in code have no mark: errors then point at the nearest
