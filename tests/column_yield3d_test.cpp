@@ -153,7 +153,7 @@ void set_hysteresis(Building3DConfig& b, const ColumnHysteresisConfig& h) {
 
 ColumnHysteresisConfig bilinear(double yield_drift_ratio, double alpha) {
   ColumnHysteresisConfig h;
-  h.model = ColumnHysteresisConfig::Model::kBilinear;
+  h.law.model = HysteresisModel::kBilinear;
   h.yield_drift_ratio = yield_drift_ratio;
   h.post_yield_ratio = alpha;
   return h;
@@ -266,7 +266,7 @@ TEST(ColumnYield3D, EnergyBalanceWithYieldingColumnsWallsAndFriction) {
   ModelConfig c = thesis_config();
   Building3DConfig& b = c.structures3d[0];
   ColumnHysteresisConfig h = bilinear(0.002, 0.05);
-  h.model = ColumnHysteresisConfig::Model::kBoucWen;
+  h.law.model = HysteresisModel::kBoucWen;
   set_hysteresis(b, h);
   b.bearing.model = BearingConfig::Model::kFrictionPendulum;
   b.bearing.radius = 2.0;
@@ -364,14 +364,14 @@ TEST(ColumnYield3D, InputReadsTheLawsAndRefusesBadOnes) {
 )";
   const ModelConfig c = load_text(head);
   const Building3DConfig& b = c.structures3d[0];
-  using M = ColumnHysteresisConfig::Model;
-  EXPECT_EQ(b.storeys[0].columns[0].hysteresis.model, M::kBilinear);
+  using M = HysteresisModel;
+  EXPECT_EQ(b.storeys[0].columns[0].hysteresis.law.model, M::kBilinear);
   EXPECT_DOUBLE_EQ(b.storeys[0].columns[0].hysteresis.yield_drift_ratio, 0.005);
   EXPECT_DOUBLE_EQ(b.storeys[0].columns[0].hysteresis.post_yield_ratio, 0.05);
-  EXPECT_EQ(b.storeys[1].columns[3].hysteresis.model, M::kBoucWen);
+  EXPECT_EQ(b.storeys[1].columns[3].hysteresis.law.model, M::kBoucWen);
   EXPECT_DOUBLE_EQ(b.storeys[1].columns[3].hysteresis.yield_moment, 300e3);
-  EXPECT_DOUBLE_EQ(b.storeys[1].columns[3].hysteresis.n, 3.0);
-  EXPECT_EQ(b.storeys[2].columns[0].hysteresis.model, M::kElastic);
+  EXPECT_DOUBLE_EQ(b.storeys[1].columns[3].hysteresis.law.bouc_wen.n, 3.0);
+  EXPECT_EQ(b.storeys[2].columns[0].hysteresis.law.model, M::kElastic);
   EXPECT_DOUBLE_EQ(b.storeys[2].columns[1].hysteresis.yield_drift_ratio, 0.01);
   // Yield per axis (section 45 x 30 cm): the drift ratio gives one d_y, V_y = k_i d_y; the
   // moment one V_y = 2 M_y / h, d_y,i = V_y / k_i.
@@ -412,11 +412,12 @@ TEST(ColumnYield3D, InputReadsTheLawsAndRefusesBadOnes) {
       {with("post_yield_ratio: 5 %}}", "post_yield_ratio: -5 %}}"), 5,
        "structures[0].columns.hysteresis.post_yield_ratio", ""},
       {with("post_yield_ratio: 5 %}}", "post_yield_ratio: 5 %, n: 2}}"), 5,
-       "structures[0].columns.hysteresis.n", "unknown key"},
+       "structures[0].columns.hysteresis.n", "is not used with model: bilinear"},
       {with("post_yield_ratio: 2 %, n: 3}", "post_yield_ratio: 2 %, n: 3, yield_drift_ratio: 1 %}"),
        11, "structures[0].storeys[1].hysteresis.yield_moment", "not both"},
       {with("{model: elastic}", "{model: elastic, post_yield_ratio: 0}"), 14,
-       "structures[0].storeys[2].columns[0].hysteresis.post_yield_ratio", "unknown key"},
+       "structures[0].storeys[2].columns[0].hysteresis.post_yield_ratio",
+       "is not used with model: elastic"},
       {with("yield_drift_ratio: 1 %, post_yield_ratio: 0", "post_yield_ratio: 0"), 15,
        "structures[0].storeys[2].columns[1].hysteresis.yield_drift_ratio", "yield_moment"},
       {with(law, "hysteresis: {model: plastic}"), 5, "structures[0].columns.hysteresis.model",

@@ -100,10 +100,10 @@ TEST(ModelInputValid, FullModelParsesToSI) {
   EXPECT_DOUBLE_EQ(iso.period, 2.5);
   EXPECT_DOUBLE_EQ(iso.strength_ratio, 0.10);
   EXPECT_DOUBLE_EQ(iso.yield_displacement, 0.025);
-  EXPECT_DOUBLE_EQ(iso.n, 1.0);
-  EXPECT_DOUBLE_EQ(iso.A, 1.0);
-  EXPECT_DOUBLE_EQ(iso.beta, 0.6);
-  EXPECT_DOUBLE_EQ(iso.gamma, 0.4);
+  EXPECT_DOUBLE_EQ(iso.bouc_wen.n, 1.0);
+  EXPECT_DOUBLE_EQ(iso.bouc_wen.A, 1.0);
+  EXPECT_DOUBLE_EQ(iso.bouc_wen.beta, 0.6);
+  EXPECT_DOUBLE_EQ(iso.bouc_wen.gamma, 0.4);
   EXPECT_TRUE(iso.strength_is_yield_force);
   EXPECT_DOUBLE_EQ(iso.carried_mass, 1.27e6);
 
@@ -368,7 +368,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"qw_zero_bilinear.yaml", 7, "building.isolator.QW",
                  "must be > 0 for the bilinear and bouc_wen models"},
         BadModel{"beta_gamma.yaml", 6, "building.isolator.gamma", "beta + gamma must be > 0"},
-        BadModel{"n_zero.yaml", 4, "building.isolator.n", "must be > 0"},
+        BadModel{"n_zero.yaml", 4, "building.isolator.n", "must be >= 1"},
         BadModel{"empty_floors.yaml", 3, "building.floors", "no floors"},
         BadModel{"count_zero.yaml", 4, "building.floors.count",
                  "must be between 1 and 200 (got 0)"},

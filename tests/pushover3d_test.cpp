@@ -35,7 +35,7 @@ ModelConfig fixed_base_bilinear(std::size_t storeys) {
   b.damping.type = Damping3DConfig::Type::kNone;  // a static push: damping plays no part
   for (Storey3DConfig& s : b.storeys)
     for (Column3DConfig& col : s.columns) {
-      col.hysteresis.model = ColumnHysteresisConfig::Model::kBilinear;
+      col.hysteresis.law.model = HysteresisModel::kBilinear;
       col.hysteresis.yield_drift_ratio = 0.005;
       col.hysteresis.post_yield_ratio = 0.05;
     }
@@ -89,7 +89,7 @@ TEST(Pushover3D, AlongXEqualsThe2DShearBuildingWithSummedStoreys) {
     f.mass = s.floor.mass;
     f.stiffness = 16 * kColumnStiffness;
     f.height = s.height;
-    f.hysteresis.model = StoryHysteresisConfig::Model::kBilinear;
+    f.hysteresis.law.model = HysteresisModel::kBilinear;
     f.hysteresis.yield_value = 0.005;  // yield drift ratio
     f.hysteresis.post_yield_ratio = 0.05;
     c2.building.floors.push_back(f);

@@ -28,7 +28,7 @@ ModelConfig fixed_base(int floors, StoryHysteresisConfig h) {
 
 TEST(Pushover, OneStoreyBilinearIsKUpToYieldThenAlphaK) {
   StoryHysteresisConfig h;
-  h.model = StoryHysteresisConfig::Model::kBilinear;
+  h.law.model = HysteresisModel::kBilinear;
   h.yield_value = 0.005;  // d_y = 1.6 cm, V_y = 9.6 MN
   h.post_yield_ratio = 0.05;
   BuildingPushoverOptions o;
@@ -70,12 +70,12 @@ TEST(Pushover, ElasticBuildingFollowsTheLinearSolution) {
 // the peak base shear (at the capping drift).
 TEST(Pushover, PeakOrientedStoreyHasACappingPoint) {
   StoryHysteresisConfig h;
-  h.model = StoryHysteresisConfig::Model::kPeakOriented;
+  h.law.model = HysteresisModel::kPeakOriented;
   h.yield_value = 0.005;
   h.post_yield_ratio = 0.05;
-  h.capping_drift_ratio = 0.02;
-  h.post_capping_ratio = 0.1;
-  h.residual_strength_ratio = 0.2;
+  h.law.peak_oriented.capping_drift_ratio = 0.02;
+  h.law.peak_oriented.post_capping_ratio = 0.1;
+  h.law.peak_oriented.residual_strength_ratio = 0.2;
   BuildingPushoverOptions o;
   o.target_drift_ratio = 0.04;
   o.steps = 100;

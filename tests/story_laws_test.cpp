@@ -32,7 +32,7 @@ double force_at(UniaxialMaterial& law, double d) {
 
 TEST(StoryLaws, YieldDriftFromEachKey) {
   StoryHysteresisConfig h;
-  h.model = StoryHysteresisConfig::Model::kBilinear;
+  h.law.model = HysteresisModel::kBilinear;
   h.yield_by = StoryHysteresisConfig::YieldBy::kDriftRatio;
   h.yield_value = 0.005;
   EXPECT_DOUBLE_EQ(story_yield_drift(one_storey(h), 0), 0.016);
@@ -46,7 +46,7 @@ TEST(StoryLaws, YieldDriftFromEachKey) {
 
 TEST(StoryLaws, BilinearCornersInClosedForm) {
   StoryHysteresisConfig h;
-  h.model = StoryHysteresisConfig::Model::kBilinear;
+  h.law.model = HysteresisModel::kBilinear;
   h.yield_value = 0.005;  // d_y = 1.6 cm
   h.post_yield_ratio = 0.05;
   const auto law = make_story_material(one_storey(h), 0);
@@ -67,20 +67,18 @@ TEST(StoryLaws, BilinearCornersInClosedForm) {
 // integrated with classical RK4 at a fine step (independent of the law's trapezoidal scheme).
 TEST(StoryLaws, BoucWenMatchesRk4OfItsOde) {
   StoryHysteresisConfig h;
-  h.model = StoryHysteresisConfig::Model::kBoucWen;
+  h.law.model = HysteresisModel::kBoucWen;
   h.yield_value = 0.005;
   h.post_yield_ratio = 0.05;
-  h.n = 2;
-  h.A = 1;
-  h.beta = 0.3;
-  h.gamma = 0.7;
+  h.law.bouc_wen = {2, 1, 0.3, 0.7};
   const auto law = make_story_material(one_storey(h), 0);
   const double k = 600e6, dy = 0.016, a = 0.05;
   const double amplitude = 4 * dy, w = 2 * std::numbers::pi;
   const auto rate = [&](double t) { return amplitude * w * std::cos(w * t); };
   const auto dz = [&](double t, double z) {
     const double v = rate(t);
-    return (h.A * v - h.gamma * std::abs(v) * std::abs(z) * z - h.beta * v * z * z) / dy;
+    const BoucWenShape& s = h.law.bouc_wen;
+    return (s.A * v - s.gamma * std::abs(v) * std::abs(z) * z - s.beta * v * z * z) / dy;
   };
   const int steps = 20000;  // 2 cycles
   const double dt = 2.0 / steps;

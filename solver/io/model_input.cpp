@@ -14,7 +14,10 @@
 #include <vector>
 
 #include "solver/io/bumper_input.h"
-#include "solver/io/friction_pendulum_input.h"
+#include "solver/io/contact3d_input.h"
+#include "solver/io/ground_motion_input.h"
+#include "solver/io/hysteresis_input.h"
+#include "solver/io/isolator_input.h"
 #include "solver/io/model_input3d.h"
 #include "solver/io/site_checks.h"
 #include "solver/io/struck_columns_input.h"
@@ -34,51 +37,20 @@ constexpr int kIntMax = std::numeric_limits<int>::max();
 // for"): the tallest buildings have ~160 storeys; a model assembles dense n x n matrices and
 // solves their eigenproblem, so n is kept where that is milliseconds, as for 3D (kMaxStoreys).
 constexpr int kMaxFloors = 200;
-constexpr int kMaxHalvings = 60;          // dt / 2^60 is already far below any physical time scale
-constexpr double kMaxPulseSamples = 1e6;  // 1e6 x 8 bytes; a real pulse has ~10^4
+constexpr int kMaxHalvings = 60;  // dt / 2^60 is already far below any physical time scale
 constexpr const char* kFixedBaseOnly = "not allowed for a fixed-base building (isolated: false)";
 
-// Whether a map holds `key` with a non-null value, without counting it as used.
-bool written(const YAML::Node& map, std::string_view key) {
-  if (!map.IsDefined() || !map.IsMap()) return false;
-  for (const auto& entry : map)
-    if (entry.first.IsScalar() && entry.first.Scalar() == key)
-      return entry.second.IsDefined() && !entry.second.IsNull();
-  return false;
-}
-
-// A storey's `hysteresis:` map (StoryHysteresisConfig). Keys of another model are refused.
+// A storey's `hysteresis:` map: the model, the storey's yield point (one of three keys) and
+// alpha, and the law's shape (hysteresis_input.h). Keys the model does not use are refused.
 StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
-  using Model = StoryHysteresisConfig::Model;
   using By = StoryHysteresisConfig::YieldBy;
-  static constexpr const char* kBoucWenKeys[] = {"n", "A", "beta", "gamma"};
-  static constexpr const char* kPeakKeys[] = {"capping_drift_ratio", "post_capping_ratio",
-                                              "residual_strength_ratio", "deterioration"};
-  node.expect_keys({"model", "yield_drift_ratio", "yield_shear", "yield_shear_coefficient",
-                    "post_yield_ratio", "n", "A", "beta", "gamma", "capping_drift_ratio",
-                    "post_capping_ratio", "residual_strength_ratio", "deterioration"});
+  using M = HysteresisModel;
+  node.expect_keys(with_hysteresis_keys({"model", "yield_drift_ratio", "yield_shear",
+                                         "yield_shear_coefficient", "post_yield_ratio"}));
   StoryHysteresisConfig h;
-  h.model = node.required("model").choice<Model>({{"elastic", Model::kElastic},
-                                                  {"bilinear", Model::kBilinear},
-                                                  {"bouc_wen", Model::kBoucWen},
-                                                  {"peak_oriented", Model::kPeakOriented}});
-  const std::string name = node.required("model").string();
-  const auto refuse = [&](const char* key) {
-    if (const auto n = node.find(key)) n->fail("not used by hysteresis model '" + name + "'");
-  };
-  if (h.model == Model::kElastic) {
-    for (const char* key :
-         {"yield_drift_ratio", "yield_shear", "yield_shear_coefficient", "post_yield_ratio"})
-      refuse(key);
-    for (const char* key : kBoucWenKeys) refuse(key);
-    for (const char* key : kPeakKeys) refuse(key);
-    return h;
-  }
-  if (h.model != Model::kBoucWen)
-    for (const char* key : kBoucWenKeys) refuse(key);
-  if (h.model != Model::kPeakOriented)
-    for (const char* key : kPeakKeys) refuse(key);
-  // The yield point: exactly one of three keys.
+  h.law.model =
+      read_hysteresis_model(node, {M::kElastic, M::kBilinear, M::kBoucWen, M::kPeakOriented});
+  if (!h.yields()) return h;
   int given = 0;
   if (const auto r = node.find("yield_drift_ratio")) {
     h.yield_by = By::kDriftRatio;
@@ -99,41 +71,8 @@ StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
     node.fail_at_key("yield_drift_ratio",
                      "missing: give yield_drift_ratio (d_y / h), yield_shear (a force) or "
                      "yield_shear_coefficient (V_y / weight above)");
-  const auto ratio_below_one = [&](const char* key, double& out) {
-    if (const auto r = node.find(key)) {
-      out = r->number();
-      if (!(out >= 0.0 && out < 1.0)) r->fail("must be in [0, 1) (got '" + r->string() + "')");
-    } else {
-      node.note_default(key, "0");
-    }
-  };
-  ratio_below_one("post_yield_ratio", h.post_yield_ratio);
-  if (h.model == Model::kBoucWen) {
-    node.read_number("n", Bound::kPositive, h.n);
-    node.read_number("A", Bound::kPositive, h.A);
-    node.read_number("beta", Bound::kAny, h.beta);
-    node.read_number("gamma", Bound::kAny, h.gamma);
-    if (!(h.beta + h.gamma > 0.0)) {
-      const auto g = node.find("gamma");
-      (g ? *g : node).fail("beta + gamma must be > 0 for bouc_wen");
-    }
-  }
-  if (h.model == Model::kPeakOriented) {
-    h.capping_drift_ratio = node.required("capping_drift_ratio").number(Bound::kPositive);
-    h.post_capping_ratio = node.required("post_capping_ratio").number(Bound::kPositive);
-    if (const auto r = node.find("residual_strength_ratio")) {
-      h.residual_strength_ratio = r->number(Bound::kNonNegative);
-      if (h.residual_strength_ratio > 1.0)
-        r->fail("must be <= 1 (a fraction of the yield strength; got '" + r->string() + "')");
-    } else {
-      node.note_default("residual_strength_ratio", "0");
-    }
-    if (const auto l = node.find("deterioration")) {
-      h.deterioration = l->number(Bound::kPositive);
-    } else {
-      node.note_default("deterioration", "none");
-    }
-  }
+  h.post_yield_ratio = read_post_yield_ratio(node);
+  read_hysteresis_shape(node, h.law);
   return h;
 }
 
@@ -141,10 +80,10 @@ StoryHysteresisConfig read_story_hysteresis(const InputNode& node) {
 // every floor, hence the weight above, is read).
 void check_story_hysteresis(const BuildingConfig& b, const std::vector<InputNode>& nodes) {
   for (std::size_t i = 0; i < b.floors.size(); ++i) {
-    const StoryHysteresisConfig& h = b.floors[i].hysteresis;
-    if (h.model != StoryHysteresisConfig::Model::kPeakOriented) continue;
+    const HysteresisLawConfig& law = b.floors[i].hysteresis.law;
+    if (law.model != HysteresisModel::kPeakOriented) continue;
     const double d_y = story_yield_drift(b, static_cast<int>(i));
-    const double d_c = h.capping_drift_ratio * b.floors[i].height;
+    const double d_c = law.peak_oriented.capping_drift_ratio * b.floors[i].height;
     if (!(d_c > d_y)) {
       char what[160];
       std::snprintf(what, sizeof what,
@@ -200,9 +139,7 @@ std::vector<FloorConfig> read_floors(const InputNode& node,
 
 IsolatorConfig read_isolator(const InputNode& node) {
   using Model = IsolatorConfig::Model;
-  node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
-                    "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter",
-                    "friction_hysteresis"});
+  node.expect_keys(isolator_keys());
   IsolatorConfig iso;
   node.read_choice<Model>("model",
                           {{"linear", Model::kLinear},
@@ -210,40 +147,10 @@ IsolatorConfig read_isolator(const InputNode& node) {
                            {"bouc_wen", Model::kBoucWen},
                            {"friction_pendulum", Model::kFrictionPendulum}},
                           iso.model);
-  if (iso.model == Model::kFrictionPendulum) {
-    // No Tb, QW or Bouc-Wen shape: they are refused as unused (the pendulum's period is R's).
-    read_friction_pendulum(node, iso);
-    node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
-    return iso;
-  }
-  node.read_quantity("Tb", dim::kTime, Bound::kPositive, iso.period);
-  node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
-  if (iso.model == Model::kLinear) return iso;  // K_post only: no strength, no yield
-  if (const auto qw = node.find("QW")) {
-    iso.strength_ratio = qw->number(Bound::kNonNegative);
-    if (iso.strength_ratio == 0.0)
-      qw->fail(
-          "must be > 0 for the bilinear and bouc_wen models (an isolator without strength is "
-          "model: linear)");
-    // Q/W > 1 (a bare 5 is 500 %) is refused by the plausibility table (plausibility.h).
-  } else {
-    node.note_default("QW", "0.05");
-  }
-  node.read_quantity("uy", dim::kLength, Bound::kPositive, iso.yield_displacement);
-  node.read_boolean("strength_is_yield_force", iso.strength_is_yield_force);
-  if (iso.model != Model::kBoucWen) return iso;
-  node.read_number("n", Bound::kPositive, iso.n);
-  node.read_number("A", Bound::kPositive, iso.A);
-  node.read_number("beta", Bound::kAny, iso.beta);
-  node.read_number("gamma", Bound::kAny, iso.gamma);
-  if (!(iso.beta + iso.gamma > 0.0)) {
-    char sum[32];
-    std::snprintf(sum, sizeof sum, "%g", iso.beta + iso.gamma);
-    const std::string what = std::string("beta + gamma must be > 0 for bouc_wen (got ") + sum + ")";
-    if (const auto gamma = node.find("gamma")) gamma->fail(what);
-    if (const auto beta = node.find("beta")) beta->fail(what);
-    node.fail(what);
-  }
+  read_isolator_keys(
+      node, iso.model == Model::kFrictionPendulum, isolator_hysteresis_law(iso).model, iso, [&] {
+        node.read_quantity("carried_mass", dim::kMass, Bound::kNonNegative, iso.carried_mass);
+      });
   return iso;
 }
 
@@ -380,7 +287,7 @@ ImpactLawUses read_impact(const InputNode& node, ImpactLawConfig& c) {
     const auto given = node.find(key);
     if (given) return *given;
     // The other family's stiffness given instead: the classic slip (k for a Hertz law).
-    if (written(node.yaml(), other))
+    if (node.written(other))
       node.fail_at_key(key, "law " + c.law + " is a " + family + " law: it uses '" + key +
                                 "', not '" + other + "'");
     return node.required(key);
@@ -433,10 +340,10 @@ WallConfig read_wall(const InputNode& node) {
   if (const auto gap = node.find("gap")) {
     w.gap_left = w.gap_right = gap->quantity(dim::kLength, Bound::kNonNegative);
     for (const char* key : {"gap_left", "gap_right"})
-      if (written(node.yaml(), key))
+      if (node.written(key))
         node.find(key)->fail("give either gap (both sides) or gap_left/gap_right");
   } else {
-    if (!written(node.yaml(), "gap_left") && !written(node.yaml(), "gap_right"))
+    if (!node.written("gap_left") && !node.written("gap_right"))
       node.fail_at_key("gap", "missing required key 'gap' (or gap_left/gap_right)");
     if (w.left) w.gap_left = node.required("gap_left").quantity(dim::kLength, Bound::kNonNegative);
     if (w.right)
@@ -548,115 +455,6 @@ BuildingConfig read_building(const InputNode& node) {
       add(*walls);
   }
   return b;
-}
-
-PulseParameters read_pulse(const InputNode& node) {
-  node.expect_keys({"amplitude", "period", "gamma", "phase", "t_peak", "duration", "dt"});
-  PulseParameters p;
-  node.read_quantity("amplitude", dim::kVelocity, Bound::kNonZero, p.amplitude);
-  node.read_quantity("period", dim::kTime, Bound::kPositive, p.period);
-  if (const auto gamma = node.find("gamma")) {
-    p.gamma = gamma->number();
-    if (!(p.gamma > 1.0)) gamma->fail("must be > 1 (got '" + gamma->string() + "')");
-  }
-  node.read_angle("phase", p.phase);  // "90 deg" or "1.57 rad"
-  node.read_quantity("t_peak", dim::kTime, Bound::kNonNegative, p.t_peak);
-  node.read_quantity("duration", dim::kTime, Bound::kPositive, p.duration);
-  node.read_quantity("dt", dim::kTime, Bound::kPositive, p.dt);
-  const auto dt = node.find("dt");
-  const InputNode& where = dt ? *dt : node;
-  if (p.dt > p.duration) where.fail("the step dt is longer than the duration of the pulse");
-  if (p.duration / p.dt > kMaxPulseSamples)
-    where.fail("duration / dt gives more than 1e6 samples: increase dt or shorten the duration");
-  return p;
-}
-
-GroundMotionConfig read_ground_motion(const InputNode& node, const std::string& base_dir) {
-  using Format = RecordReadOptions::Format;
-  for (std::string_view key : kPairKeys)  // a record pair (3D): model_input3d.cpp
-    if (node.has(key))
-      return read_ground_motion_pair(
-          node, [&](const InputNode& c) { return read_ground_motion(c, base_dir); });
-  node.expect_keys(
-      {"record", "format", "column", "time_column", "dt", "unit", "scale", "extra_time", "pulse"});
-  GroundMotionConfig g;
-  node.read_quantity("extra_time", dim::kTime, Bound::kNonNegative, g.extra_time);
-  const auto record = node.find("record");
-  if (!record) {
-    for (const char* key : {"format", "column", "time_column", "dt", "unit", "scale"})
-      if (written(node.yaml(), key))
-        node.find(key)->fail(
-            "applies to a record file, but no 'record' is given (the built-in pulse is used)");
-    if (const auto pulse = node.find("pulse"))
-      g.pulse = read_pulse(*pulse);
-    else
-      node.note_default("pulse", "the built-in near-fault pulse (amplitude 1 m/s, period 2 s)");
-    return g;
-  }
-  if (const auto pulse = node.find("pulse"))
-    pulse->fail("give either 'record' or 'pulse', not both");
-  const std::string path = record->string();
-  if (path.empty()) record->fail("must not be empty");
-  fs::path resolved(path);
-  if (resolved.is_relative() && !base_dir.empty()) resolved = fs::path(base_dir) / resolved;
-  g.record_path = resolved.lexically_normal().string();
-  g.use_pulse = false;
-
-  RecordReadOptions& read = g.read;
-  const auto format = node.find("format");
-  if (format)
-    read.format = format->choice<Format>(
-        {{"auto", Format::kAuto}, {"peer", Format::kPeer}, {"columns", Format::kColumns}});
-  // What `auto` will find decides which keys apply (a missing file is reported when it is read).
-  Format effective = read.format;
-  if (effective == Format::kAuto)
-    effective = sniff_record_format(g.record_path).value_or(Format::kAuto);
-  node.read_number("scale", Bound::kNonZero, read.scale);
-  if (effective == Format::kPeer) {
-    for (const char* key : {"column", "time_column", "dt", "unit"})
-      if (written(node.yaml(), key))
-        node.find(key)->fail(
-            "not used: a PEER .AT2 record carries its own NPTS/DT and states its unit in its "
-            "header (use 'scale' to change the amplitude); a PEER record uses: record, format, "
-            "scale, extra_time");
-    return g;
-  }
-  // Unknown (the file cannot be read now; reading it later reports why): the column keys are
-  // read as given, without requiring any.
-  const bool known = effective == Format::kColumns;
-  // Read as columns only because no NPTS/DT line was found: say so when a column key is missing.
-  const std::string as_columns =
-      known && !format ? " (no NPTS/DT header line was found in '" +
-                             fs::path(g.record_path).filename().string() +
-                             "', so it is read as a plain column file, which needs it; write "
-                             "format: columns to say so, or check the PEER header)"
-                       : "";
-  for (const char* key : {"dt", "unit"})
-    if (!as_columns.empty() && !written(node.yaml(), key) &&
-        !(std::string_view(key) == "dt" && written(node.yaml(), "time_column")))
-      node.fail_at_key(key, "missing required key '" + std::string(key) + "'" + as_columns);
-  node.read_integer("column", 0, kIntMax, read.column);
-  const auto time_column = node.find("time_column");
-  if (time_column) {
-    read.time_column = time_column->integer(0, kIntMax);
-    if (read.time_column == read.column)
-      time_column->fail("is the same as 'column' (" + std::to_string(read.column) + ")");
-    if (written(node.yaml(), "dt"))
-      node.find("dt")->fail("give either 'dt' or 'time_column' (dt is then read from the times)");
-  } else if (known || written(node.yaml(), "dt")) {
-    read.dt = node.required("dt").quantity(dim::kTime, Bound::kPositive);
-  }
-  // A column file says nothing about its unit: a wrong guess scales everything by 100 or 9.81.
-  if (known || written(node.yaml(), "unit")) {
-    const InputNode unit = node.required("unit");
-    read.unit =
-        unit.choice<AccelerationUnit>({{"g", AccelerationUnit::kG},
-                                       {"m/s2", AccelerationUnit::kMetrePerSecond2},
-                                       {"m/s^2", AccelerationUnit::kMetrePerSecond2},
-                                       {"cm/s2", AccelerationUnit::kCentimetrePerSecond2},
-                                       {"cm/s^2", AccelerationUnit::kCentimetrePerSecond2}});
-  }
-  return g;
 }
 
 // `three_d`: the model has 3D structures, whose largest step follows the participating modes by

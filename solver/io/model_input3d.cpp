@@ -11,11 +11,11 @@
 #include <limits>
 
 #include "solver/io/bumper_input.h"
-#include "solver/io/friction_pendulum_input.h"
+#include "solver/io/hysteresis_input.h"
+#include "solver/io/isolator_input.h"
 #include "solver/io/model_input.h"
 #include "solver/io/struck_columns_input.h"
 #include "solver/structures/building3d.h"
-#include "solver/structures/pounding3d.h"
 #include "solver/structures/rayleigh_modes.h"
 
 namespace isopound {
@@ -80,23 +80,17 @@ const std::vector<std::string_view> kColumnPropKeys = {
 constexpr Dimension kMoment{2, 1, -2};  // N m
 
 // hysteresis: {model: bilinear | bouc_wen | elastic, yield_drift_ratio | yield_moment,
-// post_yield_ratio, and for bouc_wen n, A, beta, gamma}: column_element.h. Keys the model does
+// post_yield_ratio, the law's shape (hysteresis_input.h)}: column_element.h. Keys the model does
 // not use are refused.
 ColumnHysteresisConfig read_column_hysteresis(const InputNode& node) {
-  using M = ColumnHysteresisConfig::Model;
+  using M = HysteresisModel;
   ColumnHysteresisConfig c;
   if (!node.is_map()) node.fail("expected a map {model: bilinear | bouc_wen | elastic, ...}");
-  c.model = node.required("model").choice<M>(
-      {{"bilinear", M::kBilinear}, {"bouc_wen", M::kBoucWen}, {"elastic", M::kElastic}});
-  if (c.model == M::kElastic) {
-    node.expect_keys({"model"});
-    return c;
-  }
-  if (c.model == M::kBilinear)
-    node.expect_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio"});
-  else
-    node.expect_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio", "n", "A",
-                      "beta", "gamma"});
+  node.expect_keys(
+      with_hysteresis_keys({"model", "yield_drift_ratio", "yield_moment", "post_yield_ratio"}));
+  // No peak_oriented: it has no biaxial form.
+  c.law.model = read_hysteresis_model(node, {M::kBilinear, M::kBoucWen, M::kElastic});
+  if (!c.yields()) return c;
   const auto ratio = node.find("yield_drift_ratio");
   const auto moment = node.find("yield_moment");
   if (ratio && moment)
@@ -107,17 +101,8 @@ ColumnHysteresisConfig read_column_hysteresis(const InputNode& node) {
                      "yield_moment (V_y = 2 M_y / h)");
   if (ratio) c.yield_drift_ratio = ratio->number(Bound::kPositive);
   if (moment) c.yield_moment = moment->quantity(kMoment, Bound::kPositive);
-  const InputNode alpha = node.required("post_yield_ratio");
-  c.post_yield_ratio = alpha.number(Bound::kNonNegative);
-  if (!(c.post_yield_ratio < 1.0)) alpha.fail("must be in [0, 1): post-yield / elastic stiffness");
-  if (c.model == M::kBoucWen) {
-    node.read_number("n", Bound::kPositive, c.n);
-    if (c.n < 1.0) node.fail_at_key("n", "must be >= 1");
-    node.read_number("A", Bound::kPositive, c.A);
-    node.read_number("beta", Bound::kAny, c.beta);
-    node.read_number("gamma", Bound::kAny, c.gamma);
-    if (!(c.beta + c.gamma > 0)) node.fail_at_key("beta", "beta + gamma must be > 0");
-  }
+  c.post_yield_ratio = read_post_yield_ratio(node);
+  read_hysteresis_shape(node, c.law);
   return c;
 }
 
@@ -213,9 +198,7 @@ void read_diaphragm_extras(const InputNode& node, Diaphragm3DConfig& d) {
 
 BearingConfig read_bearing_law(const InputNode& node) {
   using M = BearingConfig::Model;
-  node.expect_keys({"model", "Tb", "QW", "uy", "n", "A", "beta", "gamma", "strength_is_yield_force",
-                    "carried_mass", "R", "mu_slow", "mu_fast", "rate_parameter",
-                    "friction_hysteresis"});
+  node.expect_keys(isolator_keys());
   BearingConfig c;
   node.read_choice<M>("model",
                       {{"bouc_wen", M::kBoucWenCoupled},
@@ -226,27 +209,8 @@ BearingConfig read_bearing_law(const InputNode& node) {
                       c.model);
   // Only the keys of the chosen law are read; any other is refused as unused (the key rule).
   node.read_quantity("carried_mass", dim::kMass, Bound::kPositive, c.carried_mass);
-  if (c.model == M::kFrictionPendulum) {  // the keys of the 2D friction pendulum
-    read_friction_pendulum(node, c);
-    return c;
-  }
-  node.read_quantity("Tb", dim::kTime, Bound::kPositive, c.period);
-  if (c.model == M::kLinear) return c;  // K_post only: no strength, no yield
-  if (const auto qw = node.find("QW")) {
-    c.strength_ratio = qw->number(Bound::kNonNegative);
-    if (c.strength_ratio == 0.0)
-      qw->fail("must be > 0 for a yielding bearing (a bearing without strength is model: linear)");
-  } else {
-    node.note_default("QW", "0.05");
-  }
-  node.read_quantity("uy", dim::kLength, Bound::kPositive, c.yield_displacement);
-  node.read_boolean("strength_is_yield_force", c.strength_is_yield_force);
-  if (c.model == M::kBilinear) return c;
-  node.read_number("n", Bound::kPositive, c.n);
-  node.read_number("A", Bound::kPositive, c.A);
-  node.read_number("beta", Bound::kAny, c.beta);
-  node.read_number("gamma", Bound::kAny, c.gamma);
-  if (!(c.beta + c.gamma > 0)) node.fail_at_key("gamma", "beta + gamma must be > 0");
+  read_isolator_keys(node, c.model == M::kFrictionPendulum, bearing_hysteresis_law(c).model, c,
+                     [] {});
   return c;
 }
 
@@ -605,88 +569,6 @@ void place_adjacent(const InputNode& adj, const InputNode& item,
 
 }  // namespace
 
-ModelConfig::Contact3D read_contact3d(const InputNode& node) {
-  node.expect_keys({"k_normal",
-                    "k_tangential",
-                    "materials",
-                    "mu_static",
-                    "mu_kinetic",
-                    "restitution",
-                    "friction",
-                    "keep_tension",
-                    "indentation",
-                    "overlap",
-                    "impact_count",
-                    "elevation_tolerance",
-                    "search_distance",
-                    "law",
-                    "k",
-                    "k_h",
-                    "n",
-                    "e",
-                    "material",
-                    "xi_formula",
-                    "min_impact_velocity"});
-  ModelConfig::Contact3D c;
-  PolygonContactConfig& law = c.law;
-  if (node.has("law")) {
-    c.use_impact_law = true;
-    read_impact_law(node, c.impact_law);
-    if (node.has("k_normal") || node.has("restitution"))
-      node.fail_at_key(node.has("k_normal") ? "k_normal" : "restitution",
-                       "not used with law: (the 2D law's own k and e act along the normal)");
-  }
-  if (const auto m = node.find("materials")) {
-    m->expect_keys({"E", "nu"});
-    if (node.has("k_normal") || node.has("k_tangential"))
-      m->fail("give either materials or k_normal/k_tangential, not both");
-    const double e = m->required("E").quantity(dim::kPressure, Bound::kPositive);
-    const InputNode nu_node = m->required("nu");
-    const double nu = nu_node.number(Bound::kNonNegative);
-    if (nu >= 0.5) nu_node.fail("Poisson's ratio must be in [0, 0.5)");
-    const ContactStiffness k = contact_stiffness_from_materials(e, nu, e, nu);
-    law.k_normal = k.k_normal;
-    law.k_tangential = k.k_tangential;
-  } else {
-    if (!c.use_impact_law)
-      node.read_quantity("k_normal", dim::kPressure, Bound::kPositive, law.k_normal);
-    node.read_boolean("friction", law.friction);
-    if (law.friction)
-      node.read_quantity("k_tangential", dim::kStiffness, Bound::kPositive, law.k_tangential);
-  }
-  if (node.has("materials")) node.read_boolean("friction", law.friction);
-  if (law.friction) {
-    node.read_number("mu_static", Bound::kNonNegative, law.mu_static);
-    node.read_number("mu_kinetic", Bound::kNonNegative, law.mu_kinetic);
-    if (law.mu_kinetic > law.mu_static) node.fail_at_key("mu_kinetic", "must not exceed mu_static");
-  } else {
-    for (const char* key : {"mu_static", "mu_kinetic", "k_tangential"})
-      if (const auto n = node.find(key)) n->fail("not used with friction: false");
-  }
-  if (!c.use_impact_law) {
-    if (const auto e = node.find("restitution")) {
-      law.restitution = e->number(Bound::kPositive);
-      if (law.restitution > 1.0) e->fail("the coefficient of restitution must be in (0, 1]");
-    } else {
-      node.note_default("restitution", "0.65");
-    }
-    node.read_boolean("keep_tension", law.keep_tension);
-    node.read_choice<IndentationRule>(
-        "indentation",
-        {{"thesis", IndentationRule::kThesis}, {"mean_depth", IndentationRule::kMeanDepth}},
-        law.indentation);
-  }
-  node.read_choice<OverlapMethod>(
-      "overlap", {{"fast", OverlapMethod::kFast}, {"exact", OverlapMethod::kExact}}, law.overlap);
-  node.read_choice<ImpactCount>(
-      "impact_count",
-      {{"force_pulses", ImpactCount::kForcePulses}, {"onsets", ImpactCount::kOnsets}},
-      law.impact_count);
-  node.read_quantity("elevation_tolerance", dim::kLength, Bound::kPositive, c.elevation_tolerance);
-  node.read_quantity("search_distance", dim::kLength, Bound::kPositive, c.search_distance);
-  return c;
-}
-
 std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
   if (!node.is_sequence() || node.elements().empty())
     node.fail("expected a list of buildings: - {name, grid, storeys, ...}");
@@ -711,38 +593,6 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
       out.back().bumper = read_slab_bumper3d(*bumper, out.back(), read_side);
   }
   return out;
-}
-
-GroundMotionConfig read_ground_motion_pair(
-    const InputNode& node,
-    const std::function<GroundMotionConfig(const InputNode&)>& read_component) {
-  const auto l = node.find("L");
-  const auto t = node.find("T");
-  if (!l || !t) {
-    const std::string what =
-        "a record pair needs both components L and T (an angle with one component has no meaning)";
-    if (const auto angle = node.find("angle")) angle->fail(what);
-    node.fail(what);
-  }
-  node.expect_keys({"L", "T", "angle", "extra_time"});
-  GroundMotionConfig g;
-  node.read_quantity("extra_time", dim::kTime, Bound::kNonNegative, g.extra_time);
-  node.read_angle("angle", g.angle);
-  for (const InputNode& c : {*l, *t}) {
-    if (c.has("extra_time"))
-      c.find("extra_time")->fail("give extra_time once, at ground_motion, for the pair");
-    g.components.push_back(read_component(c));
-  }
-  // Components of different units: an error (a pair is one measurement; a unit mismatch is
-  // almost always a mistake). PEER files are in g.
-  const auto unit_of = [](const GroundMotionConfig& c) {
-    return c.use_pulse ? AccelerationUnit::kMetrePerSecond2 : c.read.unit;
-  };
-  if (!g.components[0].use_pulse && !g.components[1].use_pulse &&
-      unit_of(g.components[0]) != unit_of(g.components[1]))
-    t->fail_at_key("unit", "the T component's unit differs from L's: give both in the same unit");
-  g.use_pulse = false;
-  return g;
 }
 
 }  // namespace isopound

@@ -18,13 +18,18 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr Dimension kLinearMass{-1, 1, 0};  // kg/m
 constexpr Dimension kMoment{2, 1, -2};      // N m
 constexpr Dimension kArea{2, 0, 0};         // m^2
+constexpr Dimension kAreaMoment{4, 0, 0};   // m^4
 
 // clang-format off
-constexpr std::array<PlausibleRange, 54> kRanges{{
+constexpr std::array<PlausibleRange, 71> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
   {"gap_right",    dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
+  {"gap.east",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap (3D, per side)"},
+  {"gap.west",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap (3D, per side)"},
+  {"gap.north",    dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap (3D, per side)"},
+  {"gap.south",    dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap (3D, per side)"},
   {"R",            dim::kLength, 0, 100, 0.5, 10, "m", 1, "a friction pendulum radius"},
   {"uy",           dim::kLength, 0, 1, 1e-4, 0.1, "mm", 1e-3, "a bearing yield displacement"},
   {"thickness",    dim::kLength, 0, 20, 0.05, 3, "m", 1, "a wall thickness"},
@@ -53,9 +58,10 @@ constexpr std::array<PlausibleRange, 54> kRanges{{
   {"post_yield_ratio", dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a post-yield stiffness ratio"},
   {"post_capping_ratio", dim::kNone, 0, 1, 0.005, 0.5, "%", 1e-2, "a post-capping slope ratio"},
   {"residual_strength_ratio", dim::kNone, 0, 1, 0, 0.6, "%", 1e-2, "a residual strength ratio"},
-  {"yield_shear",  dim::kForce, 0, 1e11, 1e3, 1e9, "kN", 1e3, "a storey yield shear"},
-  {"yield_moment", kMoment, 0, 1e10, 1e3, 1e8, "kN m", 1e3, "a column yield moment"},
+  {"yield_shear",  dim::kForce, 0, 1e11, 1e4, 1e9, "kN", 1e3, "a storey yield shear"},
+  {"yield_moment", kMoment, 0, 1e10, 1e4, 1e8, "kN m", 1e3, "a column yield moment"},
   {"yield_shear_coefficient", dim::kNone, 0, 5, 0.02, 1, "%", 1e-2, "a storey yield shear / weight above"},
+  {"elastic_limit_drift_ratio", dim::kNone, 0, 0.2, 0.002, 0.05, "%", 1e-2, "the drift ratio beyond which an elastic storey is flagged"},
   {"ratio",        dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
   {"ratios",       dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
   {"isolation",    dim::kNone, 0, 1, 0, 0.5, "%", 1e-2, "an isolation damping ratio"},
@@ -68,27 +74,42 @@ constexpr std::array<PlausibleRange, 54> kRanges{{
   {"pga",          dim::kAcceleration, 0, 10 * kGravity, 0.005 * kGravity, 3 * kGravity, "g", kGravity, "a record's peak ground acceleration"},
   // "section.key" rows apply under that section only, before the key's own row (rubber is not
   // concrete: a 2 cm layer, a 10 MPa modulus).
-  {"bumper.thickness", dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a rubber bumper's thickness (0: none)"},
+  {"bumper.thickness", dim::kLength, 0, 2, 0, 0.3, "cm", 1e-2, "a rubber bumper's thickness (0: none)"},
   {"bumper.E",     dim::kPressure, 0, 1e11, 1e5, 1e9, "MPa", 1e6, "a rubber bumper's modulus"},
   {"bumper.k",     dim::kHertzStiffness, 0, 1e16, 1e5, 1e14, "kN/m^1.5", 1e3, "a Hertz-type bumper stiffness"},
+  {"bumper.k",     dim::kStiffness, 0, 1e13, 1e4, 1e11, "kN/m", 1e3, "a linear bumper stiffness"},
   {"bumper.area",  kArea, 0, 1e4, 1e-4, 100, "m2", 1, "a bumper's contact area"},
   {"bumper.height", dim::kLength, 0, 20, 0.02, 2, "m", 1, "a 3D bumper's height against the slab edge"},
   {"max_strain",   dim::kNone, 0, 1, 0.2, 0.9, "%", 1e-2, "a bumper's compression limit"},
   // A 2D building's struck column line (columns:, docs/floor-to-column.md).
-  {"M_y",          kMoment, 0, 1e10, 1e3, 1e8, "kN m", 1e3, "a column hinge yield moment"},
-  {"V_n",          dim::kForce, 0, 1e11, 1e3, 1e9, "kN", 1e3, "a column shear capacity"},
+  {"M_y",          kMoment, 0, 1e10, 1e4, 1e8, "kN m", 1e3, "a column hinge yield moment"},
+  {"V_n",          dim::kForce, 0, 1e11, 1e4, 1e9, "kN", 1e3, "a column shear capacity"},
   {"hardening_ratio", dim::kNone, 0, 1, 0.001, 0.3, "%", 1e-2, "a hinge hardening ratio"},
   {"ground_level", dim::kLength, -1000, 1000, -20, 20, "m", 1, "a neighbour's ground above the building's"},
+  // Column sections (3D columns, 2D struck columns): b x h and its moments, easily in cm and cm^4.
+  {"section",      dim::kLength, 0, 10, 0.1, 3, "cm", 1e-2, "a column's section side"},
+  {"I",            kAreaMoment, 0, 100, 1e-5, 10, "m^4", 1, "a column's second moment of area"},
+  {"I11",          kAreaMoment, 0, 100, 1e-5, 10, "m^4", 1, "a column's second moment of area"},
+  {"I22",          kAreaMoment, 0, 100, 1e-5, 10, "m^4", 1, "a column's second moment of area"},
+  {"J",            kAreaMoment, 0, 100, 1e-5, 10, "m^4", 1, "a column's torsion constant"},
+  // A 3D building's plan and grid.
+  {"bays_x",       dim::kLength, 0, 200, 1, 30, "m", 1, "a bay width of the column grid"},
+  {"bays_y",       dim::kLength, 0, 200, 1, 30, "m", 1, "a bay width of the column grid"},
+  {"rectangle",    dim::kLength, 0, 2000, 2, 300, "m", 1, "a plan's side"},
+  // Contact detection (3D) and the built-in pulse.
+  {"elevation_tolerance", dim::kLength, 0, 10, 1e-4, 1, "cm", 1e-2, "the elevation difference within which floors meet"},
+  {"search_distance", dim::kLength, 0, 1000, 0.01, 50, "m", 1, "the rest separation within which contacts are sought"},
+  {"amplitude",    dim::kVelocity, -1e6, 1e6, -3, 3, "m/s", 1, "a pulse's velocity amplitude"},
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 40> kUnchecked{{
+constexpr std::array<UncheckedKey, 30> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
     {"steps_per_contact", "a solver setting, bounded by the reader"},
     {"participation_threshold", "a solver setting (a mass ratio), bounded by the reader"},
-    {"n", "Bouc-Wen shape exponent (dimensionless, no other unit to mean)"},
+    {"n", "Bouc-Wen or Hertz exponent (dimensionless, no other unit to mean)"},
     {"A", "Bouc-Wen shape parameter (dimensionless)"},
     {"beta", "Bouc-Wen shape parameter (dimensionless)"},
     {"gamma", "Bouc-Wen or pulse shape parameter (dimensionless)"},
@@ -98,22 +119,12 @@ constexpr std::array<UncheckedKey, 40> kUnchecked{{
     {"e", "coefficient of restitution, bounded (0, 1] by the reader"},
     {"damping", "a damping ratio of a wall, bounded [0, 1) by the reader"},
     {"polar_moment", "kg m^2: depends on the plan; computed when absent"},
-    {"amplitude", "pulse velocity amplitude; the record's peak is checked instead (pga)"},
     {"period", "pulse period: shape of the built-in pulse"},
     {"t_peak", "pulse time of the peak: shape of the built-in pulse"},
     {"duration", "pulse duration: shape of the built-in pulse"},
     {"min_impact_velocity", "a contact-detection setting"},
-    {"elevation_tolerance", "a contact-detection setting (m)"},
-    {"search_distance", "a contact-detection setting (m)"},
-    {"section", "column b x h: checked against the plan by the site checks"},
-    {"I11", "second moment of area (m^4): depends on the section"},
-    {"I22", "second moment of area (m^4): depends on the section"},
-    {"J", "torsion constant (m^4): depends on the section"},
-    {"I", "second moment of area (m^4) of a 2D struck column: depends on the section"},
-    {"bays_x", "grid spacing (m): the site's own geometry"},
-    {"bays_y", "grid spacing (m): the site's own geometry"},
     {"position", "plan coordinates (m): the site's own geometry, checked by the site checks"},
-    {"rectangle", "plan size (m): the site's own geometry, checked by the site checks"},
+    {"origin", "plan coordinates of grid line A1 (m): the site's own geometry"},
     {"from",
      "where a 3D bumper starts along its wall's or slab's face (m), checked against the face"},
     {"to", "where a 3D bumper ends along its wall's or slab's face (m), checked against the face"},
@@ -133,7 +144,7 @@ struct Alternative {
   std::string_view unit;
   double si;
 };
-constexpr std::array<Alternative, 13> kAlternatives{{
+constexpr std::array<Alternative, 21> kAlternatives{{
     {dim::kLength, "cm", 1e-2},
     {dim::kLength, "mm", 1e-3},
     {dim::kMass, "t", 1e3},
@@ -147,6 +158,14 @@ constexpr std::array<Alternative, 13> kAlternatives{{
     {kLinearMass, "t/m", 1e3},
     {dim::kHertzStiffness, "kN/m^1.5", 1e3},
     {dim::kHertzStiffness, "MN/m^1.5", 1e6},
+    {dim::kForce, "kN", 1e3},
+    {dim::kForce, "MN", 1e6},
+    {kMoment, "kN m", 1e3},
+    {kMoment, "MN m", 1e6},
+    {kAreaMoment, "cm^4", 1e-8},
+    {kAreaMoment, "mm^4", 1e-12},
+    {dim::kVelocity, "cm/s", 1e-2},
+    {kArea, "cm^2", 1e-4},
 }};
 
 std::string number(double x) {

@@ -640,8 +640,7 @@ void check_site2d(const ModelConfig& config, const std::vector<InputNode>& neigh
                                 "): it would pound that building's columns; describe them with "
                                 "columns: {count, E, I, M_y} (docs/floor-to-column.md)");
         } else if (part.kind == Kind::kStorey) {
-          if (o.floors[static_cast<std::size_t>(part.floor) - 1].hysteresis.model !=
-              StoryHysteresisConfig::Model::kElastic)
+          if (o.floors[static_cast<std::size_t>(part.floor) - 1].hysteresis.yields())
             problems.error_at(at, "",
                               what + "strikes yielding storey " + std::to_string(part.floor) +
                                   " of '" + o.name +

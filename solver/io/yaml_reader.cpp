@@ -93,6 +93,10 @@ std::set<std::string>& registry() {
   static std::set<std::string> keys;
   return keys;
 }
+std::set<std::string>& accepted_registry() {
+  static std::set<std::string> keys;
+  return keys;
+}
 std::vector<std::pair<std::string, Dimension>>& quantity_registry() {
   static std::vector<std::pair<std::string, Dimension>> keys;
   return keys;
@@ -155,6 +159,11 @@ std::vector<std::string> known_model_keys() {
 std::vector<std::pair<std::string, Dimension>> known_quantity_keys() {
   const std::lock_guard<std::mutex> lock(registry_mutex());
   return quantity_registry();
+}
+
+std::vector<std::string> known_accepted_keys() {
+  const std::lock_guard<std::mutex> lock(registry_mutex());
+  return {accepted_registry().begin(), accepted_registry().end()};
 }
 
 InputError::InputError(std::string file, int line, int column, std::string key, std::string what)
@@ -321,6 +330,10 @@ void InputNode::expect_keys(std::initializer_list<std::string_view> allowed) con
 }
 
 void InputNode::expect_keys(const std::vector<std::string_view>& names) const {
+  if (ledger_) {
+    const std::lock_guard<std::mutex> lock(registry_mutex());
+    for (const auto& name : names) accepted_registry().insert(generic_path(child_path(name)));
+  }
   if (!node_.IsDefined() || node_.IsNull()) {
     if (path_.empty()) fail("the document is empty; expected a map with keys: " + join(names));
     return;
@@ -375,6 +388,14 @@ std::optional<InputNode> InputNode::find(std::string_view key) const {
 
 bool InputNode::has(std::string_view key) const {
   return find(key).has_value();
+}
+
+bool InputNode::written(std::string_view key) const {
+  if (!node_.IsDefined() || !node_.IsMap()) return false;
+  for (const auto& entry : node_)
+    if (entry.first.IsScalar() && entry.first.Scalar() == key)
+      return entry.second.IsDefined() && !entry.second.IsNull();
+  return false;
 }
 
 InputNode InputNode::required(std::string_view key) const {
@@ -535,6 +556,16 @@ void InputNode::read_string(std::string_view key, std::string& out) const {
     out = child->string();
   else
     note_default(key, out);
+}
+
+std::size_t InputNode::choice_index(std::span<const std::string_view> names) const {
+  const std::string text = string();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == text) {
+      note_choice(text);
+      return i;
+    }
+  fail_unknown_choice(text, {names.begin(), names.end()});
 }
 
 void InputNode::fail_unknown_choice(const std::string& text,

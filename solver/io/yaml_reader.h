@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -68,6 +69,9 @@ std::vector<std::string> known_model_keys();
 // Every key path a tracked read has read as a quantity or number, with the dimension read
 // (angles as dimensionless): the numeric part of the schema, for the plausibility tests.
 std::vector<std::pair<std::string, Dimension>> known_quantity_keys();
+// Every key path a tracked read has accepted (expect_keys), written or not, list indices
+// dropped: what the readers accept, for the plausibility tests.
+std::vector<std::string> known_accepted_keys();
 
 // A node of an input file together with its key path ("building.floors[1].mass") and the
 // nearest known position. Nodes built in code have no mark: errors then point at the nearest
@@ -94,6 +98,9 @@ class InputNode {
   void expect_keys(std::initializer_list<std::string_view> allowed) const;
   void expect_keys(const std::vector<std::string_view>& allowed) const;
   bool has(std::string_view key) const;
+  // Whether this map holds `key` with a non-null value, without counting it as used (a rule that
+  // asks whether a key was given before it decides to read it).
+  bool written(std::string_view key) const;
   std::optional<InputNode> find(std::string_view key) const;
   // Throws "missing required key" at this node's position when absent.
   InputNode required(std::string_view key) const;
@@ -127,6 +134,8 @@ class InputNode {
     }
     fail_unknown_choice(text, names);
   }
+  // One of the names of a table (hysteresis_model_names()): its index in `names`.
+  std::size_t choice_index(std::span<const std::string_view> names) const;
 
   // --- optional keys of this map: each sets `out` only when `key` is present; when it is
   // absent, a tracked read records `out` as the default used (note_default) ---

@@ -17,17 +17,10 @@ const FrictionPendulumParameters& validated(const FrictionPendulumParameters& p)
   return p;
 }
 
+// K_el = F_y / u_y with F_y = 1, alpha = 0: the force is z.
 BoucWenParameters unit_bouc_wen(const FrictionPendulumParameters& p) {
-  BoucWenParameters bw;
-  bw.yield_displacement = p.yield_displacement;
-  bw.elastic_stiffness = 1.0 / p.yield_displacement;  // F_y / u_y with F_y = 1: force = z
-  bw.yield_force = 1.0;
-  bw.alpha = 0.0;
-  bw.n = p.n;
-  bw.A = p.A;
-  bw.beta = p.beta;
-  bw.gamma = p.gamma;
-  return bw;
+  return bouc_wen_parameters(p.shape,
+                             {1.0 / p.yield_displacement, 1.0, p.yield_displacement, 0.0, 0.0});
 }
 }  // namespace
 
@@ -84,7 +77,8 @@ double FrictionPendulumMaterial::stored_energy() const {
   // Pendulum (gravity) energy W |d|^2/(2R) plus the elastic pre-sliding part of the friction
   // spring (stiffness mu W/u_y at the trial mu): mu W u_y |z|^2/2 (|z|^2/(2A) for Bouc-Wen).
   const double mu_w = friction_coefficient(rate_.norm()) * p_.weight;
-  const double pre_sliding = p_.smooth ? z_.squaredNorm() / (2.0 * p_.A) : 0.5 * z_.squaredNorm();
+  const double pre_sliding =
+      p_.smooth ? z_.squaredNorm() / (2.0 * p_.shape.A) : 0.5 * z_.squaredNorm();
   return 0.5 * pendulum_stiffness_ * d_.squaredNorm() + mu_w * p_.yield_displacement * pre_sliding;
 }
 

@@ -6,6 +6,7 @@
 
 #include "solver/materials/biaxial_material.h"
 #include "solver/materials/bouc_wen_coupled.h"
+#include "solver/materials/hysteresis_law.h"
 
 namespace isopound {
 
@@ -20,7 +21,7 @@ struct FrictionPendulumParameters {
   // textbook friction model); true = the coupled Bouc-Wen z (smooth, THEORY eq. 5.28) with the
   // shape below.
   bool smooth = false;
-  double n = 2.0, A = 1.0, beta = 0.5, gamma = 0.5;
+  BoucWenShape shape;
 };
 
 // Plastic z (default): z* = z_c + dd/u_y; z = z* if |z*| <= 1, else z*/|z*| (exact along a

@@ -5,10 +5,8 @@
 #include <stdexcept>
 
 #include "solver/core/constants.h"
-#include "solver/materials/biaxial_uncoupled.h"
-#include "solver/materials/bilinear_biaxial.h"
-#include "solver/materials/bouc_wen_coupled.h"
 #include "solver/materials/friction_pendulum.h"
+#include "solver/materials/hysteresis_law.h"
 #include "solver/materials/linear_biaxial.h"
 #include "solver/structures/isolator.h"
 
@@ -39,10 +37,7 @@ IsolatorConfig isolator_config(const BearingConfig& c) {
   iso.period = c.period;
   iso.strength_ratio = c.strength_ratio;
   iso.yield_displacement = c.yield_displacement;
-  iso.n = c.n;
-  iso.A = c.A;
-  iso.beta = c.beta;
-  iso.gamma = c.gamma;
+  iso.bouc_wen = c.bouc_wen;
   iso.strength_is_yield_force = c.strength_is_yield_force;
   iso.carried_mass = c.carried_mass;
   iso.radius = c.radius;
@@ -76,10 +71,7 @@ BearingConfig bearing_config(const IsolatorConfig& iso) {
   c.period = iso.period;
   c.strength_ratio = iso.strength_ratio;
   c.yield_displacement = iso.yield_displacement;
-  c.n = iso.n;
-  c.A = iso.A;
-  c.beta = iso.beta;
-  c.gamma = iso.gamma;
+  c.bouc_wen = iso.bouc_wen;
   c.strength_is_yield_force = iso.strength_is_yield_force;
   c.carried_mass = iso.carried_mass;
   c.radius = iso.radius;
@@ -88,6 +80,10 @@ BearingConfig bearing_config(const IsolatorConfig& iso) {
   c.rate_parameter = iso.rate_parameter;
   c.smooth_friction = iso.smooth_friction;
   return c;
+}
+
+HysteresisLawConfig bearing_hysteresis_law(const BearingConfig& c) {
+  return isolator_hysteresis_law(isolator_config(c));
 }
 
 IsolatorProperties bearing_properties(const BearingConfig& c, double m) {
@@ -105,24 +101,19 @@ std::unique_ptr<BiaxialMaterial> make_bearing_material(const BearingConfig& c, d
     fp.rate_parameter = c.rate_parameter;
     fp.yield_displacement = c.yield_displacement;
     fp.smooth = c.smooth_friction;
-    fp.n = c.n;
-    fp.A = c.A;
-    fp.beta = c.beta;
-    fp.gamma = c.gamma;
+    fp.shape = c.bouc_wen;
     return std::make_unique<FrictionPendulumMaterial>(fp);
   }
-  const IsolatorConfig iso = isolator_config(c);
-  const IsolatorProperties p = isolator_properties(iso, m);
+  const IsolatorProperties p = bearing_properties(c, m);
+  const HysteresisLawConfig law = bearing_hysteresis_law(c);
   switch (c.model) {
     case BearingConfig::Model::kLinear:
       return std::make_unique<LinearBiaxialMaterial>(p.post_yield_stiffness);
     case BearingConfig::Model::kBilinear:
-      return std::make_unique<BilinearBiaxialMaterial>(p.elastic_stiffness, p.alpha, p.yield_force);
     case BearingConfig::Model::kBoucWenCoupled:
-      return std::make_unique<CoupledBoucWenMaterial>(bouc_wen_parameters(iso, p));
+      return make_biaxial_hysteresis(law, isolator_yield_point(p), BiaxialInteraction::kCircular);
     case BearingConfig::Model::kBoucWenUncoupled:
-      return std::make_unique<UncoupledBiaxialMaterial>(make_isolator_material(iso, m),
-                                                        make_isolator_material(iso, m));
+      return make_biaxial_hysteresis(law, isolator_yield_point(p), BiaxialInteraction::kSquare);
     case BearingConfig::Model::kFrictionPendulum:
       break;  // handled above
   }

@@ -24,8 +24,8 @@ struct BearingConfig {
   double period = 2.0;               // T_b, s (not used by the friction pendulum)
   double strength_ratio = 0.05;      // Q/W (not used by the friction pendulum)
   double yield_displacement = 0.01;  // u_y, m (friction pendulum: the sliding onset, ~0.5 mm)
-  double n = 2.0, A = 1.0, beta = 0.5, gamma = 0.5;  // Bouc-Wen shape
-  bool strength_is_yield_force = false;              // true: (Q/W) m g is F_y itself
+  BoucWenShape bouc_wen;             // Bouc-Wen shape (also of the pendulum's smooth z)
+  bool strength_is_yield_force = false;  // true: (Q/W) m g is F_y itself
   // Mass carried by this bearing, kg; 0: the structure's total mass / number of bearings.
   double carried_mass = 0.0;
   // Friction pendulum: radius of the concave surface and mu(v) = mu_fast - (mu_fast -
@@ -35,7 +35,7 @@ struct BearingConfig {
   double mu_fast = 0.0;         // -
   double rate_parameter = 0.0;  // a, s/m
   // Friction pendulum z: false = elastic-perfectly-plastic, radial return (default, sharp);
-  // true = the coupled Bouc-Wen z with n, A, beta, gamma above (smooth corners).
+  // true = the coupled Bouc-Wen z of the shape above (smooth corners).
   bool smooth_friction = false;
 };
 
@@ -46,6 +46,10 @@ IsolatorProperties bearing_properties(const BearingConfig& config, double carrie
 // The same bearing law as a 2D isolator: the BearingConfig of an IsolatorConfig (uniaxial
 // models map to their biaxial counterparts; bouc_wen to the coupled law).
 BearingConfig bearing_config(const IsolatorConfig& isolator);
+
+// The bearing's law in the hysteresis table (bouc_wen for both Bouc-Wen models; elastic for the
+// linear model and the friction pendulum).
+HysteresisLawConfig bearing_hysteresis_law(const BearingConfig& config);
 
 // The bearing law for a bearing carrying `carried_mass` (kg, > 0). Throws std::invalid_argument
 // with a message naming the offending parameter if the numbers give no valid law.

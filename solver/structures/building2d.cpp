@@ -176,7 +176,7 @@ void add_building(Model& model, const BuildingConfig& b) {
     // A linear term of the story in K: its elastic spring (unless the story yields) and, with
     // P-Delta, the geometric stiffness -P/h of the weight above.
     double stiffness = 0.0;
-    if (b.floors[i].hysteresis.model == StoryHysteresisConfig::Model::kElastic) {
+    if (!b.floors[i].hysteresis.yields()) {
       stiffness = b.floors[i].stiffness;
       info.story_elements.push_back(-1);
     } else {

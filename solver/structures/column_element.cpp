@@ -1,12 +1,11 @@
 // Yielding 3D columns: the yield point per section axis and ColumnLink with a unit law
-// (K_el = F_y = u_y = 1) of the column's model.
+// (K_el = F_y = u_y = 1) of the column's model, from the hysteresis table's biaxial factory.
 #include "solver/structures/column_element.h"
 
 #include <stdexcept>
 
 #include "solver/elements/column_link.h"
-#include "solver/materials/bilinear_biaxial.h"
-#include "solver/materials/bouc_wen_coupled.h"
+#include "solver/materials/hysteresis_law.h"
 
 namespace isopound {
 
@@ -42,28 +41,13 @@ std::unique_ptr<Element> make_column_element(const std::string& label, const Col
   const ColumnHysteresisConfig& y = c.hysteresis;
   if (!(y.yield_drift_ratio > 0) && !(y.yield_moment > 0))
     throw std::invalid_argument("column " + c.label + ": needs yield_drift_ratio or yield_moment");
+  if (!y.yields())
+    throw std::invalid_argument("column " + c.label + ": an elastic column has no element");
   const double alpha = y.post_yield_ratio;
-  std::unique_ptr<BiaxialMaterial> law;
-  switch (y.model) {
-    case ColumnHysteresisConfig::Model::kBilinear:
-      law = std::make_unique<BilinearBiaxialMaterial>(1.0, alpha, 1.0);
-      break;
-    case ColumnHysteresisConfig::Model::kBoucWen: {
-      BoucWenParameters p;
-      p.elastic_stiffness = 1.0;
-      p.alpha = alpha;
-      p.yield_force = 1.0;
-      p.yield_displacement = 1.0;
-      p.A = y.A;
-      p.beta = y.beta;
-      p.gamma = y.gamma;
-      p.n = y.n;
-      law = std::make_unique<CoupledBoucWenMaterial>(p);
-      break;
-    }
-    case ColumnHysteresisConfig::Model::kElastic:
-      throw std::invalid_argument("column " + c.label + ": an elastic column has no element");
-  }
+  // The unit law (K_el = F_y = u_y = 1, deformation d / d_y: no length): ColumnLink scales each
+  // axis by its yield point.
+  std::unique_ptr<BiaxialMaterial> law =
+      make_biaxial_hysteresis(y.law, {1.0, 1.0, 1.0, alpha, 0.0});
   const ColumnYield yield = column_yield(c, height);
   ColumnLinkGeometry g;
   g.p_O = Eigen::Vector2d(c.position.x, c.position.y);

@@ -10,6 +10,7 @@
 #include "solver/elements/polygon_contact.h"
 #include "solver/excitation/ground_motion.h"
 #include "solver/materials/bumper_law.h"
+#include "solver/materials/hysteresis_law.h"
 #include "solver/materials/impact_law.h"
 
 namespace isopound {
@@ -23,11 +24,8 @@ struct IsolatorConfig {
   double period = 2.0;               // T_b, s: K_post = m (2 pi / T_b)^2
   double strength_ratio = 0.05;      // Q/W: Q = (Q/W) m g
   double yield_displacement = 0.01;  // u_y, m
-  // Bouc-Wen shape (THEORY eq. 2.1-2.2).
-  double n = 2.0;
-  double A = 1.0;
-  double beta = 0.5;
-  double gamma = 0.5;
+  // Bouc-Wen shape (THEORY eq. 2.1-2.2; hysteresis_law.h), also of the pendulum's smooth z.
+  BoucWenShape bouc_wen;
   // false: Q is the characteristic strength, F_y = Q + K_post u_y (default, THEORY section 2);
   // true: the given strength (Q/W) m g is the yield force F_y itself.
   bool strength_is_yield_force = false;
@@ -39,30 +37,22 @@ struct IsolatorConfig {
   double mu_slow = 0.0;
   double mu_fast = 0.0;
   double rate_parameter = 0.0;   // a, s/m
-  bool smooth_friction = false;  // z: false = radial return (sharp), true = Bouc-Wen (n, beta...)
+  bool smooth_friction = false;  // z: false = radial return (sharp), true = Bouc-Wen (bouc_wen)
 };
 
 // The restoring-force law of a storey (`hysteresis:` of a floor): elastic (the linear spring
-// in K, as the thesis) or a hysteretic law of the drift (solver/structures/story_hysteresis.h).
-// k is always the storey's elastic stiffness; Rayleigh damping stays from the elastic K.
+// in K, as the thesis) or a law of the hysteresis table (solver/materials/hysteresis_law.h) of the
+// drift, at the storey's own yield point (solver/structures/story_hysteresis.h). k is always the
+// storey's elastic stiffness; Rayleigh damping stays from the elastic K.
 struct StoryHysteresisConfig {
-  enum class Model { kElastic, kBilinear, kBoucWen, kPeakOriented };
-  Model model = Model::kElastic;
+  HysteresisLawConfig law;  // model kElastic: the linear spring
   // The yield point, one of: d_y = ratio x storey height; V_y (N), d_y = V_y / k; or V_y as a
   // fraction of the weight above the storey (g x the masses above), d_y = V_y / k.
   enum class YieldBy { kDriftRatio, kShear, kShearCoefficient };
   YieldBy yield_by = YieldBy::kDriftRatio;
   double yield_value = 0.0;
   double post_yield_ratio = 0.0;  // alpha: hardening stiffness / k, in [0, 1)
-  // bouc_wen: shape (the isolators' law, THEORY eq. 2.1-2.2).
-  double n = 2.0, A = 1.0, beta = 0.5, gamma = 0.5;
-  // peak_oriented (solver/materials/peak_oriented.h): capping drift = ratio x height (> d_y),
-  // post-capping slope -post_capping_ratio k, residual strength residual_strength_ratio F_y,
-  // cyclic deterioration lambda (E_t = lambda F_y d_y; 0 = none).
-  double capping_drift_ratio = 0.0;
-  double post_capping_ratio = 0.0;
-  double residual_strength_ratio = 0.0;
-  double deterioration = 0.0;
+  bool yields() const { return law.model != HysteresisModel::kElastic; }
 };
 
 struct FloorConfig {

@@ -27,19 +27,16 @@ struct Diaphragm3DConfig {
 // (k_1 = 12 E I22 / h^3, k_2 = 12 E I11 / h^3), so the interaction is circular in
 // (V_1 / V_y,1, V_2 / V_y,2). Torsion (G J / h) stays elastic.
 struct ColumnHysteresisConfig {
-  enum class Model {
-    kElastic,   // no law: the column stays in the stiffness matrix (today's model)
-    kBilinear,  // biaxial bilinear, kinematic hardening, circular yield surface
-    kBoucWen,   // coupled Bouc-Wen (the bearings' law, THEORY eq. 5.27-5.29)
-  };
-  Model model = Model::kElastic;
+  // kElastic: no law, the column stays in the stiffness matrix (today's model); kBilinear:
+  // biaxial bilinear, circular yield surface; kBoucWen: the bearings' coupled law (THEORY eq.
+  // 5.27-5.29). No peak_oriented: it has no biaxial form.
+  HysteresisLawConfig law;
   // Exactly one of the two is > 0: d_y = yield_drift_ratio h in both axes, or
   // V_y = 2 M_y / h (double curvature) in both axes and d_y,i = V_y / k_i.
   double yield_drift_ratio = 0.0;
-  double yield_moment = 0.0;                         // N m
-  double post_yield_ratio = 0.0;                     // alpha in [0, 1)
-  double n = 2.0, A = 1.0, beta = 0.5, gamma = 0.5;  // Bouc-Wen only
-  bool yields() const { return model != Model::kElastic; }
+  double yield_moment = 0.0;      // N m
+  double post_yield_ratio = 0.0;  // alpha in [0, 1)
+  bool yields() const { return law.model != HysteresisModel::kElastic; }
 };
 
 // A column of one storey (THEORY eq. 5.1-5.2): principal axis 1 at `orientation` from x.

@@ -1,5 +1,6 @@
 // Isolator laws from the engineer's parameters: derive K_post, F_y, K_el, alpha and build the
-// chosen uniaxial law (THEORY section 2, eq. 2.4; F_y convention is an option).
+// chosen uniaxial law through the hysteresis table (THEORY section 2, eq. 2.4; F_y convention is
+// an option).
 #include "solver/structures/isolator.h"
 
 #include <cmath>
@@ -7,8 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "solver/materials/bilinear.h"
-#include "solver/materials/bouc_wen.h"
 #include "solver/materials/linear_material.h"
 
 namespace isopound {
@@ -47,17 +46,16 @@ IsolatorProperties isolator_properties(const IsolatorConfig& c, double m) {
   return p;
 }
 
-BoucWenParameters bouc_wen_parameters(const IsolatorConfig& c, const IsolatorProperties& p) {
-  BoucWenParameters bw;
-  bw.elastic_stiffness = p.elastic_stiffness;
-  bw.alpha = p.alpha;
-  bw.yield_force = p.yield_force;
-  bw.yield_displacement = p.yield_displacement;
-  bw.A = c.A;
-  bw.beta = c.beta;
-  bw.gamma = c.gamma;
-  bw.n = c.n;
-  return bw;
+HysteresisLawConfig isolator_hysteresis_law(const IsolatorConfig& c) {
+  HysteresisLawConfig law;
+  if (c.model == IsolatorConfig::Model::kBilinear) law.model = HysteresisModel::kBilinear;
+  if (c.model == IsolatorConfig::Model::kBoucWen) law.model = HysteresisModel::kBoucWen;
+  law.bouc_wen = c.bouc_wen;
+  return law;
+}
+
+YieldPoint isolator_yield_point(const IsolatorProperties& p) {
+  return {p.elastic_stiffness, p.yield_force, p.yield_displacement, p.alpha, 0.0};
 }
 
 std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& c, double m) {
@@ -66,9 +64,8 @@ std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& c
     case IsolatorConfig::Model::kLinear:
       return std::make_unique<LinearMaterial>(p.post_yield_stiffness);
     case IsolatorConfig::Model::kBilinear:
-      return std::make_unique<BilinearMaterial>(p.elastic_stiffness, p.alpha, p.yield_force);
     case IsolatorConfig::Model::kBoucWen:
-      return std::make_unique<BoucWenMaterial>(bouc_wen_parameters(c, p));
+      return make_uniaxial_hysteresis(isolator_hysteresis_law(c), isolator_yield_point(p));
     case IsolatorConfig::Model::kFrictionPendulum:
       throw std::invalid_argument(
           "isolator: the friction pendulum is rate dependent, not a uniaxial law; build it with "

@@ -5,8 +5,7 @@
 #include <memory>
 
 #include "solver/core/constants.h"
-#include "solver/materials/bouc_wen.h"
-#include "solver/materials/hysteresis.h"
+#include "solver/materials/hysteresis_law.h"
 #include "solver/structures/config.h"
 
 namespace isopound {
@@ -24,12 +23,14 @@ struct IsolatorProperties {
 // Throws std::invalid_argument if the parameters give no valid law (e.g. alpha >= 1).
 IsolatorProperties isolator_properties(const IsolatorConfig& config, double carried_mass);
 
+// The isolator's law in the hysteresis table (bilinear or bouc_wen with the config's shape;
+// elastic for the linear model and the friction pendulum, which are not table laws) and its yield
+// point K_el, F_y, u_y, alpha: the one construction of the uniaxial isolator and the bearings.
+HysteresisLawConfig isolator_hysteresis_law(const IsolatorConfig& config);
+YieldPoint isolator_yield_point(const IsolatorProperties& p);
+
 // The friction pendulum has no uniaxial law (it is rate dependent): this throws for it; the 2D
 // building uses make_bearing_material and a BearingLink instead.
-// The Bouc-Wen law of these properties with the config's shape (A, beta, gamma, n): the one
-// construction shared by the uniaxial isolator and the coupled biaxial bearing.
-BoucWenParameters bouc_wen_parameters(const IsolatorConfig& config, const IsolatorProperties& p);
-
 std::unique_ptr<UniaxialMaterial> make_isolator_material(const IsolatorConfig& config,
                                                          double carried_mass);
 

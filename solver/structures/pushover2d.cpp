@@ -53,8 +53,7 @@ BuildingPushoverResult run_pushover2d(const ModelConfig& config,
   }
   std::vector<double> yield_drift(stories.size(), 0.0);
   for (std::size_t k = 0; k < stories.size(); ++k)
-    if (b.floors[k].hysteresis.model != StoryHysteresisConfig::Model::kElastic)
-      yield_drift[k] = story_yield_drift(b, static_cast<int>(k));
+    if (b.floors[k].hysteresis.yields()) yield_drift[k] = story_yield_drift(b, static_cast<int>(k));
   for (const PushoverStep& s : curve) {
     std::vector<double> row = {s.control, s.control / height, s.lambda * o.pattern.sum()};
     for (std::size_t k = 0; k < stories.size(); ++k) {

@@ -4,9 +4,6 @@
 #include <stdexcept>
 
 #include "solver/core/constants.h"
-#include "solver/materials/bilinear.h"
-#include "solver/materials/bouc_wen.h"
-#include "solver/materials/peak_oriented.h"
 
 namespace isopound {
 
@@ -34,57 +31,18 @@ double story_yield_drift(const BuildingConfig& b, int story) {
   return 0.0;
 }
 
-std::unique_ptr<UniaxialMaterial> make_story_material(const BuildingConfig& b, int story) {
+YieldPoint story_yield_point(const BuildingConfig& b, int story) {
   const FloorConfig& f = b.floors[static_cast<std::size_t>(story)];
-  const StoryHysteresisConfig& h = f.hysteresis;
-  const double k = f.stiffness;
   const double d_y = story_yield_drift(b, story);
-  using Model = StoryHysteresisConfig::Model;
-  switch (h.model) {
-    case Model::kElastic:
-      break;
-    case Model::kBilinear:
-      return std::make_unique<BilinearMaterial>(k, h.post_yield_ratio, k * d_y);
-    case Model::kBoucWen: {
-      BoucWenParameters p;
-      p.elastic_stiffness = k;
-      p.alpha = h.post_yield_ratio;
-      p.yield_force = k * d_y;
-      p.yield_displacement = d_y;
-      p.A = h.A;
-      p.beta = h.beta;
-      p.gamma = h.gamma;
-      p.n = h.n;
-      return std::make_unique<BoucWenMaterial>(p);
-    }
-    case Model::kPeakOriented: {
-      PeakOrientedParameters p;
-      p.elastic_stiffness = k;
-      p.yield_deformation = d_y;
-      p.post_yield_ratio = h.post_yield_ratio;
-      p.capping_deformation = h.capping_drift_ratio * f.height;
-      p.post_capping_ratio = h.post_capping_ratio;
-      p.residual_strength_ratio = h.residual_strength_ratio;
-      p.deterioration = h.deterioration;
-      return std::make_unique<PeakOrientedMaterial>(p);
-    }
-  }
-  throw std::invalid_argument("storey " + std::to_string(story + 1) + " of '" + b.name +
-                              "' is elastic: it has no hysteretic law");
+  return {f.stiffness, f.stiffness * d_y, d_y, f.hysteresis.post_yield_ratio, f.height};
 }
 
-const char* story_hysteresis_name(StoryHysteresisConfig::Model model) {
-  switch (model) {
-    case StoryHysteresisConfig::Model::kElastic:
-      return "elastic";
-    case StoryHysteresisConfig::Model::kBilinear:
-      return "bilinear";
-    case StoryHysteresisConfig::Model::kBoucWen:
-      return "bouc_wen";
-    case StoryHysteresisConfig::Model::kPeakOriented:
-      return "peak_oriented";
-  }
-  return "?";
+std::unique_ptr<UniaxialMaterial> make_story_material(const BuildingConfig& b, int story) {
+  const StoryHysteresisConfig& h = b.floors[static_cast<std::size_t>(story)].hysteresis;
+  if (!h.yields())
+    throw std::invalid_argument("storey " + std::to_string(story + 1) + " of '" + b.name +
+                                "' is elastic: it has no hysteretic law");
+  return make_uniaxial_hysteresis(h.law, story_yield_point(b, story));
 }
 
 }  // namespace isopound
