@@ -8,7 +8,8 @@ into the JSON and CSV files it writes.
     shipped_paths.py model configs/3d-xy5.yaml   check, run --until T (histories on), modes,
                                                  isopound-pre, pushover (3D: default 0 deg, 90 deg,
                                                  30 deg); isopound-post plot, animate and
-                                                 floor-spectra on the run, pushover on each push
+                                                 floor-spectra on the run, pushover on the
+                                                 first push that succeeded
     shipped_paths.py model demo                  the same on the model.yaml `isopound demo` writes
                                                  (docs/animation.md: "start your own from it")
     shipped_paths.py study configs/studies/x.yaml  isopound sweep --dry-run: every case builds
@@ -282,9 +283,11 @@ class Runner:
         self.args, self.target = args, target
         self.results = []
         self.env = dict(os.environ)
+        self.logs = 0  # commands run (their outputs are logs/NN.log)
 
-    def run(self, label, argv, cwd, shown, shell=False, scan=None, note=""):
-        """Runs argv (or a shell line), classifies how it ended, scans what it wrote."""
+    def run(self, label, argv, cwd, shown, shell=False, scan=None, note="", expect=()):
+        """Runs argv (or a shell line), classifies how it ended, scans what it wrote; `expect`:
+        files it must have written when it succeeds."""
         before = file_times(scan or [])
         start = time.time()
         timed_out = False
@@ -313,6 +316,9 @@ class Runner:
             problems.append(f"prints '{m.group(0)}': {line.strip()}")
             break
         if outcome == "exit 0":
+            for path in expect:
+                if not os.path.exists(path) or os.stat(path).st_mtime_ns < start * 1e9 - 1e7:
+                    problems.append(f"exit 0 but did not write {path}")
             for path, mtime in file_times(scan or []).items():
                 if before.get(path) != mtime:  # written by this command
                     problems += scan_file(path)
@@ -321,7 +327,8 @@ class Runner:
         self.results.append(result)
         # Every command's whole output, for reading after the test (the listing shows a tail).
         os.makedirs(os.path.join(self.args.scratch, "logs"), exist_ok=True)
-        log = os.path.join(self.args.scratch, "logs", f"{len(self.results):02d}.log")
+        self.logs += 1
+        log = os.path.join(self.args.scratch, "logs", f"{self.logs:02d}.log")
         with open(log, "w", encoding="utf-8") as f:
             f.write(f"$ {shown}\n# {outcome}, {seconds:.2f} s\n{output}")
         print(f"  {status_of(result):<7} {seconds:7.2f} s  {outcome:<14} {shown}"
@@ -494,10 +501,11 @@ def model_matrix(args, model_arg):
           f"S={scratch}; PATH={args.bin}:$PATH. Whole outputs: $S/logs/")
     start = time.time()
 
-    def run(label, tool_name, words, scan=None, note=""):
+    def run(label, tool_name, words, scan=None, expect=()):
         argv = [tool[tool_name]] + words
         shown = " ".join([tool_name] + [shlex.quote(w).replace(scratch, "$S") for w in words])
-        return runner.run(label, argv, ROOT, shown, scan=scan, note=note)
+        return runner.run(label, argv, ROOT, shown, scan=scan,
+                          expect=[os.path.join(scan[0], f) for f in expect])
 
     model = model_arg
     if model_arg == "demo":  # the model the demo writes as the start of one's own
@@ -512,14 +520,16 @@ def model_matrix(args, model_arg):
         run("geometry overlap --exact", "isopound", ["geometry", "overlap", model, "--exact"])
         return runner.report(time.time() - start)
 
-    three_d = is_3d(model)
     until = min(args.until, UNTIL_CAP.get(name, args.until))
+    three_d = is_3d(model)
     run("check", "isopound", ["check", model])
     out = os.path.join(scratch, "run")
-    ran = run("run", "isopound", ["run", model, "--until", f"{until:g}", "-o", out], scan=[out])
+    ran = run("run", "isopound", ["run", model, "--until", f"{until:g}", "-o", out], scan=[out],
+              expect=["summary.json", "histories.csv"])
     run("modes", "isopound", ["modes", model])
     pre = os.path.join(scratch, "pre")
-    run("pre", "isopound-pre", [model, "-o", pre], scan=[pre])
+    run("pre", "isopound-pre", [model, "-o", pre], scan=[pre],
+        expect=["properties.json"] + (["plan.png"] if three_d else []))
     pushes = [("pushover", [])]
     if three_d:
         pushes += [("pushover 90 deg", ["--angle", "90 deg"]),
@@ -527,19 +537,23 @@ def model_matrix(args, model_arg):
     pushed = []
     for label, extra in pushes:
         d = os.path.join(scratch, label.replace(" ", "-"))
-        r = run(label, "isopound", ["pushover", model, "-o", d] + extra, scan=[d])
+        r = run(label, "isopound", ["pushover", model, "-o", d] + extra, scan=[d],
+                expect=["pushover.csv", "pushover.json"])
         pushed.append((label, d, r))
     if ran.outcome == "exit 0":
-        for command in ("plot", "animate", "floor-spectra"):
-            run("post " + command, "isopound-post", [command, out], scan=[out])
+        for command, written in (("plot", "time_histories.png"),
+                                 ("animate", "animation/animation.pvd"),
+                                 ("floor-spectra", "floor-spectra.csv")):
+            run("post " + command, "isopound-post", [command, out], scan=[out], expect=[written])
     else:
         runner.skip("post", "isopound-post plot|animate|floor-spectra $S/run", "the run failed")
-    for label, d, r in pushed:
-        if r.outcome == "exit 0":
-            run("post " + label, "isopound-post", ["pushover", d], scan=[d])
-        else:
-            runner.skip("post " + label, f"isopound-post pushover {d.replace(scratch, '$S')}",
-                        "the pushover failed")
+    # The capacity curve of the plainest push (the first that succeeded): the angle changes only
+    # the figure's title, and each drawing costs 2 s (5 s under the sanitizers).
+    drawn = [(label, d) for label, d, r in pushed if r.outcome == "exit 0"][:1]
+    for label, d in drawn:
+        run("post " + label, "isopound-post", ["pushover", d], scan=[d], expect=["pushover.png"])
+    if not drawn:
+        runner.skip("post pushover", "isopound-post pushover $S/pushover*", "every push failed")
     return runner.report(time.time() - start)
 
 
@@ -689,7 +703,13 @@ def shared_dir():
 
 # ---------------------------------------------------------------------------------------------
 def test_names():
+    """README sections first: CTest starts tests in this order on a fresh tree, and the longest
+    (post-processing, the demos) should not start last."""
     names = []
+    with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as f:
+        for title, commands in readme_sections(f.read()):
+            if commands:
+                names.append(("readme", section_slug(title)))
     for f in sorted(os.listdir(os.path.join(ROOT, "configs"))):
         if f.endswith(".yaml"):
             names.append(("model", "configs/" + f))
@@ -697,10 +717,6 @@ def test_names():
     for f in sorted(os.listdir(os.path.join(ROOT, "configs", "studies"))):
         if f.endswith(".yaml"):
             names.append(("study", "configs/studies/" + f))
-    with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as f:
-        for title, commands in readme_sections(f.read()):
-            if commands:
-                names.append(("readme", section_slug(title)))
     return names
 
 
