@@ -76,8 +76,8 @@ class ProgressLine {
       std::snprintf(left, sizeof left, "about %.0f s left", wall * (total - t) / done);
     else
       std::snprintf(left, sizeof left, "no step for %.0f s", wall);
-    std::fprintf(stderr, "\r  analysed %.4g of %.4g s (%.0f %%), %s   ", t, total,
-                 100 * t / total, left);
+    std::fprintf(stderr, "\r  analysed %.4g of %.4g s (%.0f %%), %s   ", t, total, 100 * t / total,
+                 left);
     std::fflush(stderr);
   }
 
@@ -329,7 +329,7 @@ int main(int argc, char** argv) {
   demo->add_flag("-q,--quiet", quiet, "Print nothing on success");
   demo->add_flag("--2d", demo_2d,
                  "the 2D demo instead: the 3-storey shear building on Bouc-Wen isolators under "
-                 "the built-in pulse, no walls, no pictures");
+                 "the built-in pulse, no walls, no pictures; into isopound-out-2d unless -o");
   demo->add_flag("--no-pictures", no_pictures, "run only: no isopound-post pictures or animation");
 
   CLI::App* modes =
@@ -392,7 +392,10 @@ int main(int argc, char** argv) {
 
   try {
     if (*demo)
-      return demo_2d ? run_and_write(demo_model_2d(), out_dir, quiet)
+      // The 2D demo's own default folder: it must not overwrite half of the 3D demo's results
+      // and leave the 3D pictures beside them.
+      return demo_2d ? run_and_write(demo_model_2d(),
+                                     demo->count("--output") ? out_dir : "isopound-out-2d", quiet)
                      : run_demo(out_dir, quiet, !no_pictures);
     if (*overlap) return print_overlaps(pairs_path, exact);
     ModelConfig config = load_model_file(model_path);

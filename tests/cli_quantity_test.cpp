@@ -54,6 +54,13 @@ TEST(CliQuantity, BareNumbersGetThePlausibilityRuleOfTheirModelKey) {
   const CliQuantity long_run = parse_cli_quantity("5000", kUntil);
   EXPECT_TRUE(contains(long_run.warning, "did you mean '5000 ms'?")) << long_run.warning;
   EXPECT_TRUE(contains(error_of("200000", kUntil), "impossible"));
+  // The pushover's target drift: "2" is 200 %, refused with its hint; 50 % is warned.
+  constexpr CliQuantityRule kTargetDrift{dim::kNone, "pushover.target_drift_ratio", true};
+  EXPECT_DOUBLE_EQ(parse_cli_quantity("2 %", kTargetDrift).si, 0.02);
+  EXPECT_TRUE(parse_cli_quantity("2 %", kTargetDrift).warning.empty());
+  const std::string two = error_of("2", kTargetDrift);
+  EXPECT_TRUE(contains(two, "did you mean '2 %'?")) << two;
+  EXPECT_TRUE(contains(parse_cli_quantity("0.5", kTargetDrift).warning, "implausible"));
   // > 0 where the option needs it; no row: no plausibility check.
   EXPECT_TRUE(contains(error_of("0 s", kUntil), "must be > 0"));
   const CliQuantity free = parse_cli_quantity("5", CliQuantityRule{dim::kNone});

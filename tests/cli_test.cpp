@@ -100,6 +100,18 @@ TEST(CliDivergence, StopsWithTimeAndDof) {
   fs::remove_all(dir);
 }
 
+// `isopound demo --2d` without -o writes into its own folder: into the 3D demo's isopound-out/ it
+// replaced summary.json and histories.csv and left the 3D pictures and animation beside them.
+TEST(CliDemo, TwoDimensionalDemoKeepsOutOfTheThreeDimensionalDemosFolder) {
+  const fs::path dir = scratch_dir("demo-folder");
+  const Command c = test::run_command("cd '" + dir.string() + "' && '" +
+                                      std::string(ISOPOUND_BINARY) + "' demo --2d -q");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_TRUE(fs::exists(dir / "isopound-out-2d" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "isopound-out"));
+  fs::remove_all(dir);
+}
+
 TEST(CliDemo, TwoDimensionalDemoWritesSummaryAndHistoriesWithConsistentPeaks) {
   const fs::path dir = scratch_dir("demo");
   const Command c = run("demo --2d -o '" + dir.string() + "'");

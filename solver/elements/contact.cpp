@@ -52,9 +52,13 @@ void Contact1D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
 
   if (freeze_) {
     // A step cut to end at an event: the status changes only in settle_event().
-  } else if (!C.in_contact && T.delta > 0) {
+  } else if (!C.in_contact && T.delta > 0 &&
+             !(C.delta > 0 && C.rate <= 0 && T.rate <= 0 && T.delta <= C.delta)) {
     // Onset inside this step: the approach rate at delta = 0 is the impact velocity. A step
-    // that began already past 0 (open but penetrating, after a cut) starts it at once.
+    // that began already past 0 (open but penetrating, after a cut) starts it at once, unless
+    // the bodies separate throughout it: a separation cut where the step's state still
+    // overlaps by a hair (the event is located on the interpolant; a massless node's position
+    // is not) is no new impact (a Kelvin-Voigt contact opening under tension counted one).
     const WitnessStep w{C.delta, C.rate, T.delta, T.rate, h_};
     double theta = first_status_change(w, false, 0.0);
     if (theta >= 1.0) theta = 0.0;

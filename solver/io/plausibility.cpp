@@ -21,7 +21,7 @@ constexpr Dimension kArea{2, 0, 0};         // m^2
 constexpr Dimension kAreaMoment{4, 0, 0};   // m^4
 
 // clang-format off
-constexpr std::array<PlausibleRange, 71> kRanges{{
+constexpr std::array<PlausibleRange, 72> kRanges{{
   // key, dimension, hard min, hard max, plausible low, high, unit, SI of unit, what it is
   {"gap",          dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall or neighbour gap"},
   {"gap_left",     dim::kLength, 0, 5, 0, 1, "cm", 1e-2, "a moat-wall gap"},
@@ -62,6 +62,7 @@ constexpr std::array<PlausibleRange, 71> kRanges{{
   {"yield_moment", kMoment, 0, 1e10, 1e4, 1e8, "kN m", 1e3, "a column yield moment"},
   {"yield_shear_coefficient", dim::kNone, 0, 5, 0.02, 1, "%", 1e-2, "a storey yield shear / weight above"},
   {"elastic_limit_drift_ratio", dim::kNone, 0, 0.2, 0.002, 0.05, "%", 1e-2, "the drift ratio beyond which an elastic storey is flagged"},
+  {"target_drift_ratio", dim::kNone, 0, 1, 0.002, 0.1, "%", 1e-2, "a pushover's target roof drift ratio"},
   {"ratio",        dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
   {"ratios",       dim::kNone, 0, 1, 0, 0.3, "%", 1e-2, "a damping ratio"},
   {"isolation",    dim::kNone, 0, 1, 0, 0.5, "%", 1e-2, "an isolation damping ratio"},

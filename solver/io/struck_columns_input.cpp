@@ -53,7 +53,7 @@ StruckColumnsConfig read_struck_columns(const InputNode& node, const BuildingCon
                     k / 1e6, f + 1, b.name.c_str(), b.floors[f].stiffness / 1e6);
       node.fail_at_key("I", what);
     }
-    if (b.floors[f].hysteresis.model != StoryHysteresisConfig::Model::kElastic) {
+    if (b.floors[f].hysteresis.yields()) {
       char what[240];
       std::snprintf(what, sizeof what,
                     "storey %zu of '%s' yields through its hysteresis: law; with columns: its "
