@@ -27,6 +27,7 @@
 #include "solver/io/overlap_report.h"
 #include "solver/io/plausibility.h"
 #include "solver/io/polygon_input.h"
+#include "solver/io/progress_estimate.h"
 #include "solver/io/pushover_report.h"
 #include "solver/io/report.h"
 #include "solver/io/report3d.h"
@@ -48,14 +49,11 @@ namespace {
 
 enum ExitCode { kOk = 0, kFailure = 1, kBadInput = 2, kDiverged = 3 };
 
-// A progress line on stderr for runs longer than a few seconds (rewritten in place). The time
-// left is at the pace of the last ~10 s of wall time, not the average since the start: a run
-// whose steps shrink (contacts, struck columns) would otherwise be promised far too soon.
+// A progress line on stderr for runs longer than a few seconds (rewritten in place), with the
+// time left of ProgressEstimate.
 class ProgressLine {
  public:
-  explicit ProgressLine(bool enabled) : enabled_(enabled), start_(Clock::now()) {
-    samples_[0] = {start_, 0.0};
-  }
+  explicit ProgressLine(bool enabled) : enabled_(enabled), start_(Clock::now()) {}
   ~ProgressLine() {
     if (shown_) std::fputc('\n', stderr);
   }
@@ -66,33 +64,19 @@ class ProgressLine {
       return;
     last_ = now;
     shown_ = true;
-    // One sample per line (every 0.5 s): the oldest of the last kSamples spans ~10 s.
-    const Sample& from = samples_[count_ < kSamples ? 0 : count_ % kSamples];
-    samples_[count_++ % kSamples] = {now, t};
-    const double wall = std::chrono::duration<double>(now - from.wall).count();
-    const double done = t - from.t;
-    char left[64];
-    if (done > 0)
-      std::snprintf(left, sizeof left, "about %.0f s left", wall * (total - t) / done);
-    else
-      std::snprintf(left, sizeof left, "no step for %.0f s", wall);
+    const std::string left =
+        estimate_.sample(std::chrono::duration<double>(now - start_).count(), t, total);
     std::fprintf(stderr, "\r  analysed %.4g of %.4g s (%.0f %%), %s   ", t, total, 100 * t / total,
-                 left);
+                 left.c_str());
     std::fflush(stderr);
   }
 
  private:
   using Clock = std::chrono::steady_clock;
-  struct Sample {
-    Clock::time_point wall;
-    double t = 0.0;
-  };
-  static constexpr int kSamples = 20;
   bool enabled_;
   bool shown_ = false;
   Clock::time_point start_, last_{};
-  Sample samples_[kSamples];
-  int count_ = 1;
+  ProgressEstimate estimate_;
 };
 
 void create_output_directory(const std::string& out_dir) {

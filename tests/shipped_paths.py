@@ -595,9 +595,18 @@ def readme_section(args, slug):
             if study in text:
                 shorten_study(os.path.join(tree, study), args.until)
                 note += f"; {study} with every run stopped at {args.until:g} s (README: long)"
+        if (re.search(r"isopound demo\b", text) and "--2d" not in text
+                and "--no-pictures" not in text
+                and not os.path.exists(os.path.join(args.bin, "isopound-post"))):
+            # The demo draws through isopound-post; where it is not built, its analysis alone.
+            text += " --no-pictures"
+            note += "; run with --no-pictures: isopound-post is not built here"
         absent = [t for t in ("isopound-post", "isopound-pre")
                   if re.search(r"(?<![\w/.-])" + t + r"\b", text)
                   and not os.path.exists(os.path.join(args.bin, t))]
+        if NEEDS_PVPYTHON.search(text) and not os.path.exists(os.path.join(args.bin,
+                                                                          "isopound-post")):
+            absent.append("isopound-post")  # ParaView reads what isopound-post writes
         if absent:  # the sanitizer tree builds no VTK/Gmsh program (ISOPOUND_BUILD_POST=OFF)
             runner.skip("readme", written, f"line {number}: {absent[0]} is not built here")
             return None

@@ -32,6 +32,17 @@ double final_resultant(const PlanProbe& p, const std::vector<double>& u) {
   return std::hypot(sum(p.x_terms), sum(p.y_terms));
 }
 
+// A storey of a structure with struck_columns: its columns are hinged lines (yielding at M_y)
+// or struck columns in their place, not the elastic storey the over-drift warning is about.
+bool has_hinged_columns(const Model& model, const std::string& structure,
+                        const std::string& storey) {
+  const std::string hinged = structure + "/" + storey + "/hinged column ";
+  const std::string struck = " on " + structure + " " + storey;
+  for (const auto& e : model.elements)
+    if (e->label().starts_with(hinged) || e->label().ends_with(struck)) return true;
+  return false;
+}
+
 }  // namespace
 
 void add_column_yield_json(const JobResult& job, const StructureInfo& s, nlohmann::json& jb) {
@@ -91,7 +102,8 @@ void add_column_yield_json(const JobResult& job, const StructureInfo& s, nlohman
           {"peak_ductility", peak_ductility},
           {"first_yield_time_s", first_yield >= 0 ? json(first_yield) : json(nullptr)},
           {"hysteretic_energy_J", energy}};
-    } else if (st["envelope_over_columns"]["drift_ratio"]["value"].get<double>() > limit) {
+    } else if (!has_hinged_columns(model, s.name, storey) &&
+               st["envelope_over_columns"]["drift_ratio"]["value"].get<double>() > limit) {
       st["elastic_limit_exceeded"] = true;
       exceeded = true;
     }
