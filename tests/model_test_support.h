@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -58,6 +59,20 @@ inline int history_column(const History& h, const std::string& name) {
 // force is 0): each is checked passive, the net work of the contact force on the bodies over it
 // <= 0, i.e. the contact's dissipated energy, read whenever it opens, never decreases. Returns
 // the number of episodes that ended.
+// The largest peak over every element output whose name starts with `prefix` ("ductility_":
+// how far any hinge of the model yielded).
+inline double largest_output_peak(const Model& model, const AnalysisResult& r,
+                                  const std::string& prefix) {
+  double largest = 0.0;
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& el = *model.elements[e];
+    for (int k = 0; k < el.output_count(); ++k)
+      if (el.output_name(k).starts_with(prefix))
+        largest = std::max(largest, r.element_outputs[e][k].value);
+  }
+  return largest;
+}
+
 inline int passive_episodes(const History& h, int force, int dissipated) {
   const std::size_t cols = h.columns.size();
   double last_open = 0.0;
