@@ -19,8 +19,6 @@
 namespace isopound {
 namespace {
 
-constexpr double kLevelTolerance2D = 1e-3;  // m: pounding2d.cpp pairs levels within 1 mm
-
 constexpr double kGround = 0.01;  // m: levels below are at the ground
 constexpr double kNoArea = 1e-9;  // m2: overlaps below this are touching, not overlapping
 
