@@ -84,7 +84,8 @@ std::vector<double> resolved_periods(const std::vector<double>& asked, bool give
 }
 
 // x, y and RotD spectra of one plan point's acceleration pair.
-void pair_spectra(PlaceSpectra& p, const GroundMotion& x, const GroundMotion& y,
+template <class Motion>
+void pair_spectra(PlaceSpectra& p, const Motion& x, const Motion& y,
                   const std::vector<double>& periods, const SpectrumOptions& o) {
   p.x = response_spectrum(x, periods, o);
   p.y = response_spectrum(y, periods, o);
@@ -96,7 +97,10 @@ std::string level_of(const std::string& label) {
   return slash == std::string::npos ? label : label.substr(slash + 1);
 }
 
-void spectra_2d(const RunData& run, double dt, const std::vector<double>& periods,
+// `motion(column, name)`: the history column `column` (an index into histories.csv's columns) as
+// a GroundMotion (the rows) or an Accelerogram (the steps).
+template <class MotionOf>
+void spectra_2d(const RunData& run, const MotionOf& motion, const std::vector<double>& periods,
                 const SpectrumOptions& o, FloorSpectra& out) {
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels) {
@@ -108,12 +112,13 @@ void spectra_2d(const RunData& run, double dt, const std::vector<double>& period
       p.structure = s.name;
       p.level = level_of(l.label);
       p.elevation = l.elevation;
-      p.x = response_spectrum(column_motion(run, l.a_abs, dt, l.label), periods, o);
+      p.x = response_spectrum(motion(l.a_abs, l.label), periods, o);
       out.places.push_back(std::move(p));
     }
 }
 
-void spectra_3d(const RunData& run, double dt, const std::vector<double>& periods,
+template <class MotionOf>
+void spectra_3d(const RunData& run, const MotionOf& motion, const std::vector<double>& periods,
                 const SpectrumOptions& o, FloorSpectra& out) {
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels) {
@@ -122,15 +127,15 @@ void spectra_3d(const RunData& run, double dt, const std::vector<double>& period
                                 "' lacks its (x), (y) or (theta) a_abs column");
       const PlanBody& body = run.site.bodies.at(l.body);
       if (body.role == "wall") continue;  // a flexible moat wall: not a floor
-      const GroundMotion ax = column_motion(run, l.a_abs, dt, l.label + " (x)");
-      const GroundMotion ay = column_motion(run, l.a_abs_y, dt, l.label + " (y)");
-      const GroundMotion at = column_motion(run, l.a_abs_theta, dt, l.label + " (theta)");
+      const auto ax = motion(l.a_abs, l.label + " (x)");
+      const auto ay = motion(l.a_abs_y, l.label + " (y)");
+      const auto at = motion(l.a_abs_theta, l.label + " (theta)");
       std::vector<std::pair<std::string, Vec2>> points{{"CM", body.p_WCM}};
       for (std::size_t k = 0; k < body.plan_W.size(); ++k)
         points.push_back({"corner " + std::to_string(k + 1), body.plan_W[k]});
       for (const auto& [name, p_W] : points) {
         // The rigid diaphragm's point p: a_x − p_y a_θ, a_y + p_x a_θ (DOFs at the plan origin).
-        GroundMotion px = ax, py = ay;
+        auto px = ax, py = ay;
         px.name = l.label + "/" + name + " x";
         py.name = l.label + "/" + name + " y";
         for (std::size_t k = 0; k < at.acceleration.size(); ++k) {
@@ -147,6 +152,35 @@ void spectra_3d(const RunData& run, double dt, const std::vector<double>& period
         out.places.push_back(std::move(place));
       }
     }
+}
+
+// Ground and every place, from `motion` (see spectra_2d).
+template <class MotionOf>
+void all_spectra(const RunData& run, const MotionOf& motion, const SpectrumOptions& o,
+                 FloorSpectra& out) {
+  const int gx = run.find("", "ground_acceleration");
+  if (gx < 0)
+    throw FloorSpectraError((run.dir / "histories.csv").string() +
+                            ": no 'ground_acceleration [m/s2]' column");
+  out.ground.label = "ground";
+  const auto ground_x = motion(gx, "ground x");
+  if (run.three_d) {
+    const int gy = run.find("", "ground_acceleration_y");
+    auto ground_y = ground_x;
+    ground_y.name = "ground y";
+    if (gy >= 0) {
+      ground_y.acceleration = motion(gy, "ground y").acceleration;
+    } else {
+      std::fill(ground_y.acceleration.begin(), ground_y.acceleration.end(), 0.0);
+      out.notes.push_back("no ground_acceleration_y column: the ground moves along x only");
+    }
+    out.ground.p_W = Vec2{0.0, 0.0};
+    pair_spectra(out.ground, ground_x, ground_y, out.periods, o);
+    spectra_3d(run, motion, out.periods, o, out);
+  } else {
+    out.ground.x = response_spectrum(ground_x, out.periods, o);
+    spectra_2d(run, motion, out.periods, o, out);
+  }
 }
 
 }  // namespace
@@ -188,35 +222,51 @@ FloorSpectra floor_spectra(const RunData& run, const FloorSpectraOptions& option
   out.three_d = run.three_d;
   out.damping = options.spectrum.damping;
   out.sampling = history_sampling(run);
-  const double dt = out.sampling.row_interval;
   const bool given = !options.periods.empty();
+  const SpectrumOptions& o = options.spectrum;
+  using Source = FloorSpectraOptions::Source;
+  std::optional<StepTable> steps;
+  if (options.source != Source::kRows) {
+    try {
+      steps = read_step_accelerations(run);
+    } catch (const RunDataError& e) {
+      throw FloorSpectraError(e.what());
+    }
+    if (!steps && options.source == Source::kSteps)
+      throw FloorSpectraError((run.dir / "step-accelerations.csv").string() +
+                              ": absent (--from steps): rerun with output: {floor_spectra: true}");
+  }
+  if (steps) {
+    // Every step, exact for the straight lines between them: every period is resolved.
+    out.periods = given ? options.periods : default_periods();
+    out.steps = steps->time().size();
+    const auto motion = [&](int column, const std::string& name) {
+      const int c = steps->find(run.columns.at(column));
+      if (c < 0)
+        throw FloorSpectraError((run.dir / "step-accelerations.csv").string() + ": no '" +
+                                run.columns.at(column) + "' column");
+      return Accelerogram{name, steps->time(), steps->values[c]};
+    };
+    all_spectra(run, motion, o, out);
+    return out;
+  }
   out.periods = resolved_periods(given ? options.periods : default_periods(), given, out.sampling,
                                  options, out.notes);
-  const SpectrumOptions& o = options.spectrum;
-
-  const int gx = run.find("", "ground_acceleration");
-  if (gx < 0)
-    throw FloorSpectraError((run.dir / "histories.csv").string() +
-                            ": no 'ground_acceleration [m/s2]' column");
-  out.ground.label = "ground";
-  const GroundMotion ground_x = column_motion(run, gx, dt, "ground x");
-  if (run.three_d) {
-    const int gy = run.find("", "ground_acceleration_y");
-    GroundMotion ground_y = ground_x;
-    ground_y.name = "ground y";
-    if (gy >= 0) {
-      ground_y.acceleration = run.column(gy);
-    } else {
-      std::fill(ground_y.acceleration.begin(), ground_y.acceleration.end(), 0.0);
-      out.notes.push_back("no ground_acceleration_y column: the ground moves along x only");
-    }
-    out.ground.p_W = Vec2{0.0, 0.0};
-    pair_spectra(out.ground, ground_x, ground_y, out.periods, o);
-    spectra_3d(run, dt, out.periods, o, out);
-  } else {
-    out.ground.x = response_spectrum(ground_x, out.periods, o);
-    spectra_2d(run, dt, out.periods, o, out);
+  const double dt = out.sampling.row_interval;
+  if (options.source == Source::kAuto) {  // one line with the clipping note, if any
+    const std::string caveat =
+        "spectra from the rows of histories.csv (every " + seconds(out.sampling.effective()) +
+        "), where an impact shorter than a few rows is smoothed away; a run with output: "
+        "{floor_spectra: true} records every analysis step and gives them exactly";
+    if (out.notes.empty())
+      out.notes.push_back(caveat);
+    else
+      out.notes.back() += "; " + caveat;
   }
+  const auto motion = [&](int column, const std::string& name) {
+    return column_motion(run, column, dt, name);
+  };
+  all_spectra(run, motion, o, out);
   return out;
 }
 

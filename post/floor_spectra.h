@@ -34,6 +34,11 @@ struct FloorSpectraOptions {
   // refuses), kRefuse for periods given.
   enum class ShortPeriods { kAuto, kRefuse, kClip };
   ShortPeriods short_periods = ShortPeriods::kAuto;
+  // What the oscillators integrate: the run's every analysis step (step-accelerations.csv, from
+  // output.floor_spectra: true; exact, every period), or the rows of histories.csv (the sampling
+  // rule above). kAuto: the steps when the run has them, else the rows, with a note.
+  enum class Source { kAuto, kSteps, kRows };
+  Source source = Source::kAuto;
 };
 
 // The interval the spectra see: histories.csv's row interval, or the solver's analysis interval
@@ -63,6 +68,7 @@ struct FloorSpectra {
   std::vector<double> periods;  // s, as computed (after clipping)
   double damping = 0.05;
   HistorySampling sampling;
+  std::size_t steps = 0;  // > 0: computed over this many analysis steps (not the rows)
   bool three_d = false;
   PlaceSpectra ground;               // from the run's ground_acceleration column(s)
   std::vector<PlaceSpectra> places;  // structure by structure, levels bottom to top

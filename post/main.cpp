@@ -243,6 +243,7 @@ struct FloorSpectraArgs {
   double samples_per_period = 10.0;
   std::string short_periods;  // refuse | clip; "": clip the default periods, refuse those given
   int oversample = 1;
+  std::string from;  // steps | rows; "": the steps when the run has them
 };
 
 // Spectra of every level's absolute acceleration (docs/floor-spectra.md); `out` a directory
@@ -252,6 +253,8 @@ int run_floor_spectra(const FloorSpectraArgs& a) {
   if (a.oversample < 1) throw BadInput("--oversample: must be >= 1");
   if (!a.short_periods.empty() && a.short_periods != "refuse" && a.short_periods != "clip")
     throw BadInput("--short-periods: '" + a.short_periods + "' is not refuse or clip");
+  if (!a.from.empty() && a.from != "steps" && a.from != "rows")
+    throw BadInput("--from: '" + a.from + "' is not steps or rows");
   const RunData run = load_run(a.dir, a.model);
   FloorSpectraOptions opt;
   opt.periods = a.periods;
@@ -262,6 +265,10 @@ int run_floor_spectra(const FloorSpectraArgs& a) {
   opt.short_periods = a.short_periods == "clip"     ? ShortPeriods::kClip
                       : a.short_periods == "refuse" ? ShortPeriods::kRefuse
                                                     : ShortPeriods::kAuto;
+  using Source = FloorSpectraOptions::Source;
+  opt.source = a.from == "steps"  ? Source::kSteps
+               : a.from == "rows" ? Source::kRows
+                                  : Source::kAuto;
   FloorSpectra f;
   try {
     f = floor_spectra(run, opt);
@@ -277,10 +284,15 @@ int run_floor_spectra(const FloorSpectraArgs& a) {
   write_text(out_dir / "floor-spectra-places.csv", floor_spectra_places_csv(f));
   const PrivateDisplay display;
   render_png(floor_spectra_figure(f), (out_dir / "floor-spectra.png").string());
+  char source[64];
+  if (f.steps > 0)
+    std::snprintf(source, sizeof source, "every analysis step: %zu", f.steps);
+  else
+    std::snprintf(source, sizeof source, "history every %.4g s", f.sampling.row_interval);
   std::printf(
       "Wrote %s/floor-spectra.csv, floor-spectra-places.csv and floor-spectra.png (%zu "
-      "places, %zu periods, history every %.4g s)\n",
-      out_dir.string().c_str(), f.places.size(), f.periods.size(), f.sampling.row_interval);
+      "places, %zu periods, %s)\n",
+      out_dir.string().c_str(), f.places.size(), f.periods.size(), source);
   return kOk;
 }
 
@@ -429,6 +441,9 @@ int main(int argc, char** argv) {
                     "note); default: clip the default periods, refuse the --periods given");
   floor->add_option("--oversample", fa.oversample,
                     "sub-steps per history row for the peak (exact either way; default 1)");
+  floor->add_option("--from", fa.from,
+                    "steps (the run's step-accelerations.csv, output.floor_spectra: true; exact) "
+                    "| rows (histories.csv); default: the steps when the run has them");
   floor->add_option("-o,--output,--out", fa.out, "output directory (default: the run directory)");
   floor->add_option("--model", fa.model, "model file (default: the one named in summary.json)");
 

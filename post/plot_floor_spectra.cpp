@@ -84,8 +84,12 @@ Figure floor_spectra_figure(const FloorSpectra& f) {
       panels.size() == 4 ? 2 : static_cast<int>(std::min<std::size_t>(panels.size(), 3));
   const int rows = static_cast<int>((panels.size() + columns - 1) / columns);
   char title[96];
-  std::snprintf(title, sizeof title, "Floor response spectra, ξ = %g %% (history every %.4g s)",
-                100.0 * f.damping, f.sampling.row_interval);
+  if (f.steps > 0)
+    std::snprintf(title, sizeof title, "Floor response spectra, ξ = %g %% (every analysis step)",
+                  100.0 * f.damping);
+  else
+    std::snprintf(title, sizeof title, "Floor response spectra, ξ = %g %% (history every %.4g s)",
+                  100.0 * f.damping, f.sampling.row_interval);
   return xy_figure(panels, columns, 420 * columns, 60 + 340 * rows, title);
 }
 

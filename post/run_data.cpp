@@ -51,34 +51,41 @@ std::map<std::string, std::pair<int, double>> isolation_levels(const nlohmann::j
   return out;
 }
 
-void read_histories(RunData& run, const fs::path& path) {
+// A table of numbers with a header line whose first column is time [s] (histories.csv,
+// step-accelerations.csv).
+void read_table(const fs::path& path, std::vector<std::string>& columns,
+                std::vector<std::vector<double>>& values) {
   std::ifstream in(path);
   if (!in) throw RunDataError(path.string() + ": cannot open (is this a run directory?)");
   std::string line;
   if (!std::getline(in, line)) throw RunDataError(path.string() + ":1: empty file");
-  run.columns = split_csv(line);
-  if (run.columns.empty() || parse_column_name(run.columns[0]).quantity != "time")
+  columns = split_csv(line);
+  if (columns.empty() || parse_column_name(columns[0]).quantity != "time")
     throw RunDataError(path.string() + ":1: the first column must be time [s]");
-  run.values.assign(run.columns.size(), {});
+  values.assign(columns.size(), {});
   int line_no = 1;
   while (std::getline(in, line)) {
     ++line_no;
     if (line.empty()) continue;
     const auto cells = split_csv(line);
-    if (cells.size() != run.columns.size())
+    if (cells.size() != columns.size())
       throw RunDataError(path.string() + ":" + std::to_string(line_no) + ": " +
                          std::to_string(cells.size()) + " values, the header has " +
-                         std::to_string(run.columns.size()));
+                         std::to_string(columns.size()));
     for (std::size_t c = 0; c < cells.size(); ++c) {
       char* end = nullptr;
       const double v = std::strtod(cells[c].c_str(), &end);
       if (end == cells[c].c_str() || *end != '\0' || !std::isfinite(v))
         throw RunDataError(path.string() + ":" + std::to_string(line_no) + ": column '" +
-                           run.columns[c] + "': not a number: '" + cells[c] + "'");
-      run.values[c].push_back(v);
+                           columns[c] + "': not a number: '" + cells[c] + "'");
+      values[c].push_back(v);
     }
   }
-  if (run.rows() < 2) throw RunDataError(path.string() + ": fewer than 2 rows");
+  if (values[0].size() < 2) throw RunDataError(path.string() + ": fewer than 2 rows");
+}
+
+void read_histories(RunData& run, const fs::path& path) {
+  read_table(path, run.columns, run.values);
 }
 
 // 3D: levels from the x DOF columns "<structure>/<level> (x) u [m]" (y and theta beside them).
@@ -401,6 +408,25 @@ RunData read_run(const fs::path& dir, const std::string& model_file) {
   find_elements(run);
   find_geometry(run, model_file);
   return run;
+}
+
+std::optional<StepTable> read_step_accelerations(const RunData& run) {
+  const fs::path path = run.dir / "step-accelerations.csv";
+  if (!fs::exists(path)) return std::nullopt;
+  StepTable table;
+  read_table(path, table.columns, table.values);
+  const std::vector<double>& t = table.values[0];
+  for (std::size_t k = 1; k < t.size(); ++k)
+    if (t[k] < t[k - 1])
+      throw RunDataError(path.string() + ":" + std::to_string(k + 2) +
+                         ": time goes back (steps must be in order)");
+  return table;
+}
+
+int StepTable::find(const std::string& column) const {
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c] == column) return static_cast<int>(c);
+  return -1;
 }
 
 double value_at(const RunData& run, int column, double t) {

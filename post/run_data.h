@@ -92,6 +92,18 @@ struct RunData {
 // Throws RunDataError naming the file (and line) on anything missing or malformed.
 RunData read_run(const std::filesystem::path& dir, const std::string& model_file = "");
 
+// step-accelerations.csv (a run with output.floor_spectra: true): the time, the ground's and every
+// DOF's absolute acceleration at every accepted analysis step, the columns named as in
+// histories.csv. A time may repeat (a step cut at an event: the values before and after).
+struct StepTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> values;    // per column, per step
+  int find(const std::string& column) const;  // -1 when absent
+  const std::vector<double>& time() const { return values.at(0); }
+};
+// Read on demand (the file holds every step): nullopt when the run has none. Throws RunDataError.
+std::optional<StepTable> read_step_accelerations(const RunData& run);
+
 // Linear interpolation of a column at time t (clamped to the recorded span).
 double value_at(const RunData& run, int column, double t);
 

@@ -2,9 +2,13 @@
 #include "post/spectra.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace isopound::post {
 namespace {
@@ -33,6 +37,73 @@ struct Recurrence {
     Dp = (1.0 - e * (xi / s1 * sn + cs)) / (k * dt);
   }
 };
+
+// One classical Runge–Kutta step of u'' = p(τ) − 2ξω u' − ω² u with p linear from p0 to p1 over h:
+// for ωh < 0.01, where the recurrence's closed form loses its digits to cancellation.
+void runge_kutta_step(double w, double xi, double h, double p0, double p1, double& u, double& v) {
+  const auto acc = [&](double uu, double vv, double p) {
+    return p - 2.0 * xi * w * vv - w * w * uu;
+  };
+  const double pm = 0.5 * (p0 + p1);
+  const double k1u = v, k1v = acc(u, v, p0);
+  const double k2u = v + 0.5 * h * k1v, k2v = acc(u + 0.5 * h * k1u, v + 0.5 * h * k1v, pm);
+  const double k3u = v + 0.5 * h * k2v, k3v = acc(u + 0.5 * h * k2u, v + 0.5 * h * k2v, pm);
+  const double k4u = v + h * k3v, k4v = acc(u + h * k3u, v + h * k3v, p1);
+  u += h / 6.0 * (k1u + 2.0 * k2u + 2.0 * k3u + k4u);
+  v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+}
+
+// Per-angle peaks of a plan point's two SDOF histories, u_θ = u_1 cos θ + u_2 sin θ at θ = 0°, 1°,
+// ..., 179° (peaks sorted on return). A sample no longer than the smallest peak so far,
+// |u| <= min_θ peak(θ), cannot raise any (|u_θ| <= |u|): it is skipped, which leaves the result
+// unchanged and makes the cost about one comparison per sample once the peaks have grown.
+void rotd_peaks(const std::vector<double>& u1, const std::vector<double>& u2,
+                std::vector<double>& peaks) {
+  static const auto [c, s] = [] {
+    std::array<double, 180> cs{}, sn{};
+    for (int d = 0; d < 180; ++d) {
+      cs[d] = std::cos(d * std::numbers::pi / 180.0);
+      sn[d] = std::sin(d * std::numbers::pi / 180.0);
+    }
+    return std::pair{cs, sn};
+  }();
+  peaks.assign(180, 0.0);
+  double smallest = 0.0;
+  for (std::size_t k = 0; k < u1.size(); ++k) {
+    if (u1[k] * u1[k] + u2[k] * u2[k] <= smallest * smallest) continue;
+    for (int d = 0; d < 180; ++d)
+      peaks[d] = std::max(peaks[d], std::abs(u1[k] * c[d] + u2[k] * s[d]));
+    smallest = *std::min_element(peaks.begin(), peaks.end());
+  }
+  std::sort(peaks.begin(), peaks.end());
+}
+
+RotDSpectrum rotd_of(
+    std::string name, const std::vector<double>& periods,
+    const std::function<void(double, std::vector<double>&, std::vector<double>&)>& responses) {
+  RotDSpectrum s;
+  s.name = std::move(name);
+  std::vector<double> peaks, u1, u2;
+  for (double t : periods) {
+    s.period.push_back(t);
+    responses(t, u1, u2);  // T = 0: the accelerations themselves
+    rotd_peaks(u1, u2, peaks);
+    const double p50 = 0.5 * (peaks[89] + peaks[90]), p100 = peaks[179];
+    if (t == 0.0) {
+      s.sd50.push_back(0.0);
+      s.sd100.push_back(0.0);
+      s.psa50.push_back(p50);
+      s.psa100.push_back(p100);
+    } else {
+      const double w2 = std::pow(2.0 * std::numbers::pi / t, 2);
+      s.sd50.push_back(p50);
+      s.sd100.push_back(p100);
+      s.psa50.push_back(w2 * p50);
+      s.psa100.push_back(w2 * p100);
+    }
+  }
+  return s;
+}
 
 void check(const GroundMotion& motion, double period, const SpectrumOptions& options) {
   if (!(motion.dt > 0.0) || motion.acceleration.size() < 2)
@@ -145,43 +216,83 @@ RotDSpectrum rotd_spectrum(const GroundMotion& first, const GroundMotion& second
   const std::size_t n = std::max(a.acceleration.size(), b.acceleration.size());
   a.acceleration.resize(n, 0.0);
   b.acceleration.resize(n, 0.0);
-  RotDSpectrum s;
-  s.name = first.name + "+" + second.name;
-  std::vector<double> c(180), sn(180), peaks(180);
-  for (int d = 0; d < 180; ++d) {
-    c[d] = std::cos(d * std::numbers::pi / 180.0);
-    sn[d] = std::sin(d * std::numbers::pi / 180.0);
+  return rotd_of(first.name + "+" + second.name, periods,
+                 [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
+                   u1 = t == 0.0 ? a.acceleration : sdof_displacement(a, t, options);
+                   u2 = t == 0.0 ? b.acceleration : sdof_displacement(b, t, options);
+                 });
+}
+
+std::vector<double> sdof_displacement(const Accelerogram& g, double period,
+                                      const SpectrumOptions& options) {
+  if (g.time.size() != g.acceleration.size() || g.time.size() < 2)
+    throw std::invalid_argument(g.name + ": needs as many times as accelerations, 2 or more");
+  if (!(period > 0.0)) throw std::invalid_argument("period must be > 0");
+  if (!(options.damping >= 0.0 && options.damping < 1.0))
+    throw std::invalid_argument("damping ratio must be in [0, 1)");
+  if (options.oversample < 1) throw std::invalid_argument("oversample must be >= 1");
+  const double w = 2.0 * std::numbers::pi / period, xi = options.damping;
+  std::vector<double> u{0.0};
+  u.reserve(g.time.size());
+  double ui = 0.0, vi = 0.0, h_cached = -1.0;
+  std::optional<Recurrence> r;
+  for (std::size_t i = 0; i + 1 < g.time.size(); ++i) {
+    const double h = g.time[i + 1] - g.time[i];
+    if (h < 0.0) throw std::invalid_argument(g.name + ": time goes back");
+    if (h == 0.0) continue;  // a jump: the next step starts from the value after it
+    const double a0 = g.acceleration[i], a1 = g.acceleration[i + 1];
+    const int m = std::max(options.oversample,
+                           static_cast<int>(std::ceil(kSamplesPerPeriod * h / period - 1e-9)));
+    const double hs = h / m;
+    const bool small = w * hs < 0.01;
+    if (!small && hs != h_cached) r.emplace(w, xi, hs), h_cached = hs;
+    for (int j = 0; j < m; ++j) {
+      const double p0 = -(a0 + (a1 - a0) * j / m), p1 = -(a0 + (a1 - a0) * (j + 1) / m);
+      if (small) {
+        runge_kutta_step(w, xi, hs, p0, p1, ui, vi);
+      } else {
+        const double un = r->A * ui + r->B * vi + r->C * p0 + r->D * p1;
+        vi = r->Ap * ui + r->Bp * vi + r->Cp * p0 + r->Dp * p1;
+        ui = un;
+      }
+      u.push_back(ui);
+    }
   }
+  return u;
+}
+
+Spectrum response_spectrum(const Accelerogram& g, const std::vector<double>& periods,
+                           const SpectrumOptions& options) {
+  Spectrum s;
+  s.name = g.name;
   for (double t : periods) {
     s.period.push_back(t);
-    std::vector<double> u1, u2;
     if (t == 0.0) {
-      u1 = a.acceleration;  // zero period: the rotated ground acceleration itself
-      u2 = b.acceleration;
-    } else {
-      u1 = sdof_displacement(a, t, options);
-      u2 = sdof_displacement(b, t, options);
+      double pga = 0.0;
+      for (double a : g.acceleration) pga = std::max(pga, std::abs(a));
+      s.sd.push_back(0.0);
+      s.psa.push_back(pga);
+      continue;
     }
-    std::fill(peaks.begin(), peaks.end(), 0.0);
-    for (std::size_t k = 0; k < u1.size(); ++k)
-      for (int d = 0; d < 180; ++d)
-        peaks[d] = std::max(peaks[d], std::abs(u1[k] * c[d] + u2[k] * sn[d]));
-    std::sort(peaks.begin(), peaks.end());
-    const double p50 = 0.5 * (peaks[89] + peaks[90]), p100 = peaks[179];
-    if (t == 0.0) {
-      s.sd50.push_back(0.0);
-      s.sd100.push_back(0.0);
-      s.psa50.push_back(p50);
-      s.psa100.push_back(p100);
-    } else {
-      const double w2 = std::pow(2.0 * std::numbers::pi / t, 2);
-      s.sd50.push_back(p50);
-      s.sd100.push_back(p100);
-      s.psa50.push_back(w2 * p50);
-      s.psa100.push_back(w2 * p100);
-    }
+    double peak = 0.0;
+    for (double u : sdof_displacement(g, t, options)) peak = std::max(peak, std::abs(u));
+    const double w = 2.0 * std::numbers::pi / t;
+    s.sd.push_back(peak);
+    s.psa.push_back(w * w * peak);
   }
   return s;
+}
+
+RotDSpectrum rotd_spectrum(const Accelerogram& first, const Accelerogram& second,
+                           const std::vector<double>& periods, const SpectrumOptions& options) {
+  if (first.time != second.time)
+    throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
+                                ": the two histories are not at the same times");
+  return rotd_of(first.name + "+" + second.name, periods,
+                 [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
+                   u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
+                   u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
+                 });
 }
 
 }  // namespace isopound::post

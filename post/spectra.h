@@ -35,6 +35,27 @@ std::vector<double> sdof_displacement(const GroundMotion& motion, double period,
 Spectrum response_spectrum(const GroundMotion& motion, const std::vector<double>& periods,
                            const SpectrumOptions& options = {});
 
+// An acceleration history at the times it was computed, joined by straight lines: a run's
+// analysis steps (step-accelerations.csv), of any length. Times ascending; a repeated time is a
+// jump (the value before, then the value after).
+struct Accelerogram {
+  std::string name;
+  std::vector<double> time;          // s
+  std::vector<double> acceleration;  // m/s^2
+};
+
+// The SDOF from rest over an accelerogram, exact for its straight lines: each step h is split
+// into max(oversample, ceil(kSamplesPerPeriod h / T)) equal sub-steps, so that the peak is
+// sampled at least kSamplesPerPeriod times per period (its error below 1 − cos(π/60) = 0.14 %).
+// Steps with ωh < 0.01 (impacts cut steps to microseconds) take one classical Runge–Kutta step
+// instead of the recurrence, whose closed form cancels there (local error (ωh)^5/120 < 1e-12).
+// u at t_0 and at the end of every sub-step.
+inline constexpr double kSamplesPerPeriod = 60.0;
+std::vector<double> sdof_displacement(const Accelerogram& history, double period,
+                                      const SpectrumOptions& options);
+Spectrum response_spectrum(const Accelerogram& history, const std::vector<double>& periods,
+                           const SpectrumOptions& options = {});
+
 // Statistics of a set of spectra (same periods) in log space, per period, since spectral ordinates
 // are about lognormal and a band must stay positive: median = exp(mean of ln x), sigma_ln = the
 // sample standard deviation of ln x, and the band median exp(-/+ sigma_ln) = exp(mean ln -/+
@@ -59,6 +80,10 @@ struct RotDSpectrum {
   std::vector<double> psa50, psa100;  // m/s^2
 };
 RotDSpectrum rotd_spectrum(const GroundMotion& first, const GroundMotion& second,
+                           const std::vector<double>& periods, const SpectrumOptions& options = {});
+// The same for two accelerograms at the same times (a plan point's x and y; std::invalid_argument
+// otherwise).
+RotDSpectrum rotd_spectrum(const Accelerogram& first, const Accelerogram& second,
                            const std::vector<double>& periods, const SpectrumOptions& options = {});
 
 }  // namespace isopound::post

@@ -32,6 +32,7 @@
 #include "solver/io/report.h"
 #include "solver/io/report3d.h"
 #include "solver/io/report_modes2d.h"
+#include "solver/io/step_accelerations.h"
 #include "solver/structures/building2d.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/isolator.h"
@@ -100,6 +101,13 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
   }
   const std::string events = (fs::path(out_dir) / "contact_events.csv").string();
   fs::remove(events);  // a stale log of an earlier run would be read as this run's
+  // Exact floor spectra (output.floor_spectra): every step's accelerations; a stale file would be
+  // read as this run's.
+  const std::string steps = (fs::path(out_dir) / StepAccelerationWriter::kFileName).string();
+  fs::remove(steps);
+  std::unique_ptr<StepAccelerationWriter> step_writer;
+  if (config.output.floor_spectra && !ensemble_options)
+    step_writer = std::make_unique<StepAccelerationWriter>(steps);
   JobResult job;
   std::optional<EnsembleResult> ensemble;
   try {
@@ -108,16 +116,19 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
       ensemble = run_ensemble(config, *ensemble_options, writer.get(), std::ref(progress), events);
       job = std::move(ensemble->member0);
     } else {
-      job = run_job(config, writer.get(), std::ref(progress), events);
+      job = run_job(config, writer.get(), std::ref(progress), events, step_writer.get());
     }
   } catch (...) {
     // No partial histories.csv from a run that failed (it would look like a result); the event
     // log is kept: it shows the contacts up to the failure.
     writer.reset();
     if (!histories.empty()) fs::remove(histories);
+    step_writer.reset();
+    fs::remove(steps);
     throw;
   }
   if (writer) writer->close();
+  if (step_writer) step_writer->close();
   std::optional<UnobstructedResult> free_run;
   if (compare_unobstructed) free_run = run_unobstructed(config, job);
   if (ensemble) {
@@ -134,8 +145,12 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
     std::cout << "Wrote " << summary;
     if (!histories.empty()) std::cout << ", " << histories;
     if (fs::exists(events)) std::cout << ", " << events;
+    if (step_writer) std::cout << ", " << steps << " (" << step_writer->steps() << " steps)";
     if (ensemble) std::cout << ", " << (fs::path(out_dir) / "ensemble.csv").string();
     std::cout << '\n';
+    if (config.output.floor_spectra && ensemble)
+      std::cout << "note: output.floor_spectra is not written for an ensemble; floor-spectra "
+                   "uses the histories' rows\n";
   } else if (ensemble) {
     const std::string warning = ensemble_warning(*ensemble, *ensemble_options);
     if (!warning.empty()) std::cerr << "isopound: " << warning << '\n';
@@ -254,8 +269,10 @@ int run_demo(const std::string& out_dir, bool quiet, bool pictures) {
     }
   if (!quiet) {
     const fs::path dir(out_dir);
-    std::printf("Results:    %s  (summary.json, histories.csv, contact_events.csv, model.yaml)\n",
-                dir.string().c_str());
+    std::printf(
+        "Results:    %s  (summary.json, histories.csv, step-accelerations.csv, "
+        "contact_events.csv, model.yaml)\n",
+        dir.string().c_str());
     std::printf(
         "Pictures:   %s  (time_histories, trajectory, contacts, hysteresis, floor-spectra .png)\n",
         dir.string().c_str());

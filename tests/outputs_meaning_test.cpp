@@ -130,6 +130,67 @@ ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8
     ASSERT_EQ(h.values[k * cols], static_cast<double>(k) * 0.007) << "row " << k;
 }
 
+// Counts and 0/1 states change only where a step ends (an onset ends its step): a row inside a
+// step holds them at the step's start. Interpolated, XY-5's wall contacts read in_contact
+// 0.924 at 4.4604 s (12 such values to 4.6 s with rows every 0.7 ms), and a count could read
+// 6.36 impacts. Every such column must hold integers, and a count must never decrease.
+void expect_counts_and_states_held(const JobResult& job) {
+  const History& h = job.analysis.history;
+  const std::size_t cols = h.columns.size();
+  int count_columns = 0, state_columns = 0;
+  for (const auto& e : job.model.elements)
+    for (int k = 0; k < e->output_count(); ++k) {
+      const Element::OutputKind kind = e->output_kind(k);
+      if (kind == Element::OutputKind::kContinuous) continue;
+      const std::size_t c = static_cast<std::size_t>(
+          column(h, e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]"));
+      (kind == Element::OutputKind::kCount ? count_columns : state_columns) += 1;
+      double previous = 0.0;
+      for (std::size_t r = 0; r < h.rows(); ++r) {
+        const double v = h.values[r * cols + c];
+        ASSERT_EQ(v, std::round(v)) << h.columns[c] << " at " << h.values[r * cols] << " s";
+        if (kind == Element::OutputKind::kCount)
+          ASSERT_GE(v, previous) << h.columns[c] << " at " << h.values[r * cols] << " s";
+        else
+          ASSERT_TRUE(v == 0.0 || v == 1.0) << h.columns[c] << " at " << h.values[r * cols];
+        previous = v;
+      }
+    }
+  EXPECT_GT(count_columns, 0);
+}
+
+TEST(OutputSampling, CountsInsideAStepAreHeldNotInterpolated) {
+  ModelConfig m = load(R"(
+building:
+  name: main
+  base: {mass: 340 t}
+  floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
+  isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
+  walls: {gap: 5 cm, law: kelvin_voigt, k: 2500 kN/mm, e: 0.7, mass: 500 t}
+ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8 s}}
+)");
+  m.output.interval = 0.0007;  // rows inside the steps of every impact
+  const JobResult job = run_job(m);
+  expect_counts_and_states_held(job);
+  // And the last row's counts are the summary's.
+  const History& h = job.analysis.history;
+  for (const auto& e : job.model.elements)
+    if (e->output_count() > 2 && e->output_name(2) == "impacts") {
+      const int c = column(h, e->label() + " impacts [-]");
+      EXPECT_EQ(h.values[(h.rows() - 1) * h.columns.size() + static_cast<std::size_t>(c)],
+                e->output(2));
+      EXPECT_GT(e->output(2), 0.0) << e->label();
+    }
+}
+
+TEST(OutputSampling, ThreeDimensionalCountsAndSlipStatesAreHeld) {
+  ISOPOUND_REQUIRE_RECORDS();
+  ModelConfig m = test::load_shipped_config("3d-xy5.yaml");
+  m.analysis.t_end = 4.6;  // the first impacts on the walls, with friction
+  m.output.interval = 0.0007;
+  expect_counts_and_states_held(run_job(m));
+}
+
 // t_end before the record's end: the run says it stopped early; after it: clipped, said so.
 TEST(AnalysisEnd, EarlyStopAndClippedEndAreInSummaryJson) {
   ModelConfig m = two_storey("5 ms", 0.0);

@@ -605,7 +605,7 @@ const std::set<std::string>& not_numbers() {
       "stepping", "max_step_rule", "side", "sides", "bottoming", "friction_hysteresis",
       "bearing_stiffness", "column_coupling", "polar_moment_rule", "indentation", "overlap",
       "impact_count", "isolated", "p_delta", "friction", "keep_tension", "shear_check",
-      "strength_is_yield_force", "locate_events", "histories",
+      "strength_is_yield_force", "locate_events", "histories", "floor_spectra",
       // counts and indices
       "count", "level", "isolation_level", "modes", "column", "time_column", "max_halvings",
       "max_iterations"};

@@ -4,6 +4,7 @@
 
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -160,6 +161,75 @@ TEST(PostSpectra, RotD100IsTheMaximumOver180AnglesAndAtLeastRotD50) {
     EXPECT_LE(std::max(s1.sd[0], s2.sd[0]), r.sd100[k] * (1 + 1e-12));
   }
   std::filesystem::remove_all(dir);
+}
+
+// An accelerogram at irregular times (a run's analysis steps) drawing the same straight lines as
+// a uniform record: the record's samples, each 3rd interval split at 37 %, each 5th with two
+// points 0.1 µs and 0.2 µs in (the Runge–Kutta branch, ωh ~ 1e-6), each 7th sample repeated (a
+// zero-length step). At the record's sample times the SDOF displacement equals the uniform
+// recurrence's: both exact for the same lines, so to round-off (1e-9 of the peak allows the
+// ~600-step accumulation; Runge–Kutta's local error at ωh = 1e-6 is ~1e-32). Periods >= 0.75 s
+// take one sub-step per step (60 h / T <= 1), so the outputs are at the steps' ends.
+TEST(PostSpectra, AccelerogramAtIrregularStepsIntegratesTheSameStraightLines) {
+  const auto dir = test::scratch_dir("accelerogram");
+  const GroundMotion g = synthetic_record(dir, "c1", 0.4, 0.01, 6.0);
+  Accelerogram a{"split", {}, {}};
+  std::vector<std::size_t> at_sample;  // index in the output of each record sample
+  std::size_t outputs = 0;
+  const auto push = [&](double t, double v) {
+    if (!a.time.empty() && t > a.time.back()) ++outputs;  // a zero-length step adds no output
+    a.time.push_back(t);
+    a.acceleration.push_back(v);
+  };
+  const std::size_t n = g.acceleration.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * g.dt, v = g.acceleration[i];
+    push(t, v);
+    at_sample.push_back(outputs);
+    if (i % 7 == 0) push(t, v);
+    if (i + 1 == n) break;
+    const double slope = (g.acceleration[i + 1] - v) / g.dt;
+    if (i % 5 == 0)
+      for (double dt : {1e-7, 2e-7}) push(t + dt, v + slope * dt);
+    if (i % 3 == 0) push(t + 0.37 * g.dt, v + slope * 0.37 * g.dt);
+  }
+  for (double period : {0.75, 1.5, 3.0}) {
+    SCOPED_TRACE("T = " + std::to_string(period));
+    const std::vector<double> uniform = sdof_displacement(g, period, {});
+    const std::vector<double> irregular = sdof_displacement(a, period, {});
+    ASSERT_EQ(irregular.size(), outputs + 1);
+    double peak = 0.0, worst = 0.0;
+    for (double u : uniform) peak = std::max(peak, std::abs(u));
+    for (std::size_t i = 0; i < n; ++i)
+      worst = std::max(worst, std::abs(irregular[at_sample[i]] - uniform[i]));
+    EXPECT_LE(worst, 1e-9 * peak);
+    std::printf(
+        "[ spectra ] T %.2f s: irregular steps vs uniform, largest difference %.2e of "
+        "the peak\n",
+        period, worst / peak);
+    // The peaks: the irregular steps sample the same motion at more points (the inserted ones),
+    // so their peak is not lower, and higher by no more than the motion rises between two
+    // samples 10 ms apart (about 1 − cos(π h / T) ~ 2e-4 here: 1e-3 bounds it).
+    const Spectrum su = response_spectrum(g, {period}), si = response_spectrum(a, {period});
+    EXPECT_GE(si.sd[0], su.sd[0] * (1 - 1e-9));  // the trajectories agree to 1e-9
+    EXPECT_LE(si.sd[0], su.sd[0] * (1 + 1e-3));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// A long step under a constant acceleration a: the undamped SDOF u = −(a/ω²)(1 − cos ωt) peaks
+// at 2a/ω² at t = T/2. One step of 1 s at T = 0.1 s is split into 60 sub-steps per period, so the
+// peak is sampled where it is: SD = 2a/ω² to round-off, where the step's end alone (u(1 s) = 0)
+// would give 0.
+TEST(PostSpectra, AccelerogramPeakIsSampledWithinALongStep) {
+  const double a = 3.0, period = 0.1, w = 2 * kPi / period;
+  const Accelerogram g{"step", {0.0, 1.0}, {a, a}};
+  SpectrumOptions o;
+  o.damping = 0.0;
+  const Spectrum s = response_spectrum(g, {0.0, period}, o);
+  EXPECT_EQ(s.psa[0], a);
+  EXPECT_NEAR(s.sd[1], 2 * a / (w * w), 1e-9 * 2 * a / (w * w));
+  EXPECT_EQ(sdof_displacement(g, period, o).size(), 601u);  // 600 sub-steps
 }
 
 TEST(PostSpectra, StatisticsAreLogSpaceMedianAndSampleSigmaLn) {

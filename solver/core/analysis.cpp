@@ -104,12 +104,16 @@ std::string divergence_message(const Model& model, const NewmarkStepper& stepper
 // `dofs` DOFs from column first_u, their v right after). Newmark average acceleration (gamma 1/2,
 // beta 1/4) holds the acceleration at (a0 + a1) / 2 over the step, so v is linear in time and
 // u(t0 + tau) = u0 + tau (v0 + v(tau)) / 2, which is u1 at tau = h; the other columns (ground,
-// accelerations, forces) are interpolated linearly.
+// accelerations, forces) are interpolated linearly, but for the columns marked `held` (counts and
+// 0/1 states, Element::OutputKind), which change only where a step ends and keep their value at
+// the step's start.
 void history_row_between(const std::vector<double>& start, const std::vector<double>& end,
-                         std::size_t first_u, int dofs, double t, std::vector<double>& out) {
+                         const std::vector<char>& held, std::size_t first_u, int dofs, double t,
+                         std::vector<double>& out) {
   const double tau = t - start[0];
   const double s = tau / (end[0] - start[0]);
-  for (std::size_t c = 0; c < end.size(); ++c) out[c] = start[c] + s * (end[c] - start[c]);
+  for (std::size_t c = 0; c < end.size(); ++c)
+    out[c] = held[c] ? start[c] : start[c] + s * (end[c] - start[c]);
   out[0] = t;
   const std::size_t first_v = first_u + static_cast<std::size_t>(dofs);
   for (std::size_t i = 0; i < static_cast<std::size_t>(dofs); ++i)
@@ -254,8 +258,10 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
                                 ? (options.history_sink ? options.history_sink : &memory_history)
                                 : nullptr;
   std::vector<double> row, previous_row, sampled_row;  // this step's, the last step's, a grid row
+  std::vector<char> held_column;                       // counts and states (history_row_between)
   const std::size_t first_u_column = two_components ? 3 : 2;
-  if (sink) {
+  HistorySink* const step_sink = options.step_sink;
+  if (sink || step_sink) {
     std::vector<std::string> c = {"time [s]", "ground_acceleration [m/s2]"};
     if (two_components) c.push_back("ground_acceleration_y [m/s2]");
     const auto unit = [](const Dof& d, const char* translation, const char* rotation) {
@@ -266,8 +272,11 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     for (const Dof& d : model.dofs)
       c.push_back(d.label + " a_abs [" + unit(d, "m/s2", "rad/s2") + "]");
     for (const auto& e : model.elements)
-      for (int k = 0; k < e->output_count(); ++k)
+      for (int k = 0; k < e->output_count(); ++k) {
+        held_column.resize(c.size(), 0);
+        held_column.push_back(e->output_kind(k) != Element::OutputKind::kContinuous);
         c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");
+      }
     for (std::size_t s = 0; s < model.structures.size(); ++s) {
       if (!model.structures[s].has_base) continue;
       c.push_back(model.structures[s].name + " base_shear [N]");
@@ -275,10 +284,12 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         c.push_back(model.structures[s].name + " base_shear_y [N]");
     }
     for (const Story& st : res.stories) c.push_back(st.label + " shear [N]");
+    held_column.resize(c.size(), 0);
     row.resize(c.size());
     previous_row.resize(c.size());
     sampled_row.resize(c.size());
-    sink->begin(c);
+    if (sink) sink->begin(c);
+    if (step_sink) step_sink->begin(c);
   }
   long next_row = 0;  // index of the next output time, next_row * out_interval
   const double grid_tolerance = 1e-6 * H;
@@ -407,7 +418,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     max_in = std::max(max_in, std::abs(e_in) + initial_energy);
     max_err = std::max(max_err, std::abs(en.error));
 
-    if (sink) {
+    if (sink || step_sink) {
       double* r = row.data();
       *r++ = t;
       *r++ = ag.x;
@@ -422,6 +433,9 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         if (!model.structures[s].level_dofs_y.empty()) *r++ = base_shear_y_now[s];
       }
       std::copy(story_shear_now.begin(), story_shear_now.end(), r);
+      if (step_sink) step_sink->row(row.data(), row.size());
+    }
+    if (sink) {
       // Every grid time up to this step's end: the step's own state on the grid, else sampled
       // inside the step (t_k > previous_t: earlier grid times were written by earlier steps).
       for (double t_k = static_cast<double>(next_row) * out_interval; t_k <= t + grid_tolerance;
@@ -431,7 +445,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
           sink->row(row.data(), row.size());
           continue;
         }
-        history_row_between(previous_row, row, first_u_column, n, t_k, sampled_row);
+        history_row_between(previous_row, row, held_column, first_u_column, n, t_k, sampled_row);
         sink->row(sampled_row.data(), sampled_row.size());
       }
       row[0] = t;

@@ -135,6 +135,9 @@ struct RunOptions {
   std::vector<TrackedCoordinate> tracked;  // peaks in AnalysisResult::tracked
   // Histories go here when set (and output.histories); else into AnalysisResult::history.
   HistorySink* history_sink = nullptr;
+  // Every accepted step's row (the columns of the histories), at the step's own time: what exact
+  // floor spectra need (output.floor_spectra, solver/io/step_accelerations.h).
+  HistorySink* step_sink = nullptr;
   StepObserver* observer = nullptr;  // after every accepted step, when set
   // Called now and then (every 4096 accepted steps) with the analysed and the total time, s.
   std::function<void(double t, double total)> progress;

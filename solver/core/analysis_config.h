@@ -41,6 +41,9 @@ struct AnalysisConfig {
 struct OutputConfig {
   double interval = 0.0;  // s between rows of histories.csv; 0 = every record sample
   bool histories = true;
+  // Every accepted step's absolute accelerations (and the ground's) to step-accelerations.csv,
+  // from which isopound-post floor-spectra computes exact floor spectra (docs/floor-spectra.md).
+  bool floor_spectra = false;
 };
 
 }  // namespace isopound

@@ -93,6 +93,12 @@ class Element {
   virtual int output_count() const = 0;
   virtual std::string output_name(int i) const = 0;  // e.g. "force", unit in output_unit
   virtual std::string output_unit(int i) const = 0;
+  // How output i varies in time. A count (impacts, bottomings) or a 0/1 state (slipping,
+  // in_contact, yielded, shear_failed) changes only where a step ends (events end steps): a
+  // history row inside a step holds it at the step's start, where it interpolates the others
+  // (6.36 impacts is no number of impacts); summary.json writes a count as an integer.
+  enum class OutputKind { kContinuous, kCount, kState };
+  virtual OutputKind output_kind(int) const { return OutputKind::kContinuous; }
   virtual double output(int i) const = 0;
   // All outputs at once into out[0 .. output_count()) (the stepper calls this every step).
   virtual void outputs(double* out) const {

@@ -185,6 +185,10 @@ std::string ColumnLine::output_name(int i) const {
   return kNames[i];
 }
 
+Element::OutputKind ColumnLine::output_kind(int i) const {
+  return i == 1 ? OutputKind::kState : OutputKind::kContinuous;  // shear_failed
+}
+
 std::string ColumnLine::output_unit(int i) const {
   static const char* kUnits[kOutputs] = {"N", "-", "N m", "N m", "-", "-", "J"};
   return kUnits[i];

@@ -225,6 +225,10 @@ std::string ColumnLink::output_name(int i) const {
   return kNames[i];
 }
 
+Element::OutputKind ColumnLink::output_kind(int i) const {
+  return i == 9 ? OutputKind::kState : OutputKind::kContinuous;  // yielded
+}
+
 std::string ColumnLink::output_unit(int i) const {
   return kUnits[i];
 }

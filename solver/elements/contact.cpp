@@ -305,6 +305,10 @@ std::string Contact1D::output_unit(int i) const {
   return kUnits[i];
 }
 
+Element::OutputKind Contact1D::output_kind(int i) const {
+  return i == 2 || i == 7 ? OutputKind::kCount : OutputKind::kContinuous;  // impacts, bottomings
+}
+
 void Contact1D::outputs(double* out) const {
   out[0] = trial_.force;
   out[1] = std::max(trial_.delta, 0.0);

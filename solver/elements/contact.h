@@ -59,6 +59,7 @@ class Contact1D final : public Element {
   int output_count() const override { return bumper_ ? 9 : 6; }
   std::string output_name(int i) const override;
   std::string output_unit(int i) const override;
+  OutputKind output_kind(int i) const override;
   double output(int i) const override;
   void outputs(double* out) const override;
   const std::string& label() const override { return label_; }

@@ -632,6 +632,12 @@ std::string PolygonContact::output_unit(int i) const {
   return kUnits[i];
 }
 
+Element::OutputKind PolygonContact::output_kind(int i) const {
+  if (i == 4) return OutputKind::kCount;             // impacts
+  if (i == 6 || i == 11) return OutputKind::kState;  // slipping, in_contact
+  return OutputKind::kContinuous;
+}
+
 void PolygonContact::outputs(double* out) const {
   const State& T = trial_;
   out[0] = T.normal;

@@ -127,6 +127,7 @@ class PolygonContact final : public Element {
   int output_count() const override { return kOutputCount; }
   std::string output_name(int i) const override;
   std::string output_unit(int i) const override;
+  OutputKind output_kind(int i) const override;
   double output(int i) const override;
   void outputs(double* out) const override;
   const std::string& label() const override { return label_; }

@@ -38,6 +38,10 @@ std::string StoryLink::output_name(int i) const {
   return kNames[i];
 }
 
+Element::OutputKind StoryLink::output_kind(int i) const {
+  return i == 4 ? OutputKind::kState : OutputKind::kContinuous;  // yielded
+}
+
 std::string StoryLink::output_unit(int i) const {
   static const char* kUnits[] = {"N", "m", "-", "J", "-"};
   return kUnits[i];

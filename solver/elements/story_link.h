@@ -27,6 +27,7 @@ class StoryLink final : public UniaxialLink {
   int output_count() const override { return 5; }
   std::string output_name(int i) const override;
   std::string output_unit(int i) const override;
+  OutputKind output_kind(int i) const override;
   double output(int i) const override;
   void outputs(double* out) const override {
     UniaxialLink::outputs(out);

@@ -223,6 +223,12 @@ std::string StruckColumn::output_name(int i) const {
   return kNames[i - c];
 }
 
+Element::OutputKind StruckColumn::output_kind(int i) const {
+  const int c = contact_.output_count();
+  if (i < c) return contact_.output_kind(i);
+  return i == c + 1 ? OutputKind::kState : OutputKind::kContinuous;  // shear_failed
+}
+
 std::string StruckColumn::output_unit(int i) const {
   const int c = contact_.output_count();
   if (i < c) return contact_.output_unit(i);

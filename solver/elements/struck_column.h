@@ -56,6 +56,7 @@ class StruckColumn final : public Element {
   int output_count() const override { return contact_.output_count() + kColumnOutputs; }
   std::string output_name(int i) const override;
   std::string output_unit(int i) const override;
+  OutputKind output_kind(int i) const override;
   double output(int i) const override;
   const std::string& label() const override { return label_; }
 

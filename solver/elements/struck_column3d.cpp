@@ -436,6 +436,12 @@ std::string StruckColumn3D::output_name(int i) const {
   return i < c ? contact_.output_name(i) : kNames[i - c];
 }
 
+Element::OutputKind StruckColumn3D::output_kind(int i) const {
+  const int c = contact_.output_count();
+  if (i < c) return contact_.output_kind(i);
+  return i == c + 1 ? OutputKind::kState : OutputKind::kContinuous;  // shear_failed
+}
+
 std::string StruckColumn3D::output_unit(int i) const {
   const int c = contact_.output_count();
   return i < c ? contact_.output_unit(i) : kUnits[i - c];

@@ -500,9 +500,10 @@ AnalysisConfig read_analysis(const InputNode& node, bool three_d) {
 }
 
 OutputConfig read_output(const InputNode& node) {
-  node.expect_keys({"interval", "histories"});
+  node.expect_keys({"interval", "histories", "floor_spectra"});
   OutputConfig o;
   node.read_boolean("histories", o.histories);
+  node.read_boolean("floor_spectra", o.floor_spectra);
   if (o.histories) node.read_quantity("interval", dim::kTime, Bound::kNonNegative, o.interval);
   return o;
 }

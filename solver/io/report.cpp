@@ -365,7 +365,7 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
     json je;
     je["label"] = el.label();
     for (int k = 0; k < el.output_count(); ++k) {
-      if (el.output_name(k) == "impacts" || el.output_name(k) == "bottomings") {  // counts
+      if (el.output_kind(k) == Element::OutputKind::kCount) {
         je[el.output_name(k)] = static_cast<long>(std::lround(r.element_outputs[e][k].value));
         continue;
       }

@@ -152,7 +152,8 @@ void check_step_against_record(const AnalysisConfig& analysis, const GroundMotio
 }
 
 JobResult run_job(const ModelConfig& config, HistorySink* history_sink,
-                  std::function<void(double, double)> progress, const std::string& event_log) {
+                  std::function<void(double, double)> progress, const std::string& event_log,
+                  HistorySink* step_sink) {
   JobResult job;
   job.motion = load_ground_motion(config.ground_motion, !config.structures3d.empty());
   check_step_against_record(config.analysis, job.motion);
@@ -160,6 +161,7 @@ JobResult run_job(const ModelConfig& config, HistorySink* history_sink,
   job.model = build_model(config);
   RunOptions options = run_options(config);
   options.history_sink = history_sink;
+  options.step_sink = step_sink;
   options.progress = std::move(progress);
   ContactEventLog log(job.model, event_log);
   if (!log.empty()) options.observer = &log;

@@ -37,9 +37,10 @@ struct JobResult {
 // `history_sink` receives the history rows (else they stay in the result); `progress` see
 // RunOptions.
 // `event_log`: where contact_events.csv goes for a model with polygon contacts ("" = nowhere).
+// `step_sink` receives the row of every accepted step (RunOptions::step_sink).
 JobResult run_job(const ModelConfig& config, HistorySink* history_sink = nullptr,
                   std::function<void(double, double)> progress = {},
-                  const std::string& event_log = "");
+                  const std::string& event_log = "", HistorySink* step_sink = nullptr);
 
 // A contact of the pounding model and how far its gap closes in the unobstructed run.
 struct ContactGap {
