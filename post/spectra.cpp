@@ -114,10 +114,29 @@ void check(const GroundMotion& motion, double period, const SpectrumOptions& opt
   if (options.oversample < 1) throw std::invalid_argument("oversample must be >= 1");
 }
 
-double pga_of(const GroundMotion& motion) {
-  double m = 0.0;
-  for (double a : motion.acceleration) m = std::max(m, std::abs(a));
-  return m;
+// SD and PSA of a GroundMotion or an Accelerogram at each period; T = 0: SD 0 and PSA = the peak
+// |a| (PGA).
+template <class History>
+Spectrum spectrum_of(const History& history, const std::vector<double>& periods,
+                     const SpectrumOptions& options) {
+  Spectrum s;
+  s.name = history.name;
+  for (double t : periods) {
+    s.period.push_back(t);
+    if (t == 0.0) {
+      double pga = 0.0;
+      for (double a : history.acceleration) pga = std::max(pga, std::abs(a));
+      s.sd.push_back(0.0);
+      s.psa.push_back(pga);
+      continue;
+    }
+    double peak = 0.0;
+    for (double u : sdof_displacement(history, t, options)) peak = std::max(peak, std::abs(u));
+    const double w = 2.0 * std::numbers::pi / t;
+    s.sd.push_back(peak);
+    s.psa.push_back(w * w * peak);
+  }
+  return s;
 }
 
 }  // namespace
@@ -156,22 +175,7 @@ std::vector<double> sdof_displacement(const GroundMotion& motion, double period,
 
 Spectrum response_spectrum(const GroundMotion& motion, const std::vector<double>& periods,
                            const SpectrumOptions& options) {
-  Spectrum s;
-  s.name = motion.name;
-  for (double t : periods) {
-    s.period.push_back(t);
-    if (t == 0.0) {
-      s.sd.push_back(0.0);
-      s.psa.push_back(pga_of(motion));
-      continue;
-    }
-    double peak = 0.0;
-    for (double u : sdof_displacement(motion, t, options)) peak = std::max(peak, std::abs(u));
-    const double w = 2.0 * std::numbers::pi / t;
-    s.sd.push_back(peak);
-    s.psa.push_back(w * w * peak);
-  }
-  return s;
+  return spectrum_of(motion, periods, options);
 }
 
 SpectrumStatistics spectrum_statistics(const std::vector<Spectrum>& spectra) {
@@ -263,24 +267,7 @@ std::vector<double> sdof_displacement(const Accelerogram& g, double period,
 
 Spectrum response_spectrum(const Accelerogram& g, const std::vector<double>& periods,
                            const SpectrumOptions& options) {
-  Spectrum s;
-  s.name = g.name;
-  for (double t : periods) {
-    s.period.push_back(t);
-    if (t == 0.0) {
-      double pga = 0.0;
-      for (double a : g.acceleration) pga = std::max(pga, std::abs(a));
-      s.sd.push_back(0.0);
-      s.psa.push_back(pga);
-      continue;
-    }
-    double peak = 0.0;
-    for (double u : sdof_displacement(g, t, options)) peak = std::max(peak, std::abs(u));
-    const double w = 2.0 * std::numbers::pi / t;
-    s.sd.push_back(peak);
-    s.psa.push_back(w * w * peak);
-  }
-  return s;
+  return spectrum_of(g, periods, options);
 }
 
 RotDSpectrum rotd_spectrum(const Accelerogram& first, const Accelerogram& second,

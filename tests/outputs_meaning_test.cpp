@@ -109,9 +109,9 @@ TEST(OutputSampling, RowsInsideAStepFollowTheNewmarkSolution) {
   EXPECT_LT(error_newmark, error_linear);
 }
 
-// Adaptive stepping with contacts (steps cut at events, of any length): still k * interval.
-TEST(OutputSampling, AdaptiveSteppingWithImpactsStaysOnTheGrid) {
-  ModelConfig m = load(R"(
+// A 3-storey isolated building pounding Kelvin-Voigt moat walls 5 cm away under an 8 s pulse.
+ModelConfig pounding_three_storey() {
+  return load(R"(
 building:
   name: main
   base: {mass: 340 t}
@@ -120,6 +120,11 @@ building:
   walls: {gap: 5 cm, law: kelvin_voigt, k: 2500 kN/mm, e: 0.7, mass: 500 t}
 ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8 s}}
 )");
+}
+
+// Adaptive stepping with contacts (steps cut at events, of any length): still k * interval.
+TEST(OutputSampling, AdaptiveSteppingWithImpactsStaysOnTheGrid) {
+  ModelConfig m = pounding_three_storey();
   m.output.interval = 0.007;
   const JobResult job = run_job(m);
   const History& h = job.analysis.history;
@@ -160,15 +165,7 @@ void expect_counts_and_states_held(const JobResult& job) {
 }
 
 TEST(OutputSampling, CountsInsideAStepAreHeldNotInterpolated) {
-  ModelConfig m = load(R"(
-building:
-  name: main
-  base: {mass: 340 t}
-  floors: {count: 3, mass: 340 t, roof_mass: 250 t, stiffness: 600 MN/m, height: 3.2 m}
-  isolator: {model: bouc_wen, Tb: 2 s, QW: 5 %, uy: 1 cm}
-  walls: {gap: 5 cm, law: kelvin_voigt, k: 2500 kN/mm, e: 0.7, mass: 500 t}
-ground_motion: {pulse: {amplitude: 0.8 m/s, period: 1.5 s, dt: 5 ms, duration: 8 s}}
-)");
+  ModelConfig m = pounding_three_storey();
   m.output.interval = 0.0007;  // rows inside the steps of every impact
   const JobResult job = run_job(m);
   expect_counts_and_states_held(job);
