@@ -36,6 +36,12 @@ struct Recurrence {
     Cp = (-1.0 / dt + e * ((w / s1 + xi / (dt * s1)) * sn + cs / dt)) / k;
     Dp = (1.0 - e * (xi / s1 * sn + cs)) / (k * dt);
   }
+  // One step from (u, v) under p linear from p0 to p1.
+  void advance(double& u, double& v, double p0, double p1) const {
+    const double un = A * u + B * v + C * p0 + D * p1;
+    v = Ap * u + Bp * v + Cp * p0 + Dp * p1;
+    u = un;
+  }
 };
 
 // One classical Runge–Kutta step of u'' = p(τ) − 2ξω u' − ω² u with p linear from p0 to p1 over h:
@@ -105,13 +111,18 @@ RotDSpectrum rotd_of(
   return s;
 }
 
-void check(const GroundMotion& motion, double period, const SpectrumOptions& options) {
-  if (!(motion.dt > 0.0) || motion.acceleration.size() < 2)
-    throw std::invalid_argument("record " + motion.name + ": needs dt > 0 and 2 samples or more");
+// The period and options of one SDOF, for a record or an accelerogram.
+void check(double period, const SpectrumOptions& options) {
   if (!(period > 0.0)) throw std::invalid_argument("period must be > 0");
   if (!(options.damping >= 0.0 && options.damping < 1.0))
     throw std::invalid_argument("damping ratio must be in [0, 1)");
   if (options.oversample < 1) throw std::invalid_argument("oversample must be >= 1");
+}
+
+void check(const GroundMotion& motion, double period, const SpectrumOptions& options) {
+  if (!(motion.dt > 0.0) || motion.acceleration.size() < 2)
+    throw std::invalid_argument("record " + motion.name + ": needs dt > 0 and 2 samples or more");
+  check(period, options);
 }
 
 // SD and PSA of a GroundMotion or an Accelerogram at each period; T = 0: SD 0 and PSA = the peak
@@ -164,9 +175,7 @@ std::vector<double> sdof_displacement(const GroundMotion& motion, double period,
     for (int j = 0; j < m; ++j) {
       // p = -a_g, linear over the sub-step (the same straight line as over the record step).
       const double p0 = -(a0 + (a1 - a0) * j / m), p1 = -(a0 + (a1 - a0) * (j + 1) / m);
-      const double un = r.A * ui + r.B * vi + r.C * p0 + r.D * p1;
-      vi = r.Ap * ui + r.Bp * vi + r.Cp * p0 + r.Dp * p1;
-      ui = un;
+      r.advance(ui, vi, p0, p1);
       u[++k] = ui;
     }
   }
@@ -231,10 +240,7 @@ std::vector<double> sdof_displacement(const Accelerogram& g, double period,
                                       const SpectrumOptions& options) {
   if (g.time.size() != g.acceleration.size() || g.time.size() < 2)
     throw std::invalid_argument(g.name + ": needs as many times as accelerations, 2 or more");
-  if (!(period > 0.0)) throw std::invalid_argument("period must be > 0");
-  if (!(options.damping >= 0.0 && options.damping < 1.0))
-    throw std::invalid_argument("damping ratio must be in [0, 1)");
-  if (options.oversample < 1) throw std::invalid_argument("oversample must be >= 1");
+  check(period, options);
   const double w = 2.0 * std::numbers::pi / period, xi = options.damping;
   std::vector<double> u{0.0};
   u.reserve(g.time.size());
@@ -252,13 +258,10 @@ std::vector<double> sdof_displacement(const Accelerogram& g, double period,
     if (!small && hs != h_cached) r.emplace(w, xi, hs), h_cached = hs;
     for (int j = 0; j < m; ++j) {
       const double p0 = -(a0 + (a1 - a0) * j / m), p1 = -(a0 + (a1 - a0) * (j + 1) / m);
-      if (small) {
+      if (small)
         runge_kutta_step(w, xi, hs, p0, p1, ui, vi);
-      } else {
-        const double un = r->A * ui + r->B * vi + r->C * p0 + r->D * p1;
-        vi = r->Ap * ui + r->Bp * vi + r->Cp * p0 + r->Dp * p1;
-        ui = un;
-      }
+      else
+        r->advance(ui, vi, p0, p1);
       u.push_back(ui);
     }
   }

@@ -271,9 +271,9 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     for (const Dof& d : model.dofs) c.push_back(d.label + " v [" + unit(d, "m/s", "rad/s") + "]");
     for (const Dof& d : model.dofs)
       c.push_back(d.label + " a_abs [" + unit(d, "m/s2", "rad/s2") + "]");
+    held_column.assign(c.size(), 0);  // time, ground, u, v, a_abs
     for (const auto& e : model.elements)
       for (int k = 0; k < e->output_count(); ++k) {
-        held_column.resize(c.size(), 0);
         held_column.push_back(e->output_kind(k) != Element::OutputKind::kContinuous);
         c.push_back(e->label() + " " + e->output_name(k) + " [" + e->output_unit(k) + "]");
       }
@@ -284,7 +284,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
         c.push_back(model.structures[s].name + " base_shear_y [N]");
     }
     for (const Story& st : res.stories) c.push_back(st.label + " shear [N]");
-    held_column.resize(c.size(), 0);
+    held_column.resize(c.size(), 0);  // base and storey shears
     row.resize(c.size());
     previous_row.resize(c.size());
     sampled_row.resize(c.size());
