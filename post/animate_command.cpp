@@ -75,6 +75,8 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   if (a.exaggeration < 0.0 || (a.exaggeration > 0.0 && a.exaggeration < 1.0) ||
       !std::isfinite(a.exaggeration))
     throw BadInput("--exaggerate: must be >= 1 (0: automatic)");
+  if (a.view_scale < 0.0 || !std::isfinite(a.view_scale))
+    throw BadInput("--view-scale: must be > 0 (0: automatic)");
   const RunData run = load_run(dir, model);
   const fs::path out_dir = out.empty() ? fs::path(dir) / "animation" : fs::path(out);
   fs::create_directories(out_dir);
@@ -95,7 +97,9 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   std::vector<std::string> files;
   std::fflush(stdout);
   Progress progress("frames", line.times.size());
-  double extent = 0.0;  // the drawing's size, for the automatic exaggeration
+  double extent = 0.0;         // the drawing's size, for the automatic exaggeration and scale
+  double largest = 0.0;        // m, the largest displacement of a point in any frame
+  std::size_t in_contact = 0;  // frames with a contact cell
   for (std::size_t k = 0; k < line.times.size(); ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%06zu.vtu", k);
@@ -107,6 +111,14 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
         for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
       for (int i = 0; i < 3; ++i) extent = std::max(extent, hi[i] - lo[i]);
     }
+    for (const MeshArray& d : frame.point_data)
+      if (d.name == "displacement")
+        for (std::size_t i = 0; i + 2 < d.values.size(); i += 3)
+          largest = std::max(largest, std::hypot(d.values[i], d.values[i + 1], d.values[i + 2]));
+    for (const MeshArray& b : frame.cell_data)
+      if (b.name == "block")
+        in_contact +=
+            std::count(b.values.begin(), b.values.end(), static_cast<double>(Block::kContact)) > 0;
     write_vtu(frame, (out_dir / name).string());
     files.push_back(name);
     progress.tick(k + 1);
@@ -116,7 +128,9 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   ViewScriptOptions view;
   view.absolute_dir = fs::absolute(out_dir).lexically_normal().string();
   view.three_d = run.three_d;
-  view.scale = opt.scale;
+  view.frame_scale = opt.scale;
+  view.frame_gaps_scaled = !run.three_d;
+  view.scale = a.view_scale > 0.0 ? a.view_scale : automatic_scale(largest, extent);
   view.fps = line.fps;
   view.force_length = opt.force_length;
   view.peaks = contact_peaks(run);
@@ -134,8 +148,17 @@ int run_animate(const std::string& dir, const std::string& out, const std::strin
   else if (line.episodes == 0)
     std::printf("; no contact episode");
   else
-    std::printf("; %zu contact episodes, %d frames each", line.episodes, line.frames_per_episode);
-  std::printf("; scale %g)\n", opt.scale);
+    std::printf("; %zu contact episodes, %d frames each, slow motion up to x%.0f", line.episodes,
+                line.frames_per_episode,
+                *std::max_element(line.slow_motion.begin(), line.slow_motion.end()));
+  std::printf("; %zu show a contact; scale %g)\n", in_contact, opt.scale);
+  std::printf(
+      "view.py draws displacements x %g (the largest, %.3g m, as %.2g m of the site's %.3g m",
+      view.scale, largest, view.scale * largest, extent);
+  if (a.view_scale > 0.0) std::printf(", --view-scale");
+  const ForceUnit unit = force_unit(view.peaks);
+  std::printf("), contact overlaps x %g, contact forces in %s (peak %.3g %s)\n", view.exaggeration,
+              unit.name, view.peaks.normal_force / unit.newtons, unit.name);
   std::printf("Wrote %s/view.py: open it with  paraview --script=%s/view.py\n",
               out_dir.string().c_str(), out_dir.string().c_str());
   if (a.preview >= 0.0) {

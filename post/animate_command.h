@@ -15,6 +15,7 @@ struct AnimateArgs {
   TimelineOptions timeline;
   double preview = -1.0;      // s, < 0: none
   double exaggeration = 0.0;  // overlap depth drawn × this in view.py; 0: automatic
+  double view_scale = 0.0;    // displacements drawn × this in view.py; 0: automatic
   std::string render;         // "", png, video or a .png / .avi / .ogv path
 };
 

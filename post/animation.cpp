@@ -21,8 +21,11 @@ class FrameBuilder {
     displacement_.insert(displacement_.end(), {u, 0.0, 0.0});
     acceleration_.insert(acceleration_.end(), {a, 0.0, 0.0});
     depth_offset_.insert(depth_offset_.end(), {0.0, 0.0, 0.0});
+    gap_offset_.insert(gap_offset_.end(), {gap_, 0.0, 0.0});
     return static_cast<int>(mesh_.points.size()) - 1;
   }
+  // The gap offset (animation.h) of the points added from now on.
+  void set_gap_offset(double x) { gap_ = x; }
   void cell(int type, std::vector<int> pts, Block block, double drift = 0.0, double bearing = 0.0,
             double contact_fx = 0.0, double penetration = 0.0) {
     mesh_.cells.push_back({type, std::move(pts)});
@@ -46,7 +49,8 @@ class FrameBuilder {
   FrameMesh finish() {
     mesh_.point_data = {{"displacement", 3, std::move(displacement_)},
                         {"absolute_acceleration", 3, std::move(acceleration_)},
-                        {"contact_depth_offset", 3, std::move(depth_offset_)}};
+                        {"contact_depth_offset", 3, std::move(depth_offset_)},
+                        {"gap_offset", 3, std::move(gap_offset_)}};
     mesh_.cell_data = {{"block", 1, std::move(block_)},
                        {"drift_ratio", 1, std::move(drift_)},
                        {"bearing_force", 1, std::move(bearing_)},
@@ -58,8 +62,9 @@ class FrameBuilder {
 
  private:
   FrameMesh mesh_;
-  std::vector<double> displacement_, acceleration_, depth_offset_, block_, drift_, bearing_,
-      contact_, penetration_, normal_;
+  double gap_ = 0.0;
+  std::vector<double> displacement_, acceleration_, depth_offset_, gap_offset_, block_, drift_,
+      bearing_, contact_, penetration_, normal_;
 };
 
 // Drawn x of a structure's centre line at rest.
@@ -158,6 +163,7 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
 
   for (const Structure& s : run.structures) {
     const double xc = centre_of(s, o);
+    f.set_gap_offset(s.neighbour ? s.side * s.gap : 0.0);  // d(centre_of)/d(scale)
     // Slabs.
     for (const Level& l : s.levels) {
       const double u = u_of(l), x = xc + S * u;
@@ -216,9 +222,11 @@ FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& 
   const auto wall_u = [&](const Wall& w) { return w.u >= 0 ? value_at(run, w.u, t) : 0.0; };
   for (const Wall& w : run.walls) {
     const double u = wall_u(w), face = w.side * (W / 2 + S * w.gap) + S * u;
+    f.set_gap_offset(w.side * w.gap);
     f.rect(std::min(face, face + w.side * 1.0), std::max(face, face + w.side * 1.0),
            w.elevation - 1.5, w.elevation + 1.0, u, 0.0, Block::kWall);
   }
+  f.set_gap_offset(0.0);  // contact cells move with the slab
   // Contacts in contact: the overlap between the slab edge and the face it hits, with the force
   // on the (first) building as a vector and the penetration.
   for (const ElementColumns& c : run.contacts) {

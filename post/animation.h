@@ -60,13 +60,18 @@ struct AnimationOptions {
 // The frame at time t (histories interpolated linearly between rows); a 3D run's frame is
 // animation_frame3d's (animation3d.h). 2D arrays:
 //   point data: displacement (3, m, true not scaled), absolute_acceleration (3, m/s^2),
-//               contact_depth_offset (3, m: see below)
+//               contact_depth_offset (3, m: see below), gap_offset (3, m: see below)
 //   cell data:  block, drift_ratio (columns), bearing_force (bearings, N), contact_force (3, N,
 //               on the body, contacts), penetration (contacts, m), normal_force (N, |F|)
 // Contact cells exist only in frames where that contact's force or penetration is > 0.
 // contact_depth_offset of a contact cell's point is its offset from the overlap's middle along
 // the contact normal (zero elsewhere): a viewer that moves every point by (X − 1) × this draws
 // the overlap X times deeper and nothing else changes (view.py's exaggeration).
+// gap_offset of a point of a wall or a neighbour is the gap that separates it from the building
+// at rest (zero elsewhere): a viewer that moves every point by (X − S) × (displacement +
+// gap_offset) draws the frame at displacement scale X with the gaps × X, so that bodies still
+// touch exactly when in contact (view.py's displacement scale). 3D frames draw gaps true (walls
+// are not moved by S): there the viewer moves by (X − 1) × gap_offset.
 FrameMesh animation_frame(const RunData& run, double t, const AnimationOptions& options);
 
 // A picture of one frame (x-z view, equal axes, coloured by block, with the time and the scale):

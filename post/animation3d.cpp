@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -31,9 +32,10 @@ class Builder3D {
  public:
   explicit Builder3D(double t) { mesh_.time = t; }
 
-  int point(P3 x, P3 displacement, P3 acceleration, P3 depth_offset = {}) {
+  int point(P3 x, P3 displacement, P3 acceleration, P3 depth_offset = {}, Vec2 gap = {}) {
     mesh_.points.push_back(x);
     displacement_.insert(displacement_.end(), displacement.begin(), displacement.end());
+    gap_offset_.insert(gap_offset_.end(), {gap.x, gap.y, 0.0});
     acceleration_.insert(acceleration_.end(), acceleration.begin(), acceleration.end());
     depth_offset_.insert(depth_offset_.end(), depth_offset.begin(), depth_offset.end());
     return static_cast<int>(mesh_.points.size()) - 1;
@@ -53,7 +55,8 @@ class Builder3D {
   FrameMesh finish() {
     mesh_.point_data = {{"displacement", 3, std::move(displacement_)},
                         {"absolute_acceleration", 3, std::move(acceleration_)},
-                        {"contact_depth_offset", 3, std::move(depth_offset_)}};
+                        {"contact_depth_offset", 3, std::move(depth_offset_)},
+                        {"gap_offset", 3, std::move(gap_offset_)}};
     mesh_.cell_data = {{"block", 1, std::move(block_)},
                        {"structure", 1, std::move(structure_)},
                        {"drift_ratio", 1, std::move(drift_)},
@@ -68,8 +71,8 @@ class Builder3D {
 
  private:
   FrameMesh mesh_;
-  std::vector<double> displacement_, acceleration_, depth_offset_, block_, structure_, drift_,
-      bearing_, contact_, normal_, tangential_, area_, penetration_;
+  std::vector<double> displacement_, acceleration_, depth_offset_, gap_offset_, block_, structure_,
+      drift_, bearing_, contact_, normal_, tangential_, area_, penetration_;
 };
 
 // A body's DOFs at time t (zero for walls and other fixed bodies).
@@ -77,6 +80,9 @@ struct BodyState {
   double u = 0, v = 0, theta = 0;        // m, m, rad
   double a_x = 0, a_y = 0, a_theta = 0;  // absolute accelerations, m/s2 and rad/s2
   int structure = -1;
+  // The gap offset of the body's points (animation.h): its separation at rest from the first
+  // structure, zero for that structure's own bodies.
+  Vec2 gap;
   // Displacement and absolute acceleration of the plan point p (DOFs at the plan origin).
   Vec2 displacement(Vec2 p) const { return {u - p.y * theta, v + p.x * theta}; }
   Vec2 acceleration(Vec2 p) const { return {a_x - p.y * a_theta, a_y + p.x * a_theta}; }
@@ -89,12 +95,35 @@ std::vector<BodyState> body_states(const RunData& run, double t) {
     for (const Level& l : run.structures[s].levels) {
       if (l.body < 0) continue;
       BodyState& b = states[l.body];
-      b = {at(l.u),       at(l.u_y),         at(l.theta),        at(l.a_abs),
-           at(l.a_abs_y), at(l.a_abs_theta), static_cast<int>(s)};
+      b = {at(l.u),       at(l.u_y),         at(l.theta),         at(l.a_abs),
+           at(l.a_abs_y), at(l.a_abs_theta), static_cast<int>(s), Vec2{}};
     }
+  // Gaps: every wall and every other structure is moved as a whole by its separation at rest
+  // from the first structure's slabs (the nearest of them).
+  const std::vector<PlanBody>& bodies = run.site.bodies;
+  std::string first;
+  for (const PlanBody& b : bodies)
+    if (b.role == "slab") {
+      first = b.structure;
+      break;
+    }
+  std::map<std::string, std::pair<double, Vec2>> separation;  // per structure: nearest, vector
+  for (const PlanBody& a : bodies) {
+    if (a.role != "slab" || a.structure != first) continue;
+    for (const PlanBody& b : bodies) {
+      if (b.structure == first || b.role == "rubber") continue;
+      const Separation sep = separation_of(a.polygon(), b.polygon());
+      auto [it, fresh] = separation.try_emplace(b.structure, sep.distance, sep.n_AB);
+      if (!fresh && sep.distance < it->second.first) it->second = {sep.distance, sep.n_AB};
+    }
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (const auto it = separation.find(bodies[i].structure);
+        it != separation.end() && it->second.first > 0.0)
+      states[i].gap = it->second.first * it->second.second;
   // Rubber strips move with the wall or slab they are glued to (listed after it).
-  for (std::size_t i = 0; i < run.site.bodies.size(); ++i)
-    if (const int owner = run.site.bodies[i].follows; owner >= 0) states[i] = states[owner];
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (const int owner = bodies[i].follows; owner >= 0) states[i] = states[owner];
   return states;
 }
 
@@ -133,7 +162,7 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
   };
   const auto point_of = [&](const BodyState& b, Vec2 p, double z) {
     const Vec2 d = b.displacement(p), a = b.acceleration(p);
-    return f.point(drawn(b, p, z), {d.x, d.y, 0.0}, {a.x, a.y, 0.0});
+    return f.point(drawn(b, p, z), {d.x, d.y, 0.0}, {a.x, a.y, 0.0}, {}, b.gap);
   };
 
   // Slabs and walls: extruded outlines (bottom and top polygons and a quad per side).
@@ -174,7 +203,9 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     v.block = Block::kColumn;
     v.structure = hi.structure;
     v.drift_ratio = std::hypot(d_hi.x - d_lo.x, d_hi.y - d_lo.y) / c.height;
-    const int bottom = point_of(lo, c.p_W, z_lo), top = point_of(hi, c.p_W, z_hi);
+    BodyState lo_moved = lo;  // a neighbour's ground end moves with its gap
+    lo_moved.gap = hi.gap;
+    const int bottom = point_of(lo_moved, c.p_W, z_lo), top = point_of(hi, c.p_W, z_hi);
     if (c.struck.label.empty()) {
       f.cell(3, {bottom, top}, v);
       continue;
@@ -182,7 +213,7 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     const NodeState n = node_state(run, c, states, t);
     const int node =
         f.point({c.p_W.x + S * n.d.x, c.p_W.y + S * n.d.y, z_lo + c.struck.node_height},
-                {n.d.x, n.d.y, 0.0}, {n.a.x, n.a.y, 0.0});
+                {n.d.x, n.d.y, 0.0}, {n.a.x, n.a.y, 0.0}, {}, hi.gap);
     f.cell(3, {bottom, node}, v);
     f.cell(3, {node, top}, v);
   }
@@ -191,7 +222,8 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
   // (isolated above a storey) to the underside of the base slab.
   for (const PlanBearing& b : run.site.bearings) {
     const BodyState& base = states[b.base];
-    const BodyState& lower = b.lower >= 0 ? states[b.lower] : ground;
+    BodyState lower = b.lower >= 0 ? states[b.lower] : ground;
+    lower.gap = base.gap;
     CellValues v;
     v.block = Block::kBearing;
     v.structure = base.structure;
@@ -248,7 +280,7 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
       // An overlap vertex's offset from the centroid along n (see animation.h).
       const double along_n = overlap ? (q.x - e->x_C) * n.x + (q.y - e->y_C) * n.y : 0.0;
       return f.point({q.x + (S - 1.0) * d.x, q.y + (S - 1.0) * d.y, z}, {d.x, d.y, 0.0},
-                     {acc.x, acc.y, 0.0}, {along_n * n.x, along_n * n.y, 0.0});
+                     {acc.x, acc.y, 0.0}, {along_n * n.x, along_n * n.y, 0.0}, A.gap);
     };
     const ConvexPolygon pa = run.site.bodies[ia].polygon().placed({A.u, A.v, A.theta});
     const Overlap ov = overlap_of(pa, *pb);

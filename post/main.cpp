@@ -375,6 +375,9 @@ int main(int argc, char** argv) {
   animate->add_option("--exaggerate", aa.exaggeration,
                       "view.py draws contact overlaps this many times deeper (default: automatic, "
                       "the deepest about 5 % of the drawing)");
+  animate->add_option("--view-scale", aa.view_scale,
+                      "view.py draws displacements this many times larger, gaps too (default: "
+                      "automatic, the largest 4 to 10 % of the site; SCALE at the top of view.py)");
   animate->add_option("--render", aa.render,
                       "also render through view.py with pvpython, headless: png | video | "
                       "FILE.avi | FILE.ogv");
@@ -455,6 +458,9 @@ int main(int argc, char** argv) {
   for (const std::string& w : warnings)
     std::fprintf(stderr, "isopound-post: warning: %s\n", w.c_str());
   aa.timeline.fps_given = animate->count("--fps") > 0;
+  // A --scale given is view.py's scale too, unless --view-scale says otherwise.
+  if (animate->count("--scale") > 0 && animate->count("--view-scale") == 0)
+    aa.view_scale = aa.frame.scale;
   aa.timeline.frames_per_episode_given = animate->count("--impact-frames") > 0;
   try {
     if (*spectra) return run_spectra(sa);

@@ -58,17 +58,28 @@ ContactPeaks contact_peaks(const RunData& run) {
   return p;
 }
 
-double automatic_exaggeration(const ContactPeaks& peaks, double drawn_depth_per_metre,
-                              double extent) {
-  const double drawn = peaks.penetration * drawn_depth_per_metre;
-  if (!(drawn > 0.0) || !(extent > 0.0)) return 1.0;
-  const double wanted = 0.05 * extent / drawn;
-  if (wanted <= 1.0) return 1.0;
-  // Round down to 1, 2 or 5 × 10^k: a factor a reader can take in at a glance.
+double nice_factor_below(double wanted) {
+  if (!(wanted > 1.0) || !std::isfinite(wanted)) return 1.0;
   const double decade = std::pow(10.0, std::floor(std::log10(wanted)));
   for (double m : {5.0, 2.0, 1.0})
     if (m * decade <= wanted) return m * decade;
   return decade;
+}
+
+double automatic_scale(double largest, double extent) {
+  if (!(largest > 0.0) || !(extent > 0.0)) return 1.0;
+  return nice_factor_below(0.1 * extent / largest);
+}
+
+double automatic_exaggeration(const ContactPeaks& peaks, double drawn_depth_per_metre,
+                              double extent) {
+  const double drawn = peaks.penetration * drawn_depth_per_metre;
+  if (!(drawn > 0.0) || !(extent > 0.0)) return 1.0;
+  return nice_factor_below(0.05 * extent / drawn);
+}
+
+ForceUnit force_unit(const ContactPeaks& peaks) {
+  return peaks.normal_force >= 1e6 ? ForceUnit{"MN", 1e6} : ForceUnit{"kN", 1e3};
 }
 
 std::string view_script(const ViewScriptOptions& o) {
@@ -77,11 +88,16 @@ std::string view_script(const ViewScriptOptions& o) {
   replace_all(text, "@ABSOLUTE_DIR@", python_escaped(o.absolute_dir));
   replace_all(text, "@THREE_D@", o.three_d ? "True" : "False");
   replace_all(text, "@SCALE@", number(o.scale));
+  replace_all(text, "@FRAME_SCALE@", number(o.frame_scale));
+  replace_all(text, "@FRAME_GAP_SCALE@", number(o.frame_gaps_scaled ? o.frame_scale : 1.0));
   replace_all(text, "@FPS@", number(o.fps));
   replace_all(text, "@EXAGGERATION@", number(o.exaggeration));
   replace_all(text, "@PEAK_NORMAL_FORCE@", number(o.peaks.normal_force));
   replace_all(text, "@PEAK_PENETRATION@", number(o.peaks.penetration));
   replace_all(text, "@FORCE_LENGTH@", number(o.force_length));
+  const ForceUnit unit = force_unit(o.peaks);
+  replace_all(text, "@FORCE_UNIT@", unit.name);
+  replace_all(text, "@NEWTONS_PER_UNIT@", number(unit.newtons));
   return text;
 }
 

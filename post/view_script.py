@@ -15,12 +15,19 @@ from paraview.simple import *  # noqa: F401,F403
 PVD = "@PVD@"
 ABSOLUTE_DIR = "@ABSOLUTE_DIR@"
 THREE_D = @THREE_D@
-SCALE = @SCALE@  # displacements drawn x SCALE in the frames
+# Displacements drawn x SCALE, gaps too (so that bodies touch exactly when in contact). Chosen by
+# `isopound-post animate` so that the largest displacement is drawn 4 to 10 % of the site's size
+# (--view-scale sets it); change it here.
+SCALE = @SCALE@
+FRAME_SCALE = @FRAME_SCALE@  # displacements drawn x FRAME_SCALE in the frames (animate --scale)
+FRAME_GAP_SCALE = @FRAME_GAP_SCALE@  # gaps drawn x this in the frames
 FPS = @FPS@  # regular frames per second of analysis time
 EXAGGERATION = @EXAGGERATION@  # contact overlap depth drawn x EXAGGERATION
 PEAK_NORMAL_FORCE = @PEAK_NORMAL_FORCE@  # N, the run's largest contact force
 PEAK_PENETRATION = @PEAK_PENETRATION@  # m
 FORCE_LENGTH = @FORCE_LENGTH@  # m, drawn length of the peak force arrow
+FORCE_UNIT = "@FORCE_UNIT@"  # contact forces shown in MN where the peak reaches 1 MN, else kN
+NEWTONS_PER_UNIT = @NEWTONS_PER_UNIT@
 
 BLOCKS = ["slab", "column", "bearing", "wall"]
 BLOCK_RGB = [[0.12, 0.47, 0.71], [0.25, 0.25, 0.25], [0.17, 0.63, 0.17], [0.72, 0.72, 0.70]]  # wall: concrete
@@ -56,8 +63,17 @@ def build(view):
     scene = GetAnimationScene()
     scene.PlayMode = "Snap To TimeSteps"
 
+    # Displacements x SCALE: the frames' points move by (SCALE - FRAME_SCALE) x their true
+    # displacement, and walls and neighbours by their gap at rest, so that gaps are drawn x SCALE.
+    moved = WarpByVector(registrationName="displacements x %g" % SCALE, Input=reader)
+    moved.Vectors = ["POINTS", "displacement"]
+    moved.ScaleFactor = SCALE - FRAME_SCALE
+    gaps = WarpByVector(registrationName="gaps x %g" % SCALE, Input=moved)
+    gaps.Vectors = ["POINTS", "gap_offset"]
+    gaps.ScaleFactor = SCALE - FRAME_GAP_SCALE
+
     # The overlap of two bodies is under a millimetre deep: stretch it along the contact normal.
-    warp = WarpByVector(registrationName="overlap depth x %g" % EXAGGERATION, Input=reader)
+    warp = WarpByVector(registrationName="overlap depth x %g" % EXAGGERATION, Input=gaps)
     warp.Vectors = ["POINTS", "contact_depth_offset"]
     warp.ScaleFactor = EXAGGERATION - 1.0
 
@@ -84,29 +100,29 @@ def build(view):
     rubber_display.DiffuseColor = RUBBER_RGB
 
     contact = threshold(warp, "contacts", 4, 4)
-    contact_kn = Calculator(registrationName="normal force in kN", Input=contact)
-    contact_kn.AttributeType = "Cell Data"
-    contact_kn.ResultArrayName = "F_N [kN]"
-    contact_kn.Function = "normal_force/1000"
-    contact_display = Show(contact_kn, view)
+    contact_force = Calculator(registrationName="normal force in " + FORCE_UNIT, Input=contact)
+    contact_force.AttributeType = "Cell Data"
+    contact_force.ResultArrayName = "F_N [%s]" % FORCE_UNIT
+    contact_force.Function = "normal_force/%g" % NEWTONS_PER_UNIT
+    contact_display = Show(contact_force, view)
     # Outlined thick: an overlap a few millimetres deep still shows at building scale.
     contact_display.Representation = "Surface With Edges"
     contact_display.EdgeColor = [0.8, 0.0, 0.0]
     contact_display.LineWidth = 4.0
     # Coloured without ColorBy, which rescales to the (often empty) first frame and warns.
-    force_lut = GetColorTransferFunction("F_N [kN]")
-    contact_display.ColorArrayName = ["CELLS", "F_N [kN]"]
+    force_lut = GetColorTransferFunction("F_N [%s]" % FORCE_UNIT)
+    contact_display.ColorArrayName = ["CELLS", "F_N [%s]" % FORCE_UNIT]
     contact_display.LookupTable = force_lut
     force_lut.AutomaticRescaleRangeMode = "Never"
-    top = max(PEAK_NORMAL_FORCE / 1e3, 1e-3)  # kN
+    top = max(PEAK_NORMAL_FORCE / NEWTONS_PER_UNIT, 1e-3)
     # Warm colours only (yellow at zero to dark red at the peak): a contact never looks like a
     # slab or a wall, whatever its force.
     force_lut.RGBPoints = [0.0, 1.0, 0.85, 0.0, 0.5 * top, 1.0, 0.35, 0.0, top, 0.8, 0.0, 0.0]
     force_lut.RescaleTransferFunction(0.0, top)
     bar = GetScalarBar(force_lut, view)
-    bar.Title = "contact F_N [kN]"
+    bar.Title = "contact F_N [%s]" % FORCE_UNIT
     bar.ComponentTitle = ""
-    bar.RangeLabelFormat = "%-#.3g"
+    bar.RangeLabelFormat = "%-.3g"
     contact_display.SetScalarBarVisibility(view, True)
 
     # Forces on the building as arrows; 3D frames carry the force on B (the wall or neighbour).
@@ -133,18 +149,20 @@ def build(view):
     clock_display.FontSize = 18
 
     note = Text(registrationName="scales")
-    note.Text = ("contact overlap depth drawn x %g   displacements x %g   arrows: contact force on "
-                 "the building, peak %.3g kN = %g m" % (EXAGGERATION, SCALE,
-                                                       PEAK_NORMAL_FORCE / 1e3, FORCE_LENGTH))
+    note.Text = ("displacements and gaps drawn x %g   contact overlap depth x %g   arrows: contact "
+                 "force on the building, peak %.3g %s = %g m"
+                 % (SCALE, EXAGGERATION, PEAK_NORMAL_FORCE / NEWTONS_PER_UNIT, FORCE_UNIT,
+                    FORCE_LENGTH))
     note_display = Show(note, view)
     note_display.WindowLocation = "Lower Left Corner"
-    note_display.FontSize = 12
-    return reader, contact, centres
+    note_display.FontSize = 14
+    return {"reader": reader, "contact": contact, "centres": centres, "moved": moved,
+            "gaps": gaps, "bar": bar, "lut": force_lut, "note": note}
 
 
-def place_camera(view, reader):
-    reader.UpdatePipeline(reader.TimestepValues[0] if reader.TimestepValues else 0.0)
-    x0, x1, y0, y1, z0, z1 = reader.GetDataInformation().GetBounds()
+def place_camera(view, reader, drawn):
+    drawn.UpdatePipeline(reader.TimestepValues[0] if reader.TimestepValues else 0.0)
+    x0, x1, y0, y1, z0, z1 = drawn.GetDataInformation().GetBounds()
     centre = [0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)]
     if THREE_D:  # from the south-west, 30 degrees above (the preview's view)
         direction = [-0.4967, -0.7094, 0.5]
@@ -188,11 +206,19 @@ def main():
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = args.size
     view.OrientationAxesVisibility = 1
-    reader, contact, centres = build(view)
-    place_camera(view, reader)
+    parts = build(view)
+    reader, contact, centres = parts["reader"], parts["contact"], parts["centres"]
+    place_camera(view, reader, parts["gaps"])
     scene = GetAnimationScene()
     times = list(reader.TimestepValues)
-    report = {"time_steps": times, "frames": []}
+    bar_range = parts["lut"].RGBPoints
+    report = {"time_steps": times, "frames": [],
+              "scale": SCALE,
+              "displacement_warp": parts["moved"].ScaleFactor,
+              "gap_warp": parts["gaps"].ScaleFactor,
+              "colour_bar": {"title": parts["bar"].Title,
+                             "range": [bar_range[0], bar_range[-4]]},
+              "note": parts["note"].Text}
     for t in args.time:
         scene.AnimationTime = t
         view.ViewTime = t

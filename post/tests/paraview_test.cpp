@@ -3,7 +3,9 @@
 // removal of an earlier animation's frames, and view.py in the real client (pvpython under a
 // private Xvfb): it loads, its time steps are the .pvd's, a frame inside an impact has contact
 // cells and the screenshot shows the contact colour where the contact is, and a frame outside
-// every impact shows neither.
+// every impact shows neither; view.py's displacement scale (the largest displacement drawn 2 to
+// 5 % of the site), the walls' gap offsets that keep bodies touching at that scale, and its
+// colour bar in MN; the GUI's packages (its toolbar icons need Qt's SVG support).
 //
 // pvpython: the tests that need it skip when it is not on PATH, unless ISOPOUND_REQUIRE_PARAVIEW
 // is set (.ci/run sets it; .ci/setup installs ParaView).
@@ -15,10 +17,12 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
@@ -370,6 +374,130 @@ TEST(PostParaView, ViewScriptLoadsInPvpythonWithTheRunsTimesAndShowsTheContactWh
   EXPECT_EQ(frame_out["contact_cells"].get<int>(), 0);
   const test::Image shot_out = test::read_png((out / "outside.png").string());
   EXPECT_EQ(warm_pixels_near(shot_out, px, py, 6), 0);
+}
+
+// A frame's points and one of its 3-component point arrays.
+struct FramePoints {
+  std::vector<std::array<double, 3>> points, values;
+};
+
+FramePoints frame_points(const fs::path& vtu, const char* array) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(vtu.string().c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  vtkDataArray* a = grid->GetPointData()->GetArray(array);
+  FramePoints out;
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    std::array<double, 3> p{}, v{};
+    grid->GetPoint(i, p.data());
+    if (a) a->GetTuple(i, v.data());
+    out.points.push_back(p);
+    out.values.push_back(v);
+  }
+  return out;
+}
+
+TEST(PostParaView, WallPointsCarryTheirGapSoThatAViewerScalesGapsWithDisplacements) {
+  const fs::path run = wall_run() / "run";
+  const fs::path out = test::scratch_dir("pv-gaps");
+  const auto r =
+      test::run_post("animate " + run.string() + " --uniform --fps 1 -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // At rest (t = 0): the building's points carry no gap; every wall's points carry the model's
+  // 15 cm gap, pointing away from the building's centre (the walls' offsets outward).
+  const FramePoints f = frame_points(out / "frame_000000.vtu", "gap_offset");
+  ASSERT_FALSE(f.points.empty());
+  // The building's centre: the mean of the points without a gap.
+  double cx = 0, cy = 0;
+  std::size_t n = 0;
+  for (std::size_t j = 0; j < f.points.size(); ++j)
+    if (f.values[j] == std::array<double, 3>{}) cx += f.points[j][0], cy += f.points[j][1], ++n;
+  ASSERT_GT(n, 0u);
+  cx /= static_cast<double>(n), cy /= static_cast<double>(n);
+  std::size_t wall_points = 0;
+  for (std::size_t i = 0; i < f.points.size(); ++i) {
+    const auto& [gx, gy, gz] = f.values[i];
+    const double g = std::hypot(gx, gy, gz);
+    if (g == 0.0) continue;
+    ++wall_points;
+    EXPECT_NEAR(g, 0.15, 1e-9) << "point " << i;
+    const auto& p = f.points[i];
+    EXPECT_GT((p[0] - cx) * gx + (p[1] - cy) * gy, 0.0) << "point " << i << ": gap points inward";
+  }
+  EXPECT_GT(wall_points, 0u);
+}
+
+TEST(PostParaView, ViewScriptDrawsTheMotionAtAVisibleScaleAndForcesInMN) {
+  ISOPOUND_REQUIRE_PVPYTHON();
+  const fs::path run = wall_run() / "run";
+  const fs::path out = test::scratch_dir("pv-scale");
+  auto r = test::run_post("animate " + run.string() + " -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The largest displacement of any point in any frame, and the site's size (frame 0), read here.
+  double largest = 0.0, extent = 0.0;
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  std::size_t k = 0;
+  for (const auto& [t, file] : test::read_pvd(out / "animation.pvd")) {
+    const FramePoints f = frame_points(out / file, "displacement");
+    for (const auto& d : f.values) largest = std::max(largest, std::hypot(d[0], d[1], d[2]));
+    if (k++ == 0)
+      for (const auto& p : f.points)
+        for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
+  }
+  for (int i = 0; i < 3; ++i) extent = std::max(extent, hi[i] - lo[i]);
+  ASSERT_GT(largest, 0.05) << "the building must move";
+  double peak = 0.0;
+  for (const Episode& e : log_episodes(run / "contact_events.csv"))
+    peak = std::max(peak, e.peak_force);
+  ASSERT_GT(peak, 1e6) << "this run's impacts reach MN";
+
+  const PrivateDisplay display(false);
+  ASSERT_NO_THROW(run_pvpython(out / "view.py", {"--report", (out / "report.json").string()}));
+  std::ifstream in(out / "report.json");
+  const auto report = nlohmann::json::parse(in);
+  const double scale = report["scale"].get<double>();
+  // A round factor (1, 2 or 5 x 10^k) that draws the largest displacement 4 to 10 % of the site:
+  // 10 % rounded down to the next such factor (at most a factor 2.5 below).
+  const double mantissa = scale / std::pow(10.0, std::floor(std::log10(scale) + 1e-12));
+  EXPECT_TRUE(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 ||
+              std::abs(mantissa - 5) < 1e-9)
+      << scale;
+  EXPECT_GT(scale, 1.0);
+  EXPECT_LE(scale * largest, 0.1 * extent * (1 + 1e-9)) << largest << " m in " << extent << " m";
+  EXPECT_GT(scale * largest, 0.04 * extent) << largest << " m in " << extent << " m";
+  // The pipeline's warps: the frames are drawn at scale 1 with gaps true (3D), so view.py moves
+  // points by (scale - 1) x displacement and walls by (scale - 1) x their gap.
+  EXPECT_DOUBLE_EQ(report["displacement_warp"].get<double>(), scale - 1.0);
+  EXPECT_DOUBLE_EQ(report["gap_warp"].get<double>(), scale - 1.0);
+  // Forces that reach MN are shown in MN, on [0, the run's peak].
+  EXPECT_EQ(report["colour_bar"]["title"].get<std::string>(), "contact F_N [MN]");
+  EXPECT_DOUBLE_EQ(report["colour_bar"]["range"][0].get<double>(), 0.0);
+  EXPECT_NEAR(report["colour_bar"]["range"][1].get<double>(), peak / 1e6, 1e-9 * peak / 1e6);
+  // The scale is stated on screen.
+  std::ostringstream stated;
+  stated << "displacements and gaps drawn x " << scale << " ";
+  const std::string note = report["note"].get<std::string>();
+  EXPECT_NE(note.find(stated.str()), std::string::npos) << note;
+  EXPECT_NE(note.find(" MN = "), std::string::npos) << note;
+
+  // --view-scale sets it; SCALE at the top of view.py is the one place that holds it.
+  r = test::run_post("animate " + run.string() + " --view-scale 20 -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream script(out / "view.py");
+  std::stringstream text;
+  text << script.rdbuf();
+  EXPECT_NE(text.str().find("\nSCALE = 20\n"), std::string::npos);
+}
+
+// The GUI (paraview --script=view.py) draws its toolbar buttons' icons from SVG: without Qt's
+// SVG support (Debian's libqt5svg5, only recommended by Qt) every button is drawn blank.
+// .ci/setup installs it; checked where ParaView is required.
+TEST(PostParaView, TheGuiHasQtSvgForItsToolbarIcons) {
+  if (!paraview_required()) GTEST_SKIP() << "ISOPOUND_REQUIRE_PARAVIEW not set";
+  const auto r = test::run_command("dpkg -s libqt5svg5");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("Status: install ok installed"), std::string::npos) << r.output;
 }
 
 }  // namespace
