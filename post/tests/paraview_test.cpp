@@ -5,7 +5,8 @@
 // cells and the screenshot shows the contact colour where the contact is, and a frame outside
 // every impact shows neither; view.py's displacement scale (the largest displacement drawn 2 to
 // 5 % of the site), the walls' gap offsets that keep bodies touching at that scale, and its
-// colour bar in MN; the GUI's packages (its toolbar icons need Qt's SVG support).
+// colour bar in MN; view.py in the GUI itself, and the GUI's packages (its toolbar icons need
+// Qt's SVG support).
 //
 // pvpython: the tests that need it skip when it is not on PATH, unless ISOPOUND_REQUIRE_PARAVIEW
 // is set (.ci/run sets it; .ci/setup installs ParaView).
@@ -30,6 +31,7 @@
 #include "post/headless.h"
 #include "post/paraview_run.h"
 #include "post_test_support.h"
+#include "solver/io/child_process.h"
 
 namespace fs = std::filesystem;
 namespace isopound::post {
@@ -498,6 +500,39 @@ TEST(PostParaView, TheGuiHasQtSvgForItsToolbarIcons) {
   const auto r = test::run_command("dpkg -s libqt5svg5");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("Status: install ok installed"), std::string::npos) << r.output;
+}
+
+// view.py in the GUI itself (paraview --script, as the demo tells the user), not only pvpython:
+// a wrapper runs it with --report inside the GUI, which then exits (--exit); the GUI prints a
+// script's Python errors but exits 0, so the report is the proof that the script ran through.
+TEST(PostParaView, ViewScriptRunsInTheParaViewGui) {
+  const std::string gui = find_on_path("paraview");
+  if (gui.empty()) {
+    if (paraview_required()) FAIL() << "paraview is required (ISOPOUND_REQUIRE_PARAVIEW)";
+    GTEST_SKIP() << "paraview not on PATH";
+  }
+  const fs::path run = wall_run() / "run";
+  const fs::path out = test::scratch_dir("pv-gui");
+  auto r = test::run_post("animate " + run.string() + " -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ofstream(out / "in_gui.py") << "import sys\n"
+                                      "sys.argv = ['view.py', '--report', r'"
+                                   << (out / "gui.json").string()
+                                   << "']\n"
+                                      "exec(open(r'"
+                                   << (out / "view.py").string() << "').read())\n";
+  fs::create_directories(out / "config");
+  const PrivateDisplay display(false);
+  r = test::run_command("XDG_CONFIG_HOME=" + (out / "config").string() + " timeout 300 " + gui +
+                        " --dr --script=" + (out / "in_gui.py").string() + " --exit");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Traceback"), std::string::npos) << r.output;
+  ASSERT_TRUE(fs::exists(out / "gui.json")) << r.output;
+  std::ifstream in(out / "gui.json");
+  const auto report = nlohmann::json::parse(in);
+  EXPECT_EQ(report["time_steps"].size(), pvd_times(out / "animation.pvd").size());
+  EXPECT_EQ(report["colour_bar"]["title"].get<std::string>(), "contact F_N [MN]");
+  EXPECT_GT(report["scale"].get<double>(), 1.0);
 }
 
 }  // namespace
