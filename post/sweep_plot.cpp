@@ -12,6 +12,7 @@
 #include <set>
 
 #include "post/polar_study.h"
+#include "post/study_words.h"
 #include "solver/io/units.h"
 
 namespace isopound::post {
@@ -155,6 +156,9 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
     data.notes.push_back("'" + opt.output + "' itself is not in the table: its ensemble mean '" +
                          table.outputs[ens.mean] + "' is drawn");
   data.band = ens.band();
+  if (q != table.outputs.end() &&
+      static_cast<std::size_t>(q - table.outputs.begin()) < table.output_selectors.size())
+    data.output_selector = table.output_selectors[q - table.outputs.begin()];
   const DisplayUnit unit =
       !opt.unit.empty() ? named_unit(opt.unit, "--unit")
                         : (q != table.outputs.end() && static_cast<std::size_t>(value_column) <
@@ -330,16 +334,31 @@ std::string sweep_plot_csv(const SweepPlotData& d) {
   return csv;
 }
 
+std::string sweep_plot_x_title(const SweepPlotData& d) {
+  return axis_words(d.x_axis) + " [" + d.x_unit + "]";
+}
+
+std::string sweep_plot_y_title(const SweepPlotData& d) {
+  return output_title(d.output_selector, d.output, d.unit);
+}
+
 std::string sweep_plot_title(const SweepPlotData& d) {
-  std::string t =
-      "Peak " + d.output + " [" + d.unit + "] against " + d.x_axis + " [" + d.x_unit + "]";
-  if (!d.group_axis.empty()) t += ", one curve per " + d.group_axis;
+  std::string t = capitalised(sweep_plot_y_title(d)) + " against " + sweep_plot_x_title(d);
+  if (!d.group_axis.empty()) t += ", one curve per " + axis_words(d.group_axis);
   return t;
 }
 
 std::string sweep_plot_subtitle(const SweepPlotData& d) {
-  std::string s;
-  for (const auto& w : d.where) s += (s.empty() ? "where " : ", ") + w.first + " = " + w.second;
+  // The study's own names first, small: the column and its selector.
+  std::string s = d.output_selector.empty() ? "" : d.output + " = " + d.output_selector;
+  bool where = false;
+  for (const auto& w : d.where) {
+    s += (s.empty() ? ""
+          : where   ? ", "
+                    : "; ") +
+         std::string(where ? "" : "where ") + w.first + " = " + w.second;
+    where = true;
+  }
   if (d.band) {
     if (!s.empty()) s += "; ";
     bool member0 = false;

@@ -48,6 +48,9 @@ outputs: [base.displacement, stories.drift_ratio, energy.hysteretic]
   EXPECT_EQ(table.axes, (std::vector<std::string>{"uy", "variant"}));
   EXPECT_EQ(table.output_quantities,
             (std::vector<std::string>{"displacement", "drift_ratio", "hysteretic"}));
+  EXPECT_EQ(
+      table.output_selectors,
+      (std::vector<std::string>{"base.displacement", "stories.drift_ratio", "energy.hysteretic"}));
   const std::vector<RunRow> runs = store.read_runs();
   ASSERT_EQ(table.rows.size(), runs.size());
   ASSERT_EQ(runs.size(), 4u);
@@ -74,6 +77,7 @@ outputs: [base.displacement, stories.drift_ratio, energy.hysteretic]
   fs::remove(dir / "study.yaml");
   const StudyTable orphan = read_study_table(db.string());
   EXPECT_EQ(orphan.output_quantities, (std::vector<std::string>(3, "")));
+  EXPECT_EQ(orphan.output_selectors, (std::vector<std::string>(3, "")));
   EXPECT_EQ(orphan.outputs, table.outputs);
   EXPECT_EQ(orphan.rows.size(), table.rows.size());
   fs::remove_all(dir);  // kept when an assertion failed above

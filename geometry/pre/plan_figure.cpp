@@ -66,14 +66,59 @@ void arrow(post::Figure& f, Point2 from, Point2 to, Rgb colour, double width) {
                        width});
 }
 
+// "3.2 m": an elevation as the configs write them.
+std::string metres(double z) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g m", z);
+  return buf;
+}
+
+// The struck columns at one plan position: every storey of `struck` struck there.
+struct StruckPlace {
+  int struck = -1, striker = -1;
+  Vec2 p_W;
+  double radius = 0.0;  // m
+  int storey_lo = 0, storey_hi = 0;
+};
+
+std::vector<StruckPlace> struck_places(const std::vector<StruckColumnSite>& sites) {
+  std::vector<StruckPlace> places;
+  for (const StruckColumnSite& s : sites) {
+    Vec2 c;
+    for (Vec2 p : s.section_W) c = c + (1.0 / static_cast<double>(s.section_W.size())) * p;
+    const auto same = [&](const StruckPlace& q) {
+      return q.struck == s.struck && std::hypot(q.p_W.x - c.x, q.p_W.y - c.y) < 1e-6;
+    };
+    const auto it = std::find_if(places.begin(), places.end(), same);
+    if (it == places.end()) {
+      places.push_back(
+          {s.struck, s.striker, c, struck_ring_radius(s.section_W), s.storey, s.storey});
+    } else {
+      it->storey_lo = std::min(it->storey_lo, s.storey);
+      it->storey_hi = std::max(it->storey_hi, s.storey);
+      it->radius = std::max(it->radius, struck_ring_radius(s.section_W));
+    }
+  }
+  return places;
+}
+
 }  // namespace
+
+double struck_ring_radius(const std::vector<Vec2>& section_W) {
+  double r = 0.0;
+  Vec2 c;
+  for (Vec2 p : section_W) c = c + (1.0 / static_cast<double>(section_W.size())) * p;
+  for (Vec2 p : section_W) r = std::max(r, std::hypot(p.x - c.x, p.y - c.y));
+  return r + 0.3;
+}
 
 Rgb slab_fill(int structure) {
   return tint(post::series_colour(structure), 0.72);
 }
 
 post::Figure plan_figure(const Site& site, const std::vector<StructureProperties>& properties,
-                         const std::vector<Clearance>& clearances, const PlanOptions& options,
+                         const std::vector<Clearance>& clearances,
+                         const std::vector<StruckColumnSite>& struck, const PlanOptions& options,
                          PlanView* view_out) {
   post::Figure f;
   f.width = options.width;
@@ -145,6 +190,41 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
   for (const PlanSlab& s : site.slabs)
     for (const PlanColumn& c : s.columns) draw_column(c);
   for (const PlanColumn& c : site.ground_columns) draw_column(c);
+
+  // Struck columns: a ring round each plan position a slab strikes, the storeys struck there
+  // written on the side away from the striking structure.
+  const std::vector<StruckPlace> struck_at = struck_places(struck);
+  for (const StruckPlace& q : struck_at) {
+    const Point2 c = px(q.p_W);
+    std::vector<Point2> ring = circle(c, q.radius * view.scale, 32);
+    ring.push_back(ring.front());
+    f.lines.push_back({ring, kStruckColour, 3});
+    Vec2 striker_at, away{1, 0};
+    int n = 0;
+    for (const PlanSlab& sl : site.slabs)
+      if (sl.structure == q.striker)
+        for (Vec2 p : sl.plan_W) striker_at = striker_at + p, ++n;
+    if (n > 0) {
+      striker_at = (1.0 / n) * striker_at;
+      const double dx = q.p_W.x - striker_at.x, dy = q.p_W.y - striker_at.y;
+      away = std::abs(dx) >= std::abs(dy) ? Vec2{dx > 0 ? 1.0 : -1.0, 0}
+                                          : Vec2{0, dy > 0 ? 1.0 : -1.0};
+    }
+    const std::string text = q.storey_lo == q.storey_hi ? "storey " + std::to_string(q.storey_lo)
+                                                        : "storeys " + std::to_string(q.storey_lo) +
+                                                              "–" + std::to_string(q.storey_hi);
+    const double off = q.radius * view.scale + 4;
+    f.texts.push_back({{c.x + away.x * off, c.y + away.y * off},
+                       text,
+                       11,
+                       kStruckColour,
+                       away.x > 0   ? post::HAlign::kLeft
+                       : away.x < 0 ? post::HAlign::kRight
+                                    : post::HAlign::kCentre,
+                       away.y > 0   ? post::VAlign::kBottom
+                       : away.y < 0 ? post::VAlign::kTop
+                                    : post::VAlign::kCentre});
+  }
 
   // Centres of mass and stiffness (per structure: the whole mass; the bearings' or storey 1's
   // centre of stiffness).
@@ -282,6 +362,46 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
     f.texts.push_back(
         {{lx + 34, ly}, "gap at rest (measured)", 13, {0, 0, 0}, post::HAlign::kLeft});
     ly -= 28;
+  }
+  // Struck columns: the ring, then each striking slab (structure, level, elevation) and the
+  // storey it strikes between which floors, with how many columns.
+  if (!struck.empty()) {
+    {
+      std::vector<Point2> ring = circle({lx + 12, ly}, 9, 24);
+      ring.push_back(ring.front());
+      f.lines.push_back({ring, kStruckColour, 3});
+    }
+    f.texts.push_back(
+        {{lx + 34, ly}, "struck column (a slab strikes it)", 13, {0, 0, 0}, post::HAlign::kLeft});
+    ly -= 22;
+    struct Group {
+      std::string slab, storey;  // the two lines
+      int columns = 0;
+    };
+    std::vector<Group> groups;
+    for (const StruckColumnSite& s : struck) {
+      const Group g{s.striker_name + "/" + s.slab_level + " at z = " + metres(s.slab_elevation),
+                    "strikes " + s.struck_name + " storey " + std::to_string(s.storey) + " (" +
+                        metres(s.z_lower) + " to " + metres(s.z_upper) + ")",
+                    1};
+      const auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& o) {
+        return o.slab == g.slab && o.storey == g.storey;
+      });
+      if (it == groups.end())
+        groups.push_back(g);
+      else
+        ++it->columns;
+    }
+    for (const Group& g : groups) {
+      f.texts.push_back({{lx + 34, ly}, g.slab, 11, kStruckColour, post::HAlign::kLeft});
+      f.texts.push_back({{lx + 46, ly - 14},
+                         g.storey + ": " + std::to_string(g.columns) + " columns",
+                         11,
+                         {0, 0, 0},
+                         post::HAlign::kLeft});
+      ly -= 34;
+    }
+    ly -= 6;
   }
   // L direction of the record pair (the arrow below the legend).
   if (options.angle) {

@@ -45,6 +45,9 @@ struct StudyTable {
   // "drift_ratio", ...). "" when unknown: the study file is gone or unreadable, or holds no such
   // column (ensemble statistics c_ens_S are columns of the table, not of the study file).
   std::vector<std::string> output_quantities;
+  // Per output column: its selector as the study file writes it ("base.displacement",
+  // "sum:wall*.impacts"); "" when unknown (as output_quantities). For axis titles in words.
+  std::vector<std::string> output_selectors;
   std::vector<StudyTableRow> rows;  // in case order
 };
 

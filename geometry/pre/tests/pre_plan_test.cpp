@@ -2,6 +2,7 @@
 // non-blank, and known features at the pixels the drawing's scale puts them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -26,7 +27,7 @@ PlanView view_of(const std::string& model_path, Site& site) {
   const auto clearances =
       check_site3d(*m.config, m.structures, site, site_limits(*m.config), problems);
   PlanView view;
-  plan_figure(site, properties, clearances, PlanOptions{}, &view);
+  plan_figure(site, properties, clearances, struck_column_sites(*m.config), PlanOptions{}, &view);
   return view;
 }
 
@@ -89,6 +90,60 @@ TEST(PrePlan, EastWallOfTheXY5SiteRightOfTheSlab) {
   // Beyond the wall: background again.
   EXPECT_TRUE(near(pixel({9.7, -1.5}), {255, 255, 255})) << "east of the wall";
   std::filesystem::remove_all(dir);
+}
+
+// configs/3d-floor-to-column.yaml: the building's floors 1-2 strike the neighbour's storeys 2-3,
+// the neighbour's floors 1-3 the building's storeys 1-3, four facing columns each (20 sites at 8
+// plan positions). Each position gets a ring centred on the column, labelled with its storeys;
+// the legend names every striking slab with its elevation and the storey it strikes.
+TEST(PrePlan, StruckColumnsOfAFloorToColumnSiteAreRingedAndTheirSlabsNamed) {
+  ProblemList problems;
+  const ScannedModel m =
+      scan_model((source_dir() / "configs/3d-floor-to-column.yaml").string(), problems);
+  ASSERT_TRUE(m.config.has_value());
+  const Site site = site_plan(*m.config);
+  const std::vector<StruckColumnSite> sites = struck_column_sites(*m.config);
+  ASSERT_EQ(sites.size(), 20u);
+  PlanView view;
+  const post::Figure f =
+      plan_figure(site, structure_properties(*m.config), {}, sites, PlanOptions{}, &view);
+  // The rings: closed polylines of kStruckColour; centre = mean of the points (a regular polygon).
+  struct Ring {
+    post::Point2 c;
+    double r;
+  };
+  std::vector<Ring> rings;
+  for (const post::Polyline& l : f.lines) {
+    if (!(l.colour == kStruckColour) || l.points.size() < 20) continue;
+    post::Point2 c;
+    const std::size_t n = l.points.size() - 1;  // closed: the first point repeated
+    for (std::size_t i = 0; i < n; ++i) c.x += l.points[i].x / n, c.y += l.points[i].y / n;
+    rings.push_back({c, std::hypot(l.points[0].x - c.x, l.points[0].y - c.y)});
+  }
+  EXPECT_EQ(rings.size(), 9u);  // 8 positions and the legend's swatch
+  for (const StruckColumnSite& s : sites) {
+    SCOPED_TRACE(s.label());
+    Vec2 c;
+    for (Vec2 p : s.section_W) c = c + 0.25 * p;
+    const post::Point2 at = view.to_px(c);
+    const bool ringed = std::any_of(rings.begin(), rings.end(), [&](const Ring& r) {
+      return std::hypot(r.c.x - at.x, r.c.y - at.y) < 0.5 &&
+             std::abs(r.r - struck_ring_radius(s.section_W) * view.scale) < 1.0;
+    });
+    EXPECT_TRUE(ringed) << "no ring at (" << at.x << ", " << at.y << ") px";
+  }
+  const auto has = [&](const std::string& text) {
+    return std::any_of(f.texts.begin(), f.texts.end(),
+                       [&](const post::Text& t) { return t.text == text; });
+  };
+  EXPECT_TRUE(has("struck column (a slab strikes it)"));
+  EXPECT_TRUE(has("building/floor 1 at z = 3.2 m"));
+  EXPECT_TRUE(has("building/floor 2 at z = 6.4 m"));
+  EXPECT_TRUE(has("east-neighbour/floor 3 at z = 9 m"));
+  EXPECT_TRUE(has("strikes east-neighbour storey 2 (3 m to 6 m): 4 columns"));
+  EXPECT_TRUE(has("strikes building storey 3 (6.4 m to 9.6 m): 4 columns"));
+  EXPECT_TRUE(has("storeys 1–3"));  // beside the building's facing columns
+  EXPECT_TRUE(has("storeys 2–3"));  // beside the neighbour's
 }
 
 }  // namespace
