@@ -42,20 +42,32 @@ std::string level_title(const PlaceSpectra& p, double pfa_g) {
 }
 
 // The panel's axes by the rules of plot_floor_spectra.h; the peak PSA and the long-period one
-// over the values a log period axis shows (T > 0).
+// over the values a log period axis shows (T > 0). Then room above the curves for the legend at
+// the top right: an undrawn, unlabelled point that puts the peak at kCurvesShare of the height.
 void choose_axes(Panel& panel, bool log_period) {
   panel.log_x = log_period;
-  double peak = 0.0, long_peak = 0.0;
+  double peak = 0.0, long_peak = 0.0, low = std::numeric_limits<double>::infinity();
+  double t_lo = std::numeric_limits<double>::infinity();
   for (const Series& s : panel.series)
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       if (log_period && !(s.x[i] > 0.0)) continue;
       peak = std::max(peak, s.y[i]);
+      if (s.y[i] > 0.0) low = std::min(low, s.y[i]);
       if (s.x[i] >= kLongPeriod) long_peak = std::max(long_peak, s.y[i]);
+      t_lo = std::min(t_lo, s.x[i]);
     }
   panel.log_y = long_peak > 0.0 && peak > kLogPsaRatio * long_peak;
   panel.x_title = log_period ? "period T [s], log scale" : "period T [s]";
   panel.y_title = panel.log_y ? "PSA [g], log scale" : "PSA [g]";
   panel.y_from_zero = !panel.log_y;
+  panel.legend_at = Panel::LegendAt::kTopRight;
+  if (!(peak > 0.0) || !std::isfinite(t_lo)) return;
+  constexpr double kCurvesShare = 0.62;  // 5 legend entries take the top third
+  const double top =
+      panel.log_y ? low * std::pow(peak / low, 1.0 / kCurvesShare) : peak / kCurvesShare;
+  Series room = line_series("", {t_lo}, {top});
+  room.width = 0.0;
+  panel.series.push_back(std::move(room));
 }
 
 }  // namespace
@@ -86,7 +98,6 @@ Figure floor_spectra_figure(const FloorSpectra& f, std::vector<PanelFrame>* fram
   }
   for (const auto& places : levels) {
     Panel panel;
-    panel.legend_at = Panel::LegendAt::kBest;
     // The largest T = 0 value of the level's places: its peak floor acceleration.
     double pfa = std::numeric_limits<double>::quiet_NaN();
     if (!f.three_d) {
@@ -101,13 +112,11 @@ Figure floor_spectra_figure(const FloorSpectra& f, std::vector<PanelFrame>* fram
           corners[i] = std::max(corners[i], places[k]->rotd->psa100[i]);
       if (has_zero) pfa = std::max(cm.rotd->psa100.front(), corners.front()) / kGravity;
       // Drawn in this order: the corners' wide band under the centre's RotD100.
-      panel.series.push_back(series("centre of mass, x", T, cm.x.psa, series_colour(0), 1.2));
-      panel.series.push_back(series("centre of mass, y", T, cm.y->psa, series_colour(1), 1.2));
+      panel.series.push_back(series("CM, x", T, cm.x.psa, series_colour(0), 1.2));
+      panel.series.push_back(series("CM, y", T, cm.y->psa, series_colour(1), 1.2));
       if (places.size() > 1)
-        panel.series.push_back(
-            series("plan corners, RotD100 (largest)", T, corners, kCornersColour, 5.0));
-      panel.series.push_back(
-          series("centre of mass, RotD100", T, cm.rotd->psa100, kCentreRotDColour, 2.0));
+        panel.series.push_back(series("corners, largest RotD100", T, corners, kCornersColour, 5.0));
+      panel.series.push_back(series("CM, RotD100", T, cm.rotd->psa100, kCentreRotDColour, 2.0));
       panel.series.push_back(series("ground, RotD100", T, f.ground.rotd->psa100, kGround, 1.2));
     }
     panel.title = level_title(*places.front(), pfa);
@@ -125,7 +134,9 @@ Figure floor_spectra_figure(const FloorSpectra& f, std::vector<PanelFrame>* fram
   else
     std::snprintf(title, sizeof title, "Floor response spectra, ξ = %g %% (history every %.4g s)",
                   100.0 * f.damping, f.sampling.row_interval);
-  return xy_figure(panels, columns, 460 * columns, 60 + 360 * rows, title, frames);
+  std::string heading = title;
+  if (f.three_d) heading += "; CM: centre of mass";
+  return xy_figure(panels, columns, 500 * columns, 60 + 360 * rows, heading, frames);
 }
 
 }  // namespace isopound::post

@@ -9,17 +9,15 @@
 namespace isopound::post {
 namespace {
 
-// "roof 3.46 cm, 9562.0 kN": as `isopound pushover` prints its points; for an isolated building
-// the superstructure's drift and the bearings' displacement first.
-std::string point_text(const PushoverData& d, const PushoverPoint& p, bool isolated) {
-  char buf[160];
-  if (isolated)
-    std::snprintf(buf, sizeof buf, "superstructure %.2f cm, bearings %.2f cm, %.1f kN",
-                  d.superstructure_drift()[p.row] * 100.0, d.bearing_displacement()[p.row] * 100.0,
-                  p.base_shear / 1e3);
+// "roof 3.46 cm, 9562.0 kN": as `isopound pushover` prints its points (an isolated building's
+// "drift 2.84 cm, 9833.8 kN" and "bearings 73.48 cm": each panel's own coordinate).
+std::string point_text(const std::string& what, double x, double base_shear) {
+  char buf[96];
+  if (std::isfinite(base_shear))
+    std::snprintf(buf, sizeof buf, "%s %.2f cm, %.1f kN", what.c_str(), x * 100.0,
+                  base_shear / 1e3);
   else
-    std::snprintf(buf, sizeof buf, "roof %.2f cm, %.1f kN", p.roof_displacement * 100.0,
-                  p.base_shear / 1e3);
+    std::snprintf(buf, sizeof buf, "%s %.2f cm", what.c_str(), x * 100.0);
   return buf;
 }
 
@@ -50,27 +48,26 @@ std::vector<MarkedPoint> marked_points(const PushoverData& d) {
            9}};
 }
 
-// Base shear [kN] against x [cm] (x per row, in m), the marked points on it; `legend`: the points
-// named with their numbers (else unlabelled, the other panel's legend names them).
+// Base shear [kN] against x [cm] (x per row, in m), the marked points on it and named in the
+// legend with `what` and their x (with the base shear when `shear_in_legend`).
 Panel shear_panel(const PushoverData& d, const std::string& title, const std::string& x_title,
-                  const std::vector<double>& x, bool legend, bool isolated, Rgb colour) {
+                  const std::vector<double>& x, const std::string& curve, const std::string& what,
+                  bool shear_in_legend, Rgb colour) {
   Panel p{title, x_title, "base shear [kN]", {}, true, false, true};
   p.legend_at = Panel::LegendAt::kBest;
-  Series c = line_series("capacity curve", scaled(x, 0.01), scaled(d.base_shear(), 1e3));
+  Series c = line_series(curve, scaled(x, 0.01), scaled(d.base_shear(), 1e3));
   c.width = 2.0;
   c.colour = colour;
-  if (!legend) c.label.clear();
   p.series.push_back(c);
   for (const MarkedPoint& m : marked_points(d)) {
     if (!m.point) continue;
-    const std::string label =
-        legend ? std::string(m.name) + " (" + point_text(d, *m.point, isolated) + ")" : "";
+    const double shear = shear_in_legend ? m.point->base_shear : std::nan("");
     Series s =
-        point_series(label, x[m.point->row] * 100.0, m.point->base_shear / 1e3, m.shape, m.fill);
+        point_series(std::string(m.name) + " (" + point_text(what, x[m.point->row], shear) + ")",
+                     x[m.point->row] * 100.0, m.point->base_shear / 1e3, m.shape, m.fill);
     s.marker_size = m.size;
     p.series.push_back(s);
   }
-  p.legend = legend;
   return p;
 }
 
@@ -90,14 +87,14 @@ Figure pushover_figure(const PushoverData& d, std::vector<PanelFrame>* frames) {
       std::string(d.height > 0 ? drift_note : "");
 
   std::vector<Panel> panels;
-  panels.push_back(shear_panel(d,
-                               isolated ? "Capacity curve of the superstructure" : "Capacity curve",
-                               x_title, x, true, isolated, series_colour(0)));
+  panels.push_back(
+      shear_panel(d, isolated ? "Capacity curve of the superstructure" : "Capacity curve", x_title,
+                  x, "capacity curve", isolated ? "drift" : "roof", true, series_colour(0)));
   if (!d.first_yield) panels.back().title += " (first yield not reached)";
   if (isolated)
-    panels.push_back(shear_panel(d, "Bearings' share: base shear against their displacement",
-                                 "bearing displacement: base slab relative to the ground [cm]",
-                                 d.bearing_displacement(), false, true, kBearingCurveColour));
+    panels.push_back(shear_panel(
+        d, "The bearings' share", "bearing displacement: roof less superstructure drift [cm]",
+        d.bearing_displacement(), "bearings", "bearings", false, kBearingCurveColour));
 
   if (d.storeys > 0) {
     Panel drift{"Storey drift ratios",

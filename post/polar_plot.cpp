@@ -40,10 +40,21 @@ void draw_polar_axes(const PolarFrame& f, const std::vector<double>& r_ticks,
                          HAlign::kCentre,
                          VAlign::kCentre});
   }
-  // Radial axis title just outside the circle, past the radial tick labels on the 15 deg ray.
+  // The radial ticks' unit just outside the circle, past their labels on the 15 deg ray; the
+  // whole radial title (in words, long) in the bottom-left corner, clear of the angle labels.
+  const std::size_t open = radial_title.rfind('[');
+  const bool unit =
+      open != std::string::npos && !radial_title.empty() && radial_title.back() == ']';
   const Point2 at = f.to_pixel(8.0, f.r_hi);
-  fig.texts.push_back(
-      {{at.x + 14, at.y - 4}, radial_title, 12, kBlack, HAlign::kLeft, VAlign::kBottom});
+  fig.texts.push_back({{at.x + 14, at.y - 4},
+                       unit ? radial_title.substr(open) : radial_title,
+                       12,
+                       kBlack,
+                       HAlign::kLeft,
+                       VAlign::kBottom});
+  if (unit)
+    fig.texts.push_back(
+        {{12, 10}, "radius: " + radial_title, 12, kBlack, HAlign::kLeft, VAlign::kBottom});
 }
 
 std::vector<Point2> curve_points(const PolarFrame& f, const std::vector<double>& angle,

@@ -228,8 +228,7 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
   const std::string selector = selector_of(table, opt.quantity);
   const std::string qtitle = output_title(selector, opt.quantity, unit.unit);
   const std::string qwords = output_words(selector);
-  const std::string what =
-      qwords.empty() ? opt.quantity : capitalised(qwords) + " (" + opt.quantity + ")";
+  const std::string what = qwords.empty() ? opt.quantity : capitalised(qwords);
   const auto idx = [](const std::vector<double>& v, double x) {
     return static_cast<std::size_t>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
   };
@@ -369,6 +368,10 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
   if (!where.empty()) {
     result.envelope.title += " (where " + where + ")";
     result.contour.title += " (where " + where + ")";
+  }
+  if (!qwords.empty()) {  // the study's key, after the words
+    result.envelope.title += " — " + opt.quantity;
+    result.contour.title += " — " + opt.quantity;
   }
   result.csv = csv.str();
   return result;

@@ -139,7 +139,7 @@ std::string output_words(const std::string& selector) {
   if (!place.empty() && !s.sum && s.quantity != "impacts") words = place + " " + words;
   if (s.quantity == "impacts" && which.empty() && !place.empty()) which = place;
   if (is_peak(s.quantity) && !s.sum) words = "peak " + words;
-  return which.empty() ? words : words + ", " + which;
+  return which.empty() ? words : words + " (" + which + ")";
 }
 
 std::string output_title(const std::string& selector, const std::string& column,

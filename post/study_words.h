@@ -1,13 +1,14 @@
 // A study's columns in words for axis titles: an output selector ("base.displacement",
-// "sum:wall*.impacts", solver/study/study_outputs.h) read as "peak base displacement" or "total
-// wall impacts", an axis name ("angle") as "incidence angle"; units are the caller's ([cm]).
+// "sum:wall*.impacts", solver/study/study_outputs.h) read as "peak base displacement" or "number of
+// impacts (sum over walls)", an axis name ("angle") as "incidence angle"; units are the caller's
+// ([cm]).
 #pragma once
 
 #include <string>
 
 namespace isopound::post {
 
-// The selector in words, lower case ("peak storey drift ratio, largest storey"); "" when the
+// The selector in words, lower case ("peak storey drift ratio (largest storey)"); "" when the
 // selector is empty or does not parse.
 std::string output_words(const std::string& selector);
 

@@ -41,14 +41,14 @@ PlaceSpectra place3d(const std::string& level, double z, const std::vector<doubl
   return p;
 }
 
-// Periods 0, 0.02 ... 4 s; a base slab peaking at 90 g (0.05 s) over 1 g, a floor at 5 g over 2 g;
-// the corners 10 % above the centre of mass.
+// Periods 0, 0.02 ... 4 s (k / 50, exact at 4 s); a base slab peaking at 90 g (0.05 s) over 1 g, a
+// floor at 5 g over 2 g; the corners 10 % above the centre of mass.
 FloorSpectra three_d() {
   FloorSpectra f;
   f.three_d = true;
   f.steps = 1000;
   f.periods.push_back(0.0);
-  for (double t = 0.02; t <= 4.0 + 1e-9; t += 0.02) f.periods.push_back(t);
+  for (int k = 1; k <= 200; ++k) f.periods.push_back(k / 50.0);
   const auto& T = f.periods;
   f.ground = place3d("", 0, T, 0.5, 1.0, 0.1, "");
   for (const auto& [level, z, peak, tail] :
@@ -113,9 +113,11 @@ TEST(PostFloorSpectraFigure, LogAxesWhereThePeriodsAndThePeaksSpanDecades) {
   EXPECT_TRUE(has_text(fig, "building/floor 1 (z = 3.2 m): PFA 3 g"));
   // The legend names what each curve is.
   for (const char* label :
-       {"centre of mass, x", "centre of mass, y", "plan corners, RotD100 (largest)",
-        "centre of mass, RotD100", "ground, RotD100"})
+       {"CM, x", "CM, y", "corners, largest RotD100", "CM, RotD100", "ground, RotD100"})
     EXPECT_TRUE(has_text(fig, label)) << label;
+  EXPECT_TRUE(has_text(fig,
+                       "Floor response spectra, ξ = 5 % (every analysis step); CM: centre of "
+                       "mass"));
 }
 
 TEST(PostFloorSpectraFigure, CentreOfMassRotD100IsDrawnOverTheCornersAndNarrower) {

@@ -151,7 +151,7 @@ TEST_F(PostSweepPlot, CurvesAreTheTableValuesOnePerGroupInStudyOrder) {
   const SweepPlotData f = sweep_plot_data(table, *plain_, o);
   ASSERT_EQ(f.curves.size(), 2u);
   EXPECT_EQ(f.curves[1].label, "soft");
-  EXPECT_EQ(sweep_plot_y_title(f), "peak wall force, largest wall [kN]");
+  EXPECT_EQ(sweep_plot_y_title(f), "peak wall force (largest wall) [kN]");
   ASSERT_EQ(f.notes.size(), 1u);
   EXPECT_NE(f.notes[0].find("free"), std::string::npos) << f.notes[0];
   // A numeric group axis: curves named with the level in its display unit; a --where value with
