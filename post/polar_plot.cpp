@@ -57,6 +57,12 @@ void draw_polar_axes(const PolarFrame& f, const std::vector<double>& r_ticks,
         {{12, 10}, "radius: " + radial_title, 12, kBlack, HAlign::kLeft, VAlign::kBottom});
 }
 
+void draw_note(const std::string& note, Figure& fig) {
+  if (!note.empty())
+    fig.texts.push_back(
+        {{fig.width - 12.0, 10}, note, 10, {110, 110, 110}, HAlign::kRight, VAlign::kBottom});
+}
+
 std::vector<Point2> curve_points(const PolarFrame& f, const std::vector<double>& angle,
                                  const std::vector<double>& value) {
   std::vector<Point2> pts;
@@ -144,6 +150,7 @@ Figure polar_envelope_figure(const PolarEnvelopeData& data, int width, int heigh
   for (const PolarBand& b : data.bands) shade(b.angle_deg, b.lo, b.hi, b.colour);
   shade(data.band_angle_deg, data.band_lo, data.band_hi, {222, 228, 240});
   draw_polar_axes(f, ticks, data.quantity, fig);
+  draw_note(data.note, fig);
   int index = 0;
   std::vector<std::pair<std::string, Rgb>> legend;
   for (const PolarCurve& c : data.curves) {
@@ -218,6 +225,7 @@ Figure polar_contour_figure(const PolarContourData& data, int width, int height,
   const std::size_t every = std::max<std::size_t>(1, (nr + 5) / 6);
   for (std::size_t i = 0; i < nr; i += every) r_ticks.push_back(data.radius[i]);
   draw_polar_axes(f, r_ticks, data.radius_title, fig);
+  draw_note(data.note, fig);
   for (Polyline& l : fig.lines)
     if (l.colour == kGrid) l.colour = {255, 255, 255};  // grid over colour: white
   for (Text& t : fig.texts)

@@ -89,6 +89,20 @@ DisplayUnit display_unit_of(const std::string& quantity) {
   return {"SI", 1.0};
 }
 
+DisplayUnit axis_display_unit(const std::string& axis) {
+  std::string n = axis;
+  std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (n.find("gap") != std::string::npos || n.find("thickness") != std::string::npos || n == "uy" ||
+      n == "u_y")
+    return {"cm", 0.01};
+  if (n == "angle" || n == "incidence" || n == "theta" ||
+      (n.size() >= 5 && n.compare(n.size() - 5, 5, "angle") == 0))
+    return {"deg", std::numbers::pi / 180.0};
+  if (n == "qw" || n.rfind("xi", 0) == 0) return {"%", 0.01};
+  if (n == "tb" || n == "period" || n == "duration") return {"s", 1.0};
+  return {"SI", 1.0};
+}
+
 EnsembleColumns ensemble_columns(const std::vector<std::string>& outputs,
                                  const std::string& quantity) {
   const auto find = [&](const std::string& stat) {
@@ -332,10 +346,7 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     }
   } else {
     // Mean over the groups (records or cases) at each (radius, angle).
-    const DisplayUnit runit = [&] {
-      std::string n = table.axes[radial];
-      return n.find("gap") != std::string::npos ? DisplayUnit{"cm", 0.01} : DisplayUnit{"SI", 1.0};
-    }();
+    const DisplayUnit runit = axis_display_unit(table.axes[radial]);
     std::vector<double> sum(angles.size() * radii.size(), 0.0);
     std::vector<int> n(sum.size(), 0);
     for (const Row& r : rows) {
@@ -369,10 +380,8 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     result.envelope.title += " (where " + where + ")";
     result.contour.title += " (where " + where + ")";
   }
-  if (!qwords.empty()) {  // the study's key, after the words
-    result.envelope.title += " — " + opt.quantity;
-    result.contour.title += " — " + opt.quantity;
-  }
+  if (!qwords.empty())  // the study's own names, small
+    result.envelope.note = result.contour.note = opt.quantity + " = " + selector;
   result.csv = csv.str();
   return result;
 }

@@ -47,11 +47,6 @@ std::string cell_text(const StudyTableCell& c) {
   return c.numeric && c.text.empty() ? number_text(c.number) : c.text;
 }
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 // --unit / --x-unit: polar's unit names, and deg for angle axes (stored in rad).
 DisplayUnit named_unit(const std::string& unit, const char* option) {
   if (unit == "deg") return {"deg", std::numbers::pi / 180.0};
@@ -62,20 +57,6 @@ DisplayUnit named_unit(const std::string& unit, const char* option) {
                          "': not a unit this command knows; use m, cm, mm, m/s, g, m/s2, N, kN, "
                          "MN, %, -, J, kJ, MJ, rad, deg, m2, s or SI");
   }
-}
-
-// The display unit of a numeric axis from its name: sweep axes hold SI (docs/studies.md).
-DisplayUnit axis_unit(const std::string& axis) {
-  const std::string n = lower(axis);
-  if (n.find("gap") != std::string::npos || n.find("thickness") != std::string::npos || n == "uy" ||
-      n == "u_y")
-    return {"cm", 0.01};
-  if (n == "angle" || n == "incidence" || n == "theta" ||
-      (n.size() >= 5 && n.compare(n.size() - 5, 5, "angle") == 0))
-    return {"deg", std::numbers::pi / 180.0};
-  if (n == "qw" || n.rfind("xi", 0) == 0) return {"%", 0.01};
-  if (n == "tb" || n == "period" || n == "duration") return {"s", 1.0};
-  return {"SI", 1.0};
 }
 
 // A --where value against a cell: labels by text; numbers by value within 1e-9 (relative), the
@@ -166,7 +147,7 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
                                ? display_unit_of(table.output_quantities[value_column])
                                : DisplayUnit{"SI", 1.0});
   const DisplayUnit xunit =
-      opt.x_unit.empty() ? axis_unit(opt.x_axis) : named_unit(opt.x_unit, "--x-unit");
+      opt.x_unit.empty() ? axis_display_unit(opt.x_axis) : named_unit(opt.x_unit, "--x-unit");
   data.unit = unit.unit;
   data.x_unit = xunit.unit;
 
@@ -231,7 +212,7 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
     varying.push_back(table.axes[a] + " (" + std::to_string(levels.size()) +
                       " values: " + join(levels, 6) + ")");
     const StudyTableCell& first = rows.front()->axes[a];
-    const DisplayUnit au = axis_unit(table.axes[a]);
+    const DisplayUnit au = axis_display_unit(table.axes[a]);
     const std::string shown =
         first.numeric && first.text.empty() && au.unit != "SI"
             ? number_text(axis_display(first.number, au.divisor)) + " " + au.unit
@@ -260,7 +241,7 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
   };
   const std::vector<std::string> groups =
       g >= 0 ? levels_of(rows, g) : std::vector<std::string>{""};
-  const DisplayUnit gunit = g >= 0 ? axis_unit(opt.group_axis) : DisplayUnit{};
+  const DisplayUnit gunit = g >= 0 ? axis_display_unit(opt.group_axis) : DisplayUnit{};
   for (const std::string& level : groups) {
     std::vector<const StudyTableRow*> in;
     for (const StudyTableRow* r : rows)

@@ -241,9 +241,10 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
         " struck";
     const Point2 at = px(centroid_of(q.section_W));
     const double off = l.half_px + 3;
-    // Beyond the last column along the line, flush with its side away from the striker.
-    const Point2 where{at.x + l.along.x * off + l.away.x * (l.away.x != 0 ? -l.half_px : 0),
-                       at.y + l.along.y * off + l.away.y * (l.away.y != 0 ? -l.half_px : 0)};
+    // Beyond the last column along the line, from its centre away from the striker (the facing
+    // line's label starts as far the other way: the two stay apart across the gap).
+    const Point2 where{at.x + l.along.x * off + 2 * l.away.x,
+                       at.y + l.along.y * off + 2 * l.away.y};
     f.texts.push_back({where, text, 11, kStruckColour,
                        l.away.x > 0   ? post::HAlign::kLeft
                        : l.away.x < 0 ? post::HAlign::kRight

@@ -2,6 +2,7 @@
 // engineer would title an axis; an unknown selector falls back to the column's key.
 #include <gtest/gtest.h>
 
+#include "post/polar_study.h"
 #include "post/study_words.h"
 
 namespace isopound::post {
@@ -47,6 +48,11 @@ TEST(PostStudyWords, TitlesCarryTheUnitAndFallBackToTheKey) {
   EXPECT_EQ(axis_words("gap"), "gap");
   EXPECT_EQ(axis_words("level_mismatch"), "level mismatch");
   EXPECT_EQ(capitalised("peak base"), "Peak base");
+  // Axis units from the names (sweep-plot's x axis and polar's contour radius alike).
+  EXPECT_EQ(axis_display_unit("QW").unit, "%");
+  EXPECT_EQ(axis_display_unit("gap").unit, "cm");
+  EXPECT_EQ(axis_display_unit("angle").unit, "deg");
+  EXPECT_EQ(axis_display_unit("mismatch").unit, "SI");
 }
 
 }  // namespace
