@@ -43,7 +43,7 @@ std::string level_title(const PlaceSpectra& p, double pfa_g) {
 
 // The panel's axes by the rules of plot_floor_spectra.h; the peak PSA and the long-period one
 // over the values a log period axis shows (T > 0). Then room above the curves for the legend at
-// the top right: an undrawn, unlabelled point that puts the peak at kCurvesShare of the height.
+// the top right: an undrawn, unlabelled point that puts the peak below the legend's entries.
 void choose_axes(Panel& panel, bool log_period) {
   panel.log_x = log_period;
   double peak = 0.0, long_peak = 0.0, low = std::numeric_limits<double>::infinity();
@@ -62,9 +62,11 @@ void choose_axes(Panel& panel, bool log_period) {
   panel.y_from_zero = !panel.log_y;
   panel.legend_at = Panel::LegendAt::kTopRight;
   if (!(peak > 0.0) || !std::isfinite(t_lo)) return;
-  constexpr double kCurvesShare = 0.62;  // 5 legend entries take the top third
-  const double top =
-      panel.log_y ? low * std::pow(peak / low, 1.0 / kCurvesShare) : peak / kCurvesShare;
+  // The legend's entries take 16 px each and 24 px of margin of a plot about 280 px high.
+  const auto entries = std::count_if(panel.series.begin(), panel.series.end(),
+                                     [](const Series& s) { return !s.label.empty(); });
+  const double share = std::clamp(1.0 - (24.0 + 16.0 * entries) / 280.0, 0.5, 0.9);
+  const double top = panel.log_y ? low * std::pow(peak / low, 1.0 / share) : peak / share;
   Series room = line_series("", {t_lo}, {top});
   room.width = 0.0;
   panel.series.push_back(std::move(room));
