@@ -5,7 +5,7 @@
 #include <cctype>
 #include <map>
 
-#include "solver/study/study_outputs.h"
+#include "solver/study/study_table.h"
 
 namespace isopound::post {
 namespace {
@@ -53,7 +53,7 @@ bool is_peak(const std::string& q) {
                       [&](const char* n) { return q == n; });
 }
 
-std::string quantity_words(const OutputSelector& s) {
+std::string quantity_words(const StudyTableSelector& s) {
   static const std::map<std::string, std::string> kWords = {
       {"displacement_x", "x displacement"},
       {"displacement_y", "y displacement"},
@@ -69,7 +69,7 @@ std::string quantity_words(const OutputSelector& s) {
       {"pgd", "PGD"},
       {"yielded", "yielded columns"},
       {"ductility", "ductility demand"}};
-  if (s.kind == OutputSelector::Kind::kEnergy) {
+  if (s.kind == "energy") {
     if (s.quantity.find("error") != std::string::npos)
       return "energy balance " + spaced(s.quantity);
     return spaced(s.quantity) + " energy";
@@ -80,8 +80,8 @@ std::string quantity_words(const OutputSelector& s) {
 
 // The place ("base", "storey 2", "wall") and, for a group or a plan point, which of it is
 // taken ("largest storey", "corner 3").
-void place_words(const OutputSelector& s, std::string& place, std::string& which) {
-  if (s.kind == OutputSelector::Kind::kLevel) {
+void place_words(const StudyTableSelector& s, std::string& place, std::string& which) {
+  if (s.kind == "level") {
     if (s.where == "floors" || s.where == "levels") {
       place = s.where.substr(0, s.where.size() - 1);
       which = "largest " + place;
@@ -97,7 +97,7 @@ void place_words(const OutputSelector& s, std::string& place, std::string& which
       which = "corner " + k;
     return;
   }
-  if (s.kind == OutputSelector::Kind::kStory) {
+  if (s.kind == "story") {
     const bool all = s.where == "stories";
     place = all ? "storey" : "storey " + number_after(s.where, "story");
     if (s.point == "corners")
@@ -108,7 +108,7 @@ void place_words(const OutputSelector& s, std::string& place, std::string& which
       which = "largest storey";
     return;
   }
-  if (s.kind == OutputSelector::Kind::kElement) {
+  if (s.kind == "element") {
     // "wall*": wall, "*~*" (pairs of structures) and "contacts": contact; wildcards make a group.
     std::string name = s.where;
     const bool group = name.find_first_of("*?|") != std::string::npos || name == "contacts";
@@ -126,12 +126,8 @@ void place_words(const OutputSelector& s, std::string& place, std::string& which
 
 std::string output_words(const std::string& selector) {
   if (selector.empty()) return "";
-  OutputSelector s;
-  try {
-    s = parse_output_selector(selector);
-  } catch (const std::exception&) {
-    return "";
-  }
+  const StudyTableSelector s = parse_table_selector(selector);
+  if (s.kind.empty()) return "";
   std::string place, which;
   place_words(s, place, which);
   // A sum names its place after the comma; impacts are counted, not peaks.

@@ -40,6 +40,39 @@ void selectors_from_study_file(const std::string& file, StudyTable& table) {
 
 }  // namespace
 
+StudyTableSelector parse_table_selector(const std::string& text) {
+  StudyTableSelector out;
+  out.text = text;
+  OutputSelector s;
+  try {
+    s = parse_output_selector(text);
+  } catch (const std::exception&) {
+    return out;
+  }
+  switch (s.kind) {
+    case OutputSelector::Kind::kLevel:
+      out.kind = "level";
+      break;
+    case OutputSelector::Kind::kStory:
+      out.kind = "story";
+      break;
+    case OutputSelector::Kind::kElement:
+      out.kind = "element";
+      break;
+    case OutputSelector::Kind::kEnergy:
+      out.kind = "energy";
+      break;
+    case OutputSelector::Kind::kGround:
+      out.kind = "ground";
+      break;
+  }
+  out.where = s.where;
+  out.point = s.point;
+  out.quantity = s.quantity;
+  out.sum = s.sum;
+  return out;
+}
+
 StudyTable read_study_table(const std::string& db_path) {
   using Reason = StudyTableError::Reason;
   if (!std::filesystem::exists(db_path))

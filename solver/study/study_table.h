@@ -51,6 +51,19 @@ struct StudyTable {
   std::vector<StudyTableRow> rows;  // in case order
 };
 
+// An output selector in parts (solver/study/study_outputs.h's grammar) in std types: what a
+// program that shows results needs to name a column in words (post/study_words.h).
+struct StudyTableSelector {
+  std::string text;   // as written ("sum:wall*.impacts")
+  std::string kind;   // "level", "story", "element", "energy", "ground"; "" when it does not parse
+  std::string where;  // "base", "stories" (also for "columns"), "wall*", ...
+  std::string point;  // 3D plan point or column set ("corners", "A1"); "" for none
+  std::string quantity;
+  bool sum = false;  // "sum:" over the matched elements
+};
+// The parts of `text`; kind "" (and the rest empty) when it does not parse. Never throws.
+StudyTableSelector parse_table_selector(const std::string& text);
+
 // The runs table of the study database at `db_path`. Throws StudyTableError:
 // "<path>: study database not found", "<path>: not a study database: <why>" or, when the runs
 // cannot be read, the store's own message.
