@@ -40,10 +40,27 @@ void draw_polar_axes(const PolarFrame& f, const std::vector<double>& r_ticks,
                          HAlign::kCentre,
                          VAlign::kCentre});
   }
-  // Radial axis title just outside the circle, past the radial tick labels on the 15 deg ray.
+  // The radial ticks' unit just outside the circle, past their labels on the 15 deg ray; the
+  // whole radial title (in words, long) in the bottom-left corner, clear of the angle labels.
+  const std::size_t open = radial_title.rfind('[');
+  const bool unit =
+      open != std::string::npos && !radial_title.empty() && radial_title.back() == ']';
   const Point2 at = f.to_pixel(8.0, f.r_hi);
-  fig.texts.push_back(
-      {{at.x + 14, at.y - 4}, radial_title, 12, kBlack, HAlign::kLeft, VAlign::kBottom});
+  fig.texts.push_back({{at.x + 14, at.y - 4},
+                       unit ? radial_title.substr(open) : radial_title,
+                       12,
+                       kBlack,
+                       HAlign::kLeft,
+                       VAlign::kBottom});
+  if (unit)
+    fig.texts.push_back(
+        {{12, 10}, "radius: " + radial_title, 12, kBlack, HAlign::kLeft, VAlign::kBottom});
+}
+
+void draw_note(const std::string& note, Figure& fig) {
+  if (!note.empty())
+    fig.texts.push_back(
+        {{fig.width - 12.0, 10}, note, 10, {110, 110, 110}, HAlign::kRight, VAlign::kBottom});
 }
 
 std::vector<Point2> curve_points(const PolarFrame& f, const std::vector<double>& angle,
@@ -133,6 +150,7 @@ Figure polar_envelope_figure(const PolarEnvelopeData& data, int width, int heigh
   for (const PolarBand& b : data.bands) shade(b.angle_deg, b.lo, b.hi, b.colour);
   shade(data.band_angle_deg, data.band_lo, data.band_hi, {222, 228, 240});
   draw_polar_axes(f, ticks, data.quantity, fig);
+  draw_note(data.note, fig);
   int index = 0;
   std::vector<std::pair<std::string, Rgb>> legend;
   for (const PolarCurve& c : data.curves) {
@@ -207,6 +225,7 @@ Figure polar_contour_figure(const PolarContourData& data, int width, int height,
   const std::size_t every = std::max<std::size_t>(1, (nr + 5) / 6);
   for (std::size_t i = 0; i < nr; i += every) r_ticks.push_back(data.radius[i]);
   draw_polar_axes(f, r_ticks, data.radius_title, fig);
+  draw_note(data.note, fig);
   for (Polyline& l : fig.lines)
     if (l.colour == kGrid) l.colour = {255, 255, 255};  // grid over colour: white
   for (Text& t : fig.texts)

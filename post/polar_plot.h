@@ -42,6 +42,7 @@ struct PolarEnvelopeData {
   std::vector<double> band_angle_deg, band_lo, band_hi;
   // Further bands (ensemble min-max per curve), shaded in their colours under everything.
   std::vector<PolarBand> bands;
+  std::string note;  // small, grey, bottom right (the study's column and selector)
 };
 
 Figure polar_envelope_figure(const PolarEnvelopeData& data, int width = 800, int height = 700,
@@ -54,6 +55,7 @@ struct PolarContourData {
   std::vector<double> angle_deg;  // ascending, n_a
   std::vector<double> radius;     // ascending (the gaps), n_r
   std::vector<double> value;      // n_r x n_a, row-major (radius major); NaN = no data (grey)
+  std::string note;               // small, grey, bottom right (the study's column and selector)
 };
 
 // Cells are centred on the data points (edges half-way between neighbours); a gap range that

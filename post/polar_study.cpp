@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "post/study_words.h"
 #include "solver/study/study_table.h"
 
 namespace isopound::post {
@@ -34,6 +35,13 @@ bool is_angle_name(std::string n) {
   std::transform(n.begin(), n.end(), n.begin(), ::tolower);
   return n == "angle" || n == "incidence" || n == "theta" ||
          (n.size() >= 5 && n.compare(n.size() - 5, 5, "angle") == 0);
+}
+
+// The study file's selector of an output column ("" when unknown).
+std::string selector_of(const StudyTable& table, const std::string& column) {
+  const auto it = std::find(table.outputs.begin(), table.outputs.end(), column);
+  const std::size_t i = static_cast<std::size_t>(it - table.outputs.begin());
+  return i < table.output_selectors.size() ? table.output_selectors[i] : "";
 }
 
 // The display unit of an output column from its selector's quantity; SI when it is unknown.
@@ -78,6 +86,20 @@ DisplayUnit display_unit_of(const std::string& quantity) {
   if (is({"dissipated_energy", "friction_dissipated_energy", "impact_dissipated_energy", "input",
           "kinetic", "elastic", "viscous", "hysteretic", "error"}))
     return {"kJ", 1e3};
+  return {"SI", 1.0};
+}
+
+DisplayUnit axis_display_unit(const std::string& axis) {
+  std::string n = axis;
+  std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (n.find("gap") != std::string::npos || n.find("thickness") != std::string::npos || n == "uy" ||
+      n == "u_y")
+    return {"cm", 0.01};
+  if (n == "angle" || n == "incidence" || n == "theta" ||
+      (n.size() >= 5 && n.compare(n.size() - 5, 5, "angle") == 0))
+    return {"deg", std::numbers::pi / 180.0};
+  if (n == "qw" || n.rfind("xi", 0) == 0) return {"%", 0.01};
+  if (n == "tb" || n == "period" || n == "duration") return {"s", 1.0};
   return {"SI", 1.0};
 }
 
@@ -215,7 +237,12 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
   }
   const std::vector<double> angles(angles_set.begin(), angles_set.end());
   const std::vector<double> radii(radii_set.begin(), radii_set.end());
-  const std::string qtitle = opt.quantity + " [" + unit.unit + "]";
+  // Titles in words with units (study_words.h), the column's key beside them; the key alone when
+  // the study file is gone.
+  const std::string selector = selector_of(table, opt.quantity);
+  const std::string qtitle = output_title(selector, opt.quantity, unit.unit);
+  const std::string qwords = output_words(selector);
+  const std::string what = qwords.empty() ? opt.quantity : capitalised(qwords);
   const auto idx = [](const std::vector<double>& v, double x) {
     return static_cast<std::size_t>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
   };
@@ -252,7 +279,7 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     const bool band = ens.band();
     const bool ens_mean = ens.mean >= 0 && q != table.outputs.end();
     PolarEnvelopeData& e = result.envelope;
-    e.title = opt.quantity + " against incidence angle";
+    e.title = what + " against incidence angle";
     e.quantity = qtitle;
     const auto name = [&](std::size_t g) { return groups[g].empty() ? opt.quantity : groups[g]; };
     csv << "angle_deg";
@@ -319,10 +346,7 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     }
   } else {
     // Mean over the groups (records or cases) at each (radius, angle).
-    const DisplayUnit runit = [&] {
-      std::string n = table.axes[radial];
-      return n.find("gap") != std::string::npos ? DisplayUnit{"cm", 0.01} : DisplayUnit{"SI", 1.0};
-    }();
+    const DisplayUnit runit = axis_display_unit(table.axes[radial]);
     std::vector<double> sum(angles.size() * radii.size(), 0.0);
     std::vector<int> n(sum.size(), 0);
     for (const Row& r : rows) {
@@ -332,10 +356,10 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
       ++n[k];
     }
     PolarContourData& c = result.contour;
-    c.title = opt.quantity + " against incidence angle and " + table.axes[radial];
+    c.title = what + " against incidence angle and " + axis_words(table.axes[radial]);
     if (groups.size() > 1) c.title += " (mean of " + std::to_string(groups.size()) + ")";
     if (ens.mean >= 0) c.title += ", ensemble mean";
-    c.radius_title = table.axes[radial] + " [" + runit.unit + "]";
+    c.radius_title = axis_words(table.axes[radial]) + " [" + runit.unit + "]";
     c.value_title = qtitle;
     c.angle_deg = angles;
     for (double r : radii) c.radius.push_back(r / runit.divisor);
@@ -356,6 +380,8 @@ PolarStudyResult read_polar_study(const std::string& db_path, const PolarStudyOp
     result.envelope.title += " (where " + where + ")";
     result.contour.title += " (where " + where + ")";
   }
+  if (!qwords.empty())  // the study's own names, small
+    result.envelope.note = result.contour.note = opt.quantity + " = " + selector;
   result.csv = csv.str();
   return result;
 }

@@ -40,6 +40,9 @@ struct DisplayUnit {
 };
 // The display unit of a selector's quantity ("displacement": cm, ...); {"SI", 1} when unknown.
 DisplayUnit display_unit_of(const std::string& quantity);
+// The display unit of a numeric axis from its name (axes hold SI, docs/studies.md): cm for gaps,
+// thicknesses and uy, deg for angles, % for QW and xi*, s for Tb, period and duration; else SI.
+DisplayUnit axis_display_unit(const std::string& axis);
 
 struct PolarStudyResult {
   PolarEnvelopeData envelope;  // when contour_axis is ""

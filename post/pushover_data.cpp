@@ -25,6 +25,31 @@ const std::vector<double>& PushoverData::column(const std::string& name) const {
   return values[static_cast<std::size_t>(c)];
 }
 
+std::vector<double> PushoverData::superstructure_drift() const {
+  std::vector<double> sum(rows(), 0.0);
+  for (int k = 1; k <= storeys; ++k) {
+    const std::vector<double>& d = column("story" + std::to_string(k) + "_drift_m");
+    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += d[i];
+  }
+  return sum;
+}
+
+std::vector<double> PushoverData::bearing_displacement() const {
+  std::vector<double> b = superstructure_drift();
+  const std::vector<double>& roof = roof_displacement();
+  for (std::size_t i = 0; i < b.size(); ++i) b[i] = roof[i] - b[i];
+  return b;
+}
+
+bool PushoverData::isolated() const {
+  if (storeys == 0) return false;
+  const std::vector<double> b = bearing_displacement();
+  const std::vector<double>& roof = roof_displacement();
+  for (std::size_t i = 0; i < b.size(); ++i)
+    if (std::abs(b[i]) > kIsolatedShare * std::abs(roof[i])) return true;
+  return false;
+}
+
 namespace {
 
 // The columns every pushover.csv starts with.

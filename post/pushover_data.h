@@ -46,6 +46,18 @@ struct PushoverData {
   const std::vector<double>& roof_displacement() const { return column("roof_displacement_m"); }
   const std::vector<double>& roof_drift_ratio() const { return column("roof_drift_ratio"); }
   const std::vector<double>& base_shear() const { return column("base_shear_N"); }
+
+  // An isolated building's split of the roof displacement (docs/yielding-storeys.md): the
+  // superstructure's drift, the storeys' drifts story<k>_drift_m summed (the roof relative to the
+  // base slab; with isolation_level k > 0 the substructure's storeys too), and the bearings'
+  // share, the roof displacement less that sum. Each storey's drift is taken at its upper
+  // level's centre of mass, so the split is exact when the levels' centres of mass lie on one
+  // vertical line. A fixed-base building's bearings' share is 0 (up to the CSV's 10 digits).
+  std::vector<double> superstructure_drift() const;
+  std::vector<double> bearing_displacement() const;
+  // The bearings' share exceeds kIsolatedShare of the roof displacement at some row.
+  bool isolated() const;
+  static constexpr double kIsolatedShare = 0.01;
 };
 
 // Reads DIR/pushover.csv and DIR/pushover.json. Throws PushoverDataError naming the file (and the

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "post/polar_study.h"
+#include "post/study_words.h"
 #include "solver/io/units.h"
 
 namespace isopound::post {
@@ -46,11 +47,6 @@ std::string cell_text(const StudyTableCell& c) {
   return c.numeric && c.text.empty() ? number_text(c.number) : c.text;
 }
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 // --unit / --x-unit: polar's unit names, and deg for angle axes (stored in rad).
 DisplayUnit named_unit(const std::string& unit, const char* option) {
   if (unit == "deg") return {"deg", std::numbers::pi / 180.0};
@@ -61,20 +57,6 @@ DisplayUnit named_unit(const std::string& unit, const char* option) {
                          "': not a unit this command knows; use m, cm, mm, m/s, g, m/s2, N, kN, "
                          "MN, %, -, J, kJ, MJ, rad, deg, m2, s or SI");
   }
-}
-
-// The display unit of a numeric axis from its name: sweep axes hold SI (docs/studies.md).
-DisplayUnit axis_unit(const std::string& axis) {
-  const std::string n = lower(axis);
-  if (n.find("gap") != std::string::npos || n.find("thickness") != std::string::npos || n == "uy" ||
-      n == "u_y")
-    return {"cm", 0.01};
-  if (n == "angle" || n == "incidence" || n == "theta" ||
-      (n.size() >= 5 && n.compare(n.size() - 5, 5, "angle") == 0))
-    return {"deg", std::numbers::pi / 180.0};
-  if (n == "qw" || n.rfind("xi", 0) == 0) return {"%", 0.01};
-  if (n == "tb" || n == "period" || n == "duration") return {"s", 1.0};
-  return {"SI", 1.0};
 }
 
 // A --where value against a cell: labels by text; numbers by value within 1e-9 (relative), the
@@ -155,6 +137,9 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
     data.notes.push_back("'" + opt.output + "' itself is not in the table: its ensemble mean '" +
                          table.outputs[ens.mean] + "' is drawn");
   data.band = ens.band();
+  if (q != table.outputs.end() &&
+      static_cast<std::size_t>(q - table.outputs.begin()) < table.output_selectors.size())
+    data.output_selector = table.output_selectors[q - table.outputs.begin()];
   const DisplayUnit unit =
       !opt.unit.empty() ? named_unit(opt.unit, "--unit")
                         : (q != table.outputs.end() && static_cast<std::size_t>(value_column) <
@@ -162,7 +147,7 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
                                ? display_unit_of(table.output_quantities[value_column])
                                : DisplayUnit{"SI", 1.0});
   const DisplayUnit xunit =
-      opt.x_unit.empty() ? axis_unit(opt.x_axis) : named_unit(opt.x_unit, "--x-unit");
+      opt.x_unit.empty() ? axis_display_unit(opt.x_axis) : named_unit(opt.x_unit, "--x-unit");
   data.unit = unit.unit;
   data.x_unit = xunit.unit;
 
@@ -227,7 +212,7 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
     varying.push_back(table.axes[a] + " (" + std::to_string(levels.size()) +
                       " values: " + join(levels, 6) + ")");
     const StudyTableCell& first = rows.front()->axes[a];
-    const DisplayUnit au = axis_unit(table.axes[a]);
+    const DisplayUnit au = axis_display_unit(table.axes[a]);
     const std::string shown =
         first.numeric && first.text.empty() && au.unit != "SI"
             ? number_text(axis_display(first.number, au.divisor)) + " " + au.unit
@@ -256,7 +241,7 @@ SweepPlotData sweep_plot_data(const StudyTable& table, const std::string& db_pat
   };
   const std::vector<std::string> groups =
       g >= 0 ? levels_of(rows, g) : std::vector<std::string>{""};
-  const DisplayUnit gunit = g >= 0 ? axis_unit(opt.group_axis) : DisplayUnit{};
+  const DisplayUnit gunit = g >= 0 ? axis_display_unit(opt.group_axis) : DisplayUnit{};
   for (const std::string& level : groups) {
     std::vector<const StudyTableRow*> in;
     for (const StudyTableRow* r : rows)
@@ -330,16 +315,31 @@ std::string sweep_plot_csv(const SweepPlotData& d) {
   return csv;
 }
 
+std::string sweep_plot_x_title(const SweepPlotData& d) {
+  return axis_words(d.x_axis) + " [" + d.x_unit + "]";
+}
+
+std::string sweep_plot_y_title(const SweepPlotData& d) {
+  return output_title(d.output_selector, d.output, d.unit);
+}
+
 std::string sweep_plot_title(const SweepPlotData& d) {
-  std::string t =
-      "Peak " + d.output + " [" + d.unit + "] against " + d.x_axis + " [" + d.x_unit + "]";
-  if (!d.group_axis.empty()) t += ", one curve per " + d.group_axis;
+  std::string t = capitalised(sweep_plot_y_title(d)) + " against " + sweep_plot_x_title(d);
+  if (!d.group_axis.empty()) t += ", one curve per " + axis_words(d.group_axis);
   return t;
 }
 
 std::string sweep_plot_subtitle(const SweepPlotData& d) {
-  std::string s;
-  for (const auto& w : d.where) s += (s.empty() ? "where " : ", ") + w.first + " = " + w.second;
+  // The study's own names first, small: the column and its selector.
+  std::string s = d.output_selector.empty() ? "" : d.output + " = " + d.output_selector;
+  bool where = false;
+  for (const auto& w : d.where) {
+    s += (s.empty() ? ""
+          : where   ? ", "
+                    : "; ") +
+         std::string(where ? "" : "where ") + w.first + " = " + w.second;
+    where = true;
+  }
   if (d.band) {
     if (!s.empty()) s += "; ";
     bool member0 = false;

@@ -41,7 +41,8 @@ struct SweepCurve {
 
 struct SweepPlotData {
   std::string output, x_axis, group_axis;
-  std::string unit, x_unit;  // display units, e.g. "cm"
+  std::string output_selector;  // the study file's selector of `output` ("" when unknown)
+  std::string unit, x_unit;     // display units, e.g. "cm"
   std::vector<std::pair<std::string, std::string>> where;
   bool band = false;  // ensemble min–max bands (the study has ensembles)
   std::vector<SweepCurve> curves;
@@ -58,9 +59,12 @@ SweepPlotData read_sweep_plot(const std::string& db_path, const SweepPlotOptions
 // [group,] x, output [, member0, ens_min, ens_mean, ens_max].
 std::string sweep_plot_csv(const SweepPlotData& data);
 
-// What is drawn, for the figure: the title (quantity with unit against the axis, grouping) and
-// the subtitle (the --where filters and what line and band are).
+// What is drawn, for the figure, in words with units (study_words.h): the title (quantity against
+// the axis, grouping), the subtitle (the study column and its selector, the --where filters and
+// what line and band are) and the two axis titles.
 std::string sweep_plot_title(const SweepPlotData& data);
 std::string sweep_plot_subtitle(const SweepPlotData& data);
+std::string sweep_plot_x_title(const SweepPlotData& data);
+std::string sweep_plot_y_title(const SweepPlotData& data);
 
 }  // namespace isopound::post

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "post/study_words.h"
+
 namespace isopound::post {
 
 Rgb band_tint(Rgb c) {
@@ -16,8 +18,8 @@ Rgb band_tint(Rgb c) {
 Figure sweep_plot_figure(const SweepPlotData& d, int width, int height, PanelFrame* frame) {
   Panel panel;
   panel.title = sweep_plot_subtitle(d);
-  panel.x_title = d.x_axis + " [" + d.x_unit + "]";
-  panel.y_title = "peak " + d.output + " [" + d.unit + "]";
+  panel.x_title = sweep_plot_x_title(d);
+  panel.y_title = sweep_plot_y_title(d);
   panel.legend_at = Panel::LegendAt::kBest;
   const bool one = d.curves.size() == 1;
   // Band extents first, unlabelled and undrawn (width 0): they only widen the y range.
@@ -62,7 +64,9 @@ Figure sweep_plot_figure(const SweepPlotData& d, int width, int height, PanelFra
       panel.series.push_back(std::move(s));
       continue;
     }
-    Series s = line_series(c.label.empty() ? d.output : c.label, c.x, c.y);
+    const std::string words = output_words(d.output_selector);
+    Series s =
+        line_series(c.label.empty() ? (words.empty() ? d.output : words) : c.label, c.x, c.y);
     s.colour = colour;
     s.width = 2.0;
     if (markers) {

@@ -48,6 +48,9 @@ outputs: [base.displacement, stories.drift_ratio, energy.hysteretic]
   EXPECT_EQ(table.axes, (std::vector<std::string>{"uy", "variant"}));
   EXPECT_EQ(table.output_quantities,
             (std::vector<std::string>{"displacement", "drift_ratio", "hysteretic"}));
+  EXPECT_EQ(
+      table.output_selectors,
+      (std::vector<std::string>{"base.displacement", "stories.drift_ratio", "energy.hysteretic"}));
   const std::vector<RunRow> runs = store.read_runs();
   ASSERT_EQ(table.rows.size(), runs.size());
   ASSERT_EQ(runs.size(), 4u);
@@ -74,6 +77,18 @@ outputs: [base.displacement, stories.drift_ratio, energy.hysteretic]
   fs::remove(dir / "study.yaml");
   const StudyTable orphan = read_study_table(db.string());
   EXPECT_EQ(orphan.output_quantities, (std::vector<std::string>(3, "")));
+  EXPECT_EQ(orphan.output_selectors, (std::vector<std::string>(3, "")));
+  // Selectors in parts for post's words (std types only); a bad one is kind "".
+  const StudyTableSelector s = parse_table_selector("sum:wall*.impacts");
+  EXPECT_EQ(s.kind, "element");
+  EXPECT_EQ(s.where, "wall*");
+  EXPECT_EQ(s.quantity, "impacts");
+  EXPECT_TRUE(s.sum);
+  const StudyTableSelector c = parse_table_selector("story2.corners.drift_ratio");
+  EXPECT_EQ(c.kind, "story");
+  EXPECT_EQ(c.where, "story2");
+  EXPECT_EQ(c.point, "corners");
+  EXPECT_EQ(parse_table_selector("no dot").kind, "");
   EXPECT_EQ(orphan.outputs, table.outputs);
   EXPECT_EQ(orphan.rows.size(), table.rows.size());
   fs::remove_all(dir);  // kept when an assertion failed above

@@ -196,7 +196,8 @@ int run(const std::string& model_path, const std::string& out_dir,
       PlanOptions options;
       options.title = "Site plan of " + fs::path(model_path).filename().string();
       options.angle = angle;
-      const post::Figure figure = plan_figure(site, properties, clearances, options);
+      const post::Figure figure =
+          plan_figure(site, properties, clearances, struck_column_sites(*model.config), options);
       post::PrivateDisplay display(false);
       const std::string png = (fs::path(out_dir) / "plan.png").string();
       post::render_png(figure, png);

@@ -15,10 +15,12 @@ namespace {
 using post::Point2;
 using post::Rgb;
 
-constexpr double kLegendWidth = 330;  // px
-constexpr double kMargin = 50;        // px
-constexpr double kTitleHeight = 50;   // px
-constexpr double kBottom = 90;        // px: scale bar
+constexpr double kLegendWidth = 330;        // px
+constexpr double kMargin = 50;              // px
+constexpr double kTitleHeight = 50;         // px
+constexpr double kBottom = 90;              // px: scale bar
+constexpr double kStruckMinPx = 16;         // px: a struck column's mark at least this diagonal
+constexpr double kLegendWidthStruck = 420;  // px: room for the struck slabs' lines
 
 Rgb tint(Rgb c, double f) {
   const auto mix = [f](unsigned char v) {
@@ -66,6 +68,44 @@ void arrow(post::Figure& f, Point2 from, Point2 to, Rgb colour, double width) {
                        width});
 }
 
+// "3.2 m": an elevation as the configs write them.
+std::string metres(double z) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g m", z);
+  return buf;
+}
+
+// The struck columns at one plan position: every storey of `struck` struck there.
+struct StruckPlace {
+  int struck = -1, striker = -1;
+  std::vector<Vec2> section_W;
+  int storey_lo = 0, storey_hi = 0;
+};
+
+Vec2 centroid_of(const std::vector<Vec2>& points) {
+  Vec2 c;
+  for (Vec2 p : points) c = c + (1.0 / static_cast<double>(points.size())) * p;
+  return c;
+}
+
+std::vector<StruckPlace> struck_places(const std::vector<StruckColumnSite>& sites) {
+  std::vector<StruckPlace> places;
+  for (const StruckColumnSite& s : sites) {
+    const Vec2 c = centroid_of(s.section_W);
+    const auto it = std::find_if(places.begin(), places.end(), [&](const StruckPlace& q) {
+      const Vec2 d = centroid_of(q.section_W);
+      return q.struck == s.struck && std::hypot(d.x - c.x, d.y - c.y) < 1e-6;
+    });
+    if (it == places.end()) {
+      places.push_back({s.struck, s.striker, s.section_W, s.storey, s.storey});
+    } else {
+      it->storey_lo = std::min(it->storey_lo, s.storey);
+      it->storey_hi = std::max(it->storey_hi, s.storey);
+    }
+  }
+  return places;
+}
+
 }  // namespace
 
 Rgb slab_fill(int structure) {
@@ -73,7 +113,8 @@ Rgb slab_fill(int structure) {
 }
 
 post::Figure plan_figure(const Site& site, const std::vector<StructureProperties>& properties,
-                         const std::vector<Clearance>& clearances, const PlanOptions& options,
+                         const std::vector<Clearance>& clearances,
+                         const std::vector<StruckColumnSite>& struck, const PlanOptions& options,
                          PlanView* view_out) {
   post::Figure f;
   f.width = options.width;
@@ -95,7 +136,8 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
   const double pad = 0.08 * std::max({hi.x - lo.x, hi.y - lo.y, 1.0});
   lo = lo - Vec2{pad, pad};
   hi = hi + Vec2{pad, pad};
-  const double plot_w = f.width - kLegendWidth - 2 * kMargin;
+  const double legend_width = struck.empty() ? kLegendWidth : kLegendWidthStruck;
+  const double plot_w = f.width - legend_width - 2 * kMargin;
   const double plot_h = f.height - kTitleHeight - kBottom;
   PlanView view;
   view.scale = std::min(plot_w / (hi.x - lo.x), plot_h / (hi.y - lo.y));
@@ -145,6 +187,72 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
   for (const PlanSlab& s : site.slabs)
     for (const PlanColumn& c : s.columns) draw_column(c);
   for (const PlanColumn& c : site.ground_columns) draw_column(c);
+
+  // Struck columns: each marked in kStruckColour over its column (a marker: above the axis
+  // stroke), at least kStruckMinPx across (a mark round it would run into the facing line across
+  // the gap). One label per facing line (the columns of one struck structure, striker and storeys):
+  // beyond its last column along the line, on the side away from the striking structure.
+  struct Line {
+    const StruckPlace* place;  // the last along the line so far
+    Vec2 away, along;
+    double reach, half_px;
+  };
+  std::vector<Line> lines;
+  const std::vector<StruckPlace> places = struck_places(struck);
+  for (const StruckPlace& q : places) {
+    const Vec2 c = centroid_of(q.section_W);
+    double diagonal = 0.0;
+    for (Vec2 p : q.section_W) diagonal = std::max(diagonal, 2 * std::hypot(p.x - c.x, p.y - c.y));
+    const double grow_by = std::max(1.0, kStruckMinPx / (view.scale * diagonal));
+    std::vector<Point2> outline;
+    for (Vec2 p : q.section_W) outline.push_back(px(c + grow_by * (p - c)));
+    f.markers.push_back({outline, kStruckColour, {0, 0, 0}, 1.0});
+    Vec2 striker_at, away{1, 0};
+    int n = 0;
+    for (const PlanSlab& sl : site.slabs)
+      if (sl.structure == q.striker)
+        for (Vec2 p : sl.plan_W) striker_at = striker_at + p, ++n;
+    if (n > 0) {
+      striker_at = (1.0 / n) * striker_at;
+      const double dx = c.x - striker_at.x, dy = c.y - striker_at.y;
+      away = std::abs(dx) >= std::abs(dy) ? Vec2{dx > 0 ? 1.0 : -1.0, 0}
+                                          : Vec2{0, dy > 0 ? 1.0 : -1.0};
+    }
+    const Vec2 along = away.x != 0 ? Vec2{0, 1} : Vec2{1, 0};  // north or east
+    const double reach = along.x * c.x + along.y * c.y;
+    const auto same = [&](const Line& l) {
+      return l.place->struck == q.struck && l.place->striker == q.striker &&
+             l.place->storey_lo == q.storey_lo && l.place->storey_hi == q.storey_hi &&
+             l.away.x == away.x && l.away.y == away.y;
+    };
+    const auto it = std::find_if(lines.begin(), lines.end(), same);
+    const double half_px = 0.25 * grow_by * diagonal * view.scale * std::sqrt(2.0);
+    if (it == lines.end())
+      lines.push_back({&q, away, along, reach, half_px});
+    else if (reach > it->reach)
+      *it = {&q, away, along, reach, half_px};
+  }
+  for (const Line& l : lines) {
+    const StruckPlace& q = *l.place;
+    const std::string text =
+        (q.storey_lo == q.storey_hi
+             ? "storey " + std::to_string(q.storey_lo)
+             : "storeys " + std::to_string(q.storey_lo) + "–" + std::to_string(q.storey_hi)) +
+        " struck";
+    const Point2 at = px(centroid_of(q.section_W));
+    const double off = l.half_px + 3;
+    // Beyond the last column along the line, from its centre away from the striker (the facing
+    // line's label starts as far the other way: the two stay apart across the gap).
+    const Point2 where{at.x + l.along.x * off + 2 * l.away.x,
+                       at.y + l.along.y * off + 2 * l.away.y};
+    f.texts.push_back({where, text, 11, kStruckColour,
+                       l.away.x > 0   ? post::HAlign::kLeft
+                       : l.away.x < 0 ? post::HAlign::kRight
+                                      : post::HAlign::kLeft,
+                       l.away.y > 0   ? post::VAlign::kBottom
+                       : l.away.y < 0 ? post::VAlign::kTop
+                                      : post::VAlign::kBottom});
+  }
 
   // Centres of mass and stiffness (per structure: the whole mass; the bearings' or storey 1's
   // centre of stiffness).
@@ -245,7 +353,7 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
       {{s1.x + 50, 49}, "x: east, y: north (plan frame W)", 12, {60, 60, 60}, post::HAlign::kLeft});
 
   // Legend.
-  const double lx = f.width - kLegendWidth + 10;
+  const double lx = f.width - legend_width + 10;
   double ly = f.height - kTitleHeight - 20;
   const auto entry = [&](const std::vector<Point2>& swatch, Rgb colour, const std::string& text) {
     std::vector<Point2> moved;
@@ -282,6 +390,42 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
     f.texts.push_back(
         {{lx + 34, ly}, "gap at rest (measured)", 13, {0, 0, 0}, post::HAlign::kLeft});
     ly -= 28;
+  }
+  // Struck columns: the swatch, then each striking slab (structure, level, elevation) and the
+  // storey it strikes between which floors, with how many columns.
+  if (!struck.empty()) {
+    f.markers.push_back({square({lx + 12, ly}, 6), kStruckColour, {0, 0, 0}, 1.0});
+    f.texts.push_back(
+        {{lx + 34, ly}, "struck column (a slab strikes it)", 13, {0, 0, 0}, post::HAlign::kLeft});
+    ly -= 22;
+    struct Group {
+      std::string slab, storey;  // the two lines
+      int columns = 0;
+    };
+    std::vector<Group> groups;
+    for (const StruckColumnSite& s : struck) {
+      char floors[64];
+      std::snprintf(floors, sizeof floors, " (%.3g–%.3g m)", s.z_lower, s.z_upper);
+      const Group g{s.striker_name + "/" + s.slab_level + " at z = " + metres(s.slab_elevation),
+                    "strikes " + s.struck_name + " storey " + std::to_string(s.storey) + floors, 1};
+      const auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& o) {
+        return o.slab == g.slab && o.storey == g.storey;
+      });
+      if (it == groups.end())
+        groups.push_back(g);
+      else
+        ++it->columns;
+    }
+    for (const Group& g : groups) {
+      f.texts.push_back({{lx + 34, ly}, g.slab, 11, kStruckColour, post::HAlign::kLeft});
+      f.texts.push_back({{lx + 46, ly - 14},
+                         g.storey + ": " + std::to_string(g.columns) + " columns",
+                         11,
+                         {0, 0, 0},
+                         post::HAlign::kLeft});
+      ly -= 34;
+    }
+    ly -= 6;
   }
   // L direction of the record pair (the arrow below the legend).
   if (options.angle) {

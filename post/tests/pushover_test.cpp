@@ -4,6 +4,7 @@
 // the file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -180,6 +181,76 @@ TEST(PostPushover, MarkersAreDrawnAtTheirPointsAndOnlyWhenThePointsExist) {
     EXPECT_GT(in_panel, 40);  // a 13-15 px marker around the point
     EXPECT_EQ(count_colour(b, colour, 30), 0);
   }
+  std::filesystem::remove_all(dir);
+}
+
+// An isolated building (configs/3d-xy5-yielding.yaml: bearings Q/W 5 %, columns yielding at 0.5 %
+// drift) pushed to 10 %: the roof travels 76 cm before a column yields, nearly all of it in the
+// bearings. The figure draws the capacity curve against the superstructure's drift (the storeys'
+// drifts summed, read here from the CSV), where first yield is at storey 1's 0.5 %, and a panel
+// of the base shear against the bearings' displacement (the rest of the roof's).
+TEST(PostPushover, IsolatedBuildingIsDrawnAgainstItsSuperstructureDriftBesideItsBearings) {
+  const auto dir = test::scratch_dir("pushover-isolated");
+  const auto r = test::run_solver(
+      "pushover " + (test::source_dir() / "configs" / "3d-xy5-yielding.yaml").string() +
+      " --target-drift 10% -o " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const PushoverData d = read_pushover(dir);
+  ASSERT_TRUE(d.isolated());
+  EXPECT_FALSE(read_pushover(thesis_pushover()).isolated());  // fixed base: as before
+  ASSERT_TRUE(d.first_yield.has_value());
+  const int row = d.first_yield->row;
+  // Independently: the storeys' drifts of the first-yield row from the CSV.
+  const std::vector<std::string>& cols = d.columns;
+  const auto at = [&](int k, const std::string& name) {
+    const std::size_t c = std::find(cols.begin(), cols.end(), name) - cols.begin();
+    return csv_row(dir / "pushover.csv", k).at(c);
+  };
+  double drift = 0.0;
+  for (int s = 1; s <= 3; ++s) drift += at(row, "story" + std::to_string(s) + "_drift_m");
+  const double bearings = at(row, "roof_displacement_m") - drift;
+  EXPECT_GT(d.first_yield->roof_displacement, 0.7);  // the 76 cm of the roof
+  EXPECT_LT(drift, 0.05);                            // a few cm of the superstructure's
+  // First yield where storey 1's columns reach their 0.5 % yield drift (pushed along x, no
+  // rotation: the columns' drift is the storey's): at or just past it, the row before below.
+  EXPECT_GE(at(row, "story1_drift_ratio"), 0.005);
+  EXPECT_LT(at(row - 1, "story1_drift_ratio"), 0.005);
+
+  std::vector<PanelFrame> frames;
+  const Figure fig = pushover_figure(d, &frames);
+  ASSERT_EQ(frames.size(), 3u);
+  const auto has = [&](const std::string& text) {
+    return std::any_of(fig.texts.begin(), fig.texts.end(),
+                       [&](const Text& t) { return t.text == text; });
+  };
+  EXPECT_TRUE(
+      has("superstructure drift: roof relative to the base slab [cm]   (1 % drift = 9.6 cm)"));
+  EXPECT_TRUE(has("bearing displacement: roof less superstructure drift [cm]"));
+  char label[96];
+  std::snprintf(label, sizeof label, "first yield (drift %.2f cm, %.1f kN)", drift * 100,
+                d.first_yield->base_shear / 1e3);
+  EXPECT_TRUE(has(label)) << label;
+  std::snprintf(label, sizeof label, "first yield (bearings %.2f cm)", bearings * 100);
+  EXPECT_TRUE(has(label)) << label;
+  // Panel 0's x axis spans the superstructure's drift (4 cm at the end), not the roof's 96 cm;
+  // panel 1's the bearings' 92 cm.
+  const double end_drift = d.superstructure_drift().back();
+  EXPECT_LT(frames[0].x_hi, 1.2 * end_drift * 100);
+  EXPECT_GE(frames[0].x_hi, end_drift * 100);
+  EXPECT_GE(frames[1].x_hi, d.bearing_displacement().back() * 100);
+  // The first-yield markers where those coordinates put them.
+  const auto marker_at = [&](Point2 p) {
+    return std::any_of(fig.markers.begin(), fig.markers.end(), [&](const Marker& m) {
+      if (!(m.fill == kFirstYieldColour)) return false;
+      Point2 c;
+      for (const Point2& q : m.points) c.x += q.x / m.points.size(), c.y += q.y / m.points.size();
+      return std::hypot(c.x - p.x, c.y - p.y) < 0.5;
+    });
+  };
+  const double shear_kN = d.first_yield->base_shear / 1e3;
+  EXPECT_TRUE(marker_at(frames[0].to_pixel(drift * 100, shear_kN)));
+  EXPECT_TRUE(marker_at(frames[1].to_pixel(bearings * 100, shear_kN)));
+  EXPECT_TRUE(marker_at(frames[2].to_pixel(drift * 100, at(row, "story1_drift_ratio") * 100)));
   std::filesystem::remove_all(dir);
 }
 

@@ -4,6 +4,7 @@
 // the PNG has one colour per curve.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -130,13 +131,27 @@ TEST_F(PostSweepPlot, CurvesAreTheTableValuesOnePerGroupInStudyOrder) {
   EXPECT_EQ(cm.unit, "cm");
   EXPECT_EQ(cm.x_unit, "cm");
   EXPECT_DOUBLE_EQ(cm.curves[1].y[2], d.curves[1].y[2] / 0.01);
-  EXPECT_EQ(sweep_plot_title(cm), "Peak u_base [cm] against gap [cm], one curve per variant");
-  EXPECT_EQ(sweep_plot_subtitle(cm), "where QW = 0.1");
+  // Titles in words with units (the study's selector), the column's key kept in the subtitle.
+  EXPECT_EQ(sweep_plot_title(cm),
+            "Peak base displacement [cm] against gap [cm], one curve per variant");
+  EXPECT_EQ(sweep_plot_subtitle(cm), "u_base = base.displacement; where QW = 0.1");
+  {
+    PanelFrame frame;
+    const Figure fig = sweep_plot_figure(cm, 1000, 640, &frame);
+    const auto has = [&](const std::string& text) {
+      return std::any_of(fig.texts.begin(), fig.texts.end(),
+                         [&](const Text& t) { return t.text == text; });
+    };
+    EXPECT_TRUE(has("peak base displacement [cm]"));  // y axis
+    EXPECT_TRUE(has("gap [cm]"));                     // x axis
+    EXPECT_FALSE(has("peak u_base [cm]"));
+  }
   // A wall peak is empty without walls: the free variant has no F_impact curve (and says so).
   o.output = "F_impact";
   const SweepPlotData f = sweep_plot_data(table, *plain_, o);
   ASSERT_EQ(f.curves.size(), 2u);
   EXPECT_EQ(f.curves[1].label, "soft");
+  EXPECT_EQ(sweep_plot_y_title(f), "peak wall force (largest wall) [kN]");
   ASSERT_EQ(f.notes.size(), 1u);
   EXPECT_NE(f.notes[0].find("free"), std::string::npos) << f.notes[0];
   // A numeric group axis: curves named with the level in its display unit; a --where value with
@@ -233,7 +248,8 @@ TEST_F(PostSweepPlot, EnsembleBandIsTheMembersMinMaxAndTheLineTheirMean) {
   const SweepPlotData d = read_sweep_plot(*ens_, o);
   ASSERT_TRUE(d.band);
   EXPECT_EQ(d.curves[0].y, d.curves[0].mean);
-  EXPECT_EQ(sweep_plot_subtitle(d), "lines: ensemble means, shaded: ensemble min–max");
+  EXPECT_EQ(sweep_plot_subtitle(d),
+            "u_base = base.displacement; lines: ensemble means, shaded: ensemble min–max");
 }
 
 TEST_F(PostSweepPlot, BadInputExitsTwoNamingTheOptionAndTheValue) {
@@ -283,7 +299,7 @@ TEST_F(PostSweepPlot, VaryingAxesLeftOpenAreDrawnAtTheFirstRunsValueWithANote) {
   ASSERT_EQ(open.notes.size(), 1u);
   EXPECT_NE(open.notes[0].find("QW (2 values: 0.05, 0.1); drawn at QW = 5 %"), std::string::npos)
       << open.notes[0];
-  EXPECT_EQ(sweep_plot_subtitle(open), "where QW = 5 %");
+  EXPECT_EQ(sweep_plot_subtitle(open), "u_base = base.displacement; where QW = 5 %");
   // No --group either: QW and variant at the first run's (5 %, KV), one curve, exit 0.
   const fs::path out = *dir_ / "open";
   const auto r = test::run_post("sweep-plot " + *plain_ + " --x gap --y u_base -o " + out.string());

@@ -12,31 +12,66 @@
 namespace isopound {
 namespace {
 
-// The selector quantity of each column in `outputs` ("" when the study file or its column is
-// missing or does not parse): only the display of a value depends on it, so nothing here throws.
-std::vector<std::string> quantities_from_study_file(const std::string& file,
-                                                    const std::vector<std::string>& outputs) {
-  std::vector<std::string> quantities(outputs.size());
-  if (file.empty() || !std::filesystem::exists(file)) return quantities;
+// The selector and its quantity of each column of table.outputs ("" when the study file or its
+// column is missing or does not parse): only the display of a value depends on them, so nothing
+// here throws.
+void selectors_from_study_file(const std::string& file, StudyTable& table) {
+  const std::vector<std::string>& outputs = table.outputs;
+  table.output_quantities.assign(outputs.size(), "");
+  table.output_selectors.assign(outputs.size(), "");
+  if (file.empty() || !std::filesystem::exists(file)) return;
   std::optional<Study> study;
   try {
     study.emplace(load_study_file(file));
   } catch (const std::exception&) {
-    return quantities;
+    return;
   }
   for (std::size_t i = 0; i < outputs.size(); ++i)
     for (const OutputSpec& o : study->outputs) {
       if (o.column != outputs[i]) continue;
       try {
-        quantities[i] = parse_output_selector(o.selector).quantity;
+        table.output_quantities[i] = parse_output_selector(o.selector).quantity;
+        table.output_selectors[i] = o.selector;
       } catch (const std::exception&) {
       }
       break;
     }
-  return quantities;
 }
 
 }  // namespace
+
+StudyTableSelector parse_table_selector(const std::string& text) {
+  StudyTableSelector out;
+  out.text = text;
+  OutputSelector s;
+  try {
+    s = parse_output_selector(text);
+  } catch (const std::exception&) {
+    return out;
+  }
+  switch (s.kind) {
+    case OutputSelector::Kind::kLevel:
+      out.kind = "level";
+      break;
+    case OutputSelector::Kind::kStory:
+      out.kind = "story";
+      break;
+    case OutputSelector::Kind::kElement:
+      out.kind = "element";
+      break;
+    case OutputSelector::Kind::kEnergy:
+      out.kind = "energy";
+      break;
+    case OutputSelector::Kind::kGround:
+      out.kind = "ground";
+      break;
+  }
+  out.where = s.where;
+  out.point = s.point;
+  out.quantity = s.quantity;
+  out.sum = s.sum;
+  return out;
+}
 
 StudyTable read_study_table(const std::string& db_path) {
   using Reason = StudyTableError::Reason;
@@ -59,7 +94,7 @@ StudyTable read_study_table(const std::string& db_path) {
   } catch (const StoreError& e) {
     throw StudyTableError(Reason::unreadable, e.what());
   }
-  table.output_quantities = quantities_from_study_file(study_file, table.outputs);
+  selectors_from_study_file(study_file, table);
   table.rows.reserve(runs.size());
   for (RunRow& r : runs) {
     StudyTableRow row;

@@ -45,8 +45,24 @@ struct StudyTable {
   // "drift_ratio", ...). "" when unknown: the study file is gone or unreadable, or holds no such
   // column (ensemble statistics c_ens_S are columns of the table, not of the study file).
   std::vector<std::string> output_quantities;
+  // Per output column: its selector as the study file writes it ("base.displacement",
+  // "sum:wall*.impacts"); "" when unknown (as output_quantities). For axis titles in words.
+  std::vector<std::string> output_selectors;
   std::vector<StudyTableRow> rows;  // in case order
 };
+
+// An output selector in parts (solver/study/study_outputs.h's grammar) in std types: what a
+// program that shows results needs to name a column in words (post/study_words.h).
+struct StudyTableSelector {
+  std::string text;   // as written ("sum:wall*.impacts")
+  std::string kind;   // "level", "story", "element", "energy", "ground"; "" when it does not parse
+  std::string where;  // "base", "stories" (also for "columns"), "wall*", ...
+  std::string point;  // 3D plan point or column set ("corners", "A1"); "" for none
+  std::string quantity;
+  bool sum = false;  // "sum:" over the matched elements
+};
+// The parts of `text`; kind "" (and the rest empty) when it does not parse. Never throws.
+StudyTableSelector parse_table_selector(const std::string& text);
 
 // The runs table of the study database at `db_path`. Throws StudyTableError:
 // "<path>: study database not found", "<path>: not a study database: <why>" or, when the runs

@@ -2,6 +2,7 @@
 // non-blank, and known features at the pixels the drawing's scale puts them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -26,7 +27,7 @@ PlanView view_of(const std::string& model_path, Site& site) {
   const auto clearances =
       check_site3d(*m.config, m.structures, site, site_limits(*m.config), problems);
   PlanView view;
-  plan_figure(site, properties, clearances, PlanOptions{}, &view);
+  plan_figure(site, properties, clearances, struck_column_sites(*m.config), PlanOptions{}, &view);
   return view;
 }
 
@@ -89,6 +90,66 @@ TEST(PrePlan, EastWallOfTheXY5SiteRightOfTheSlab) {
   // Beyond the wall: background again.
   EXPECT_TRUE(near(pixel({9.7, -1.5}), {255, 255, 255})) << "east of the wall";
   std::filesystem::remove_all(dir);
+}
+
+// configs/3d-floor-to-column.yaml: the building's floors 1-2 strike the neighbour's storeys 2-3,
+// the neighbour's floors 1-3 the building's storeys 1-3, four facing columns each (20 sites at 8
+// plan positions). Each position is drawn in the struck colour, labelled with its storeys;
+// the legend names every striking slab with its elevation and the storey it strikes.
+TEST(PrePlan, StruckColumnsOfAFloorToColumnSiteAreMarkedAndTheirSlabsNamed) {
+  ProblemList problems;
+  const ScannedModel m =
+      scan_model((source_dir() / "configs/3d-floor-to-column.yaml").string(), problems);
+  ASSERT_TRUE(m.config.has_value());
+  const Site site = site_plan(*m.config);
+  const std::vector<StruckColumnSite> sites = struck_column_sites(*m.config);
+  ASSERT_EQ(sites.size(), 20u);
+  PlanView view;
+  const post::Figure f =
+      plan_figure(site, structure_properties(*m.config), {}, sites, PlanOptions{}, &view);
+  // The struck columns: markers of kStruckColour centred on the sections (square: the mean of
+  // the corners), at least 16 px across the diagonal.
+  std::vector<post::Point2> marked;
+  for (const post::Marker& p : f.markers) {
+    if (!(p.fill == kStruckColour)) continue;
+    post::Point2 c;
+    for (const post::Point2& q : p.points) c.x += q.x / 4, c.y += q.y / 4;
+    EXPECT_GE(std::hypot(p.points[0].x - c.x, p.points[0].y - c.y), 7.9);
+    marked.push_back(c);
+  }
+  EXPECT_EQ(marked.size(), 9u);  // 8 positions and the legend's swatch
+  for (const StruckColumnSite& s : sites) {
+    SCOPED_TRACE(s.label());
+    Vec2 c;
+    for (Vec2 p : s.section_W) c = c + 0.25 * p;
+    const post::Point2 at = view.to_px(c);
+    EXPECT_TRUE(std::any_of(
+        marked.begin(), marked.end(),
+        [&](const post::Point2& m) { return std::hypot(m.x - at.x, m.y - at.y) < 0.5; }))
+        << "not marked at (" << at.x << ", " << at.y << ") px";
+  }
+  const auto has = [&](const std::string& text) {
+    return std::any_of(f.texts.begin(), f.texts.end(),
+                       [&](const post::Text& t) { return t.text == text; });
+  };
+  EXPECT_TRUE(has("struck column (a slab strikes it)"));
+  EXPECT_TRUE(has("building/floor 1 at z = 3.2 m"));
+  EXPECT_TRUE(has("building/floor 2 at z = 6.4 m"));
+  EXPECT_TRUE(has("east-neighbour/floor 3 at z = 9 m"));
+  EXPECT_TRUE(has("strikes east-neighbour storey 2 (3–6 m): 4 columns"));
+  EXPECT_TRUE(has("strikes building storey 3 (6.4–9.6 m): 4 columns"));
+  // One label per facing line, above its northmost column, on the side away from the striker.
+  for (const auto& [text, west] :
+       {std::pair{"storeys 1–3 struck", true}, std::pair{"storeys 2–3 struck", false}}) {
+    const auto t = std::find_if(f.texts.begin(), f.texts.end(),
+                                [&](const post::Text& x) { return x.text == text; });
+    ASSERT_NE(t, f.texts.end()) << text;
+    EXPECT_EQ(std::count_if(f.texts.begin(), f.texts.end(),
+                            [&](const post::Text& x) { return x.text == text; }),
+              1);
+    EXPECT_EQ(t->h, west ? post::HAlign::kRight : post::HAlign::kLeft) << text;
+    EXPECT_GT(t->at.y, view.to_px({0, 8.25}).y) << text;  // above the north column line
+  }
 }
 
 }  // namespace
