@@ -22,6 +22,10 @@ struct NamedFigure {
   std::vector<PanelFrame> frames{};  // where each panel's data lands (xy_figure's), for tests
 };
 
+// px per panel of time_histories.png: room for the curves below a legend of four or five lines
+// (Panel::legend_above_data).
+inline constexpr int kHistoryPanelHeight = 270;
+
 // time_histories.png and hysteresis.png (the latter only when the run has isolators or contacts);
 // a 3D run's figures are run_figures3d's (plot_run3d.h).
 std::vector<NamedFigure> run_figures(const RunData& run);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -79,6 +80,13 @@ struct RunData {
   bool three_d = false;
   Site3D site;
   ContactLog contact_log;
+  // 3D: the friction coefficients of each pair of the contact log as the model sets them (the
+  // contact law's; a bumper's contacts: its rubber's), by pair label. Absent: no friction
+  // (contact.friction false).
+  struct Friction {
+    double mu_static = 0.0, mu_kinetic = 0.0;
+  };
+  std::map<std::string, Friction> friction;
 
   std::size_t rows() const { return values.empty() ? 0 : values[0].size(); }
   int find(const std::string& label, const std::string& quantity) const;  // -1 when absent
