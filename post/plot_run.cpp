@@ -138,19 +138,43 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   mark_reported_peaks(drift, drift_peaks, 0.01, "%");
   panels.push_back(drift);
 
-  Panel acc{"Absolute accelerations", "time [s]", "absolute acceleration [g]", {}, true, true};
-  std::vector<std::optional<ReportedPeak>> acc_peaks;
+  // Absolute accelerations: an isolated base (tens of g where it strikes a wall) in a panel of
+  // its own, so that the floors and the ground set the axis of theirs.
+  const bool isolated = slab != main.levels.end();
+  Panel base_acc{short_label(base.label, run) + ": absolute acceleration",
+                 "time [s]",
+                 "absolute acceleration [g]",
+                 {},
+                 true,
+                 true};
+  Panel acc{
+      isolated ? "Absolute accelerations of the floors and the ground" : "Absolute accelerations",
+      "time [s]",
+      "absolute acceleration [g]",
+      {},
+      true,
+      true};
+  std::vector<std::optional<ReportedPeak>> acc_peaks, base_peaks;
   if (ag >= 0) {
-    acc.series.push_back({"ground", t, scaled(run.column(ag), kGravity), Rgb{150, 150, 150}, 1.0});
+    acc.series.push_back({"ground", t, scaled(run.column(ag), kGravity), Rgb{120, 120, 120}, 1.2});
     acc_peaks.push_back(reported_ground_peak(run, "pga_m_s2"));
   }
+  int level_index = 0;  // each level keeps its colour in whichever panel it is drawn
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels)
       if (l.a_abs >= 0) {
-        acc.series.push_back(
+        const bool own = isolated && &l == &base;
+        Panel& p = own ? base_acc : acc;
+        p.series.push_back(
             line_series(short_label(l.label, run), t, scaled(run.column(l.a_abs), kGravity)));
-        acc_peaks.push_back(reported_level_peak(run, l.label, "absolute_acceleration"));
+        p.series.back().colour = series_colour(++level_index);
+        (own ? base_peaks : acc_peaks)
+            .push_back(reported_level_peak(run, l.label, "absolute_acceleration"));
       }
+  if (isolated) {
+    mark_reported_peaks(base_acc, base_peaks, kGravity, "g");
+    panels.push_back(base_acc);
+  }
   mark_reported_peaks(acc, acc_peaks, kGravity, "g");
   panels.push_back(acc);
 
@@ -176,7 +200,8 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   std::vector<NamedFigure> out;
   const int rows = static_cast<int>(panels.size());
   NamedFigure th{"time_histories.png", {}, {}};
-  th.figure = xy_figure(panels, 1, 1000, 230 * rows + 40,
+  for (Panel& p : panels) p.legend_above_data = true;
+  th.figure = xy_figure(panels, 1, 1000, kHistoryPanelHeight * rows + 40,
                         "Time histories: " + run.dir.filename().string() + " (" +
                             sampled_every(run) + "; ◆ peaks over every step, summary.json)",
                         &th.frames);

@@ -282,11 +282,12 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
     if (!each)
       add(*bearings[far], short_label(bearings[far]->label, run) + far_text, Rgb{214, 39, 40}, 1.6);
     loops = {px, py, orbit};
-    out.push_back(
-        {"hysteresis.png",
-         xy_figure(loops, 3, 1500, 480,
-                   "Bearings: " + run.dir.filename().string() + " (" + sampled_every(run) + ")"),
-         {}});
+    NamedFigure hysteresis{"hysteresis.png", {}, {}};
+    hysteresis.figure =
+        xy_figure(loops, 3, 1500, 480,
+                  "Bearings: " + run.dir.filename().string() + " (" + sampled_every(run) + ")",
+                  &hysteresis.frames);
+    out.push_back(std::move(hysteresis));
   }
 
   // ---- contacts: F_N against the indentation δ_N and F_T against F_N per pair (event log)
@@ -349,11 +350,12 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
       contact_panels.push_back(pt);
     }
     const int rows_c = static_cast<int>(contact_panels.size() / 2);
-    out.push_back({"contacts.png",
-                   xy_figure(contact_panels, 2, 1100, 360 * rows_c + 40,
-                             "Contacts: " + run.dir.filename().string() +
-                                 " (event log: every step in contact)"),
-                   {}});
+    NamedFigure contacts{"contacts.png", {}, {}};
+    contacts.figure = xy_figure(
+        contact_panels, 2, 1100, 360 * rows_c + 40,
+        "Contacts: " + run.dir.filename().string() + " (event log: every step in contact)",
+        &contacts.frames);
+    out.push_back(std::move(contacts));
   }
 
   // ---- base slab trajectory: its displacements (centre of mass and corners) with the walls'

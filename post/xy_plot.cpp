@@ -147,6 +147,43 @@ std::size_t code_points(const std::string& s) {
   return n;
 }
 
+// A legend's width (px: wide enough for the longest label, inside the plot), its longest label
+// (characters) and its number of entries (0 without a legend).
+struct LegendSize {
+  double width = 0.0;
+  std::size_t longest = 0;
+  int entries = 0;
+};
+LegendSize legend_size(const Panel& panel, const PanelFrame& frame) {
+  LegendSize size;
+  for (const Series& s : panel.series) {
+    size.longest = std::max(size.longest, code_points(s.label));
+    size.entries += panel.legend && !s.label.empty();
+  }
+  size.width = std::min(std::max(150.0, 36.0 + kCharWidth * size.longest), frame.width - 4.0);
+  return size;
+}
+
+// Panel::legend_above_data: the top of the y range raised (the range at most doubled) until the
+// data (points and marks) under a top-right legend's span of x lie below its box.
+void raise_above_legend(const Panel& panel, PanelFrame& frame) {
+  const LegendSize legend = legend_size(panel, frame);
+  if (legend.entries == 0) return;
+  const double per_px_x = (frame.x_hi - frame.x_lo) / frame.width,
+               per_px_y = (frame.y_hi - frame.y_lo) / frame.height;
+  const double x_from = frame.x_hi - (legend.width + 4.0) * per_px_x;
+  double top = -std::numeric_limits<double>::infinity();
+  for (const Series& s : panel.series)
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+      if (s.x[i] >= x_from && std::isfinite(s.y[i])) top = std::max(top, s.y[i]);
+  for (const Mark& m : panel.marks)
+    if (m.x + 0.5 * m.size * per_px_x >= x_from) top = std::max(top, m.y + 0.5 * m.size * per_px_y);
+  // The legend's box reaches 16 px per entry + 10 px below the top; 4 px more to the data.
+  const double band = std::min(0.5, (16.0 * legend.entries + 14.0) / frame.height);
+  if (top - frame.y_lo > (1.0 - band) * (frame.y_hi - frame.y_lo))
+    frame.y_hi = frame.y_lo + (top - frame.y_lo) / (1.0 - band);
+}
+
 // Each Mark's diamond, and its text where it is clear: candidate places beside the marker (right,
 // then left, on its level, then 1, 2, ... lines below and above) scored by how much of the text
 // box lies on the legend, on texts already placed, on other marks' diamonds or outside the plot
@@ -188,7 +225,8 @@ void place_marks(const Panel& panel, PanelFrame& frame, Figure& fig) {
     };
     Box best;
     double best_cover = std::numeric_limits<double>::infinity();
-    for (int step = 0; step <= 8 && best_cover > 0.0; ++step) {
+    const int steps = 2 * static_cast<int>(frame.height / 16.0);  // every line of the plot
+    for (int step = 0; step <= steps && best_cover > 0.0; ++step) {
       // 0, -1, +1, -2, +2, ... lines (16 px) below or above the marker.
       const double yc = p.y + 16.0 * ((step + 1) / 2) * (step % 2 ? -1.0 : 1.0);
       for (const Box b : {inside({p.x + m.size, yc - 0.5 * kLineHeight, p.x + m.size + w,
@@ -236,12 +274,8 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
     }
   }
   const double L = frame.left, B = frame.bottom, R = L + frame.width, T = B + frame.height;
-  if (panel.legend && panel.legend_above_data && !panel.log_y) {
-    const auto entries = std::count_if(panel.series.begin(), panel.series.end(),
-                                       [](const Series& s) { return !s.label.empty(); });
-    const double band = std::min(0.5, (16.0 * entries + 10.0) / frame.height);  // of the height
-    frame.y_hi = frame.y_lo + (frame.y_hi - frame.y_lo) / (1.0 - band);
-  }
+  if (panel.legend && panel.legend_above_data && !panel.log_x && !panel.log_y)
+    raise_above_legend(panel, frame);
 
   const auto ticks = [](double lo, double hi, bool log, int target) {
     return log ? log_ticks(std::pow(10.0, lo), std::pow(10.0, hi)) : nice_ticks(lo, hi, target);
@@ -283,16 +317,8 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
   }
   drawn.line_end = fig.lines.size();
 
-  // The legend's place first (the marks' texts keep clear of it): wide enough for the longest
-  // label, inside the plot.
-  std::size_t longest = 0;
-  for (const Series& s : panel.series) longest = std::max(longest, code_points(s.label));
-  const double legend_w = std::min(std::max(150.0, 36.0 + kCharWidth * longest), frame.width - 4.0);
-  const int entries =
-      panel.legend
-          ? static_cast<int>(std::count_if(panel.series.begin(), panel.series.end(),
-                                           [](const Series& s) { return !s.label.empty(); }))
-          : 0;
+  // The legend's place first (the marks' texts keep clear of it).
+  const auto [legend_w, longest, entries] = legend_size(panel, frame);
   const double top_y = T - 14, bottom_y = B + 14 + 16.0 * std::max(0, entries - 1);
   double legend_y = top_y;
   if (panel.legend_at == Panel::LegendAt::kBottomRight) legend_y = bottom_y;
