@@ -185,9 +185,9 @@ void raise_above_legend(const Panel& panel, PanelFrame& frame) {
 }
 
 // Each Mark's diamond, and its text where it is clear: candidate places beside the marker (right,
-// then left, on its level, then 1, 2, ... lines below and above) scored by how much of the text
-// box lies on the legend, on texts already placed, on other marks' diamonds or outside the plot
-// area; the first clear one, else the least covered.
+// left, then also centred, on its level, then 1, 2, ... lines below and above) scored by how much
+// of the text box lies on the legend, on texts already placed, on the marks' diamonds or outside
+// the plot area; the first clear one, else the least covered.
 void place_marks(const Panel& panel, PanelFrame& frame, Figure& fig) {
   const Box plot{frame.left, frame.bottom, frame.left + frame.width, frame.bottom + frame.height};
   std::vector<std::optional<Point2>> at;
@@ -217,34 +217,33 @@ void place_marks(const Panel& panel, PanelFrame& frame, Figure& fig) {
         c += frame.label_boxes[j].overlap(b) + diamonds[j].overlap(b);
       return c;
     };
-    // A candidate moved inside the plot area where it sticks out (a peak near the frame).
+    // A candidate moved down or up into the plot area where it sticks out (a peak near the top).
     const auto inside = [&](Box b) {
-      const double dx = std::max(0.0, plot.x0 - b.x0) - std::max(0.0, b.x1 - plot.x1);
       const double dy = std::max(0.0, plot.y0 - b.y0) - std::max(0.0, b.y1 - plot.y1);
-      return Box{b.x0 + dx, b.y0 + dy, b.x1 + dx, b.y1 + dy};
+      return Box{b.x0, b.y0 + dy, b.x1, b.y1 + dy};
     };
     Box best;
     double best_cover = std::numeric_limits<double>::infinity();
     const int steps = 2 * static_cast<int>(frame.height / 16.0);  // every line of the plot
     for (int step = 0; step <= steps && best_cover > 0.0; ++step) {
-      // 0, -1, +1, -2, +2, ... lines (16 px) below or above the marker.
+      // 0, -1, +1, -2, +2, ... lines (16 px) below or above the marker: right of it, left of it,
+      // or centred under or over it.
       const double yc = p.y + 16.0 * ((step + 1) / 2) * (step % 2 ? -1.0 : 1.0);
-      for (const Box b : {inside({p.x + m.size, yc - 0.5 * kLineHeight, p.x + m.size + w,
-                                  yc + 0.5 * kLineHeight}),
-                          inside({p.x - m.size - w, yc - 0.5 * kLineHeight, p.x - m.size,
-                                  yc + 0.5 * kLineHeight})}) {
+      const double y0 = yc - 0.5 * kLineHeight, y1 = yc + 0.5 * kLineHeight;
+      for (const Box b : {inside({p.x + m.size, y0, p.x + m.size + w, y1}),
+                          inside({p.x - m.size - w, y0, p.x - m.size, y1}),
+                          inside({p.x - 0.5 * w, y0, p.x + 0.5 * w, y1})}) {
         const double c = covered(b);
         if (c < best_cover) best = b, best_cover = c;
         if (c <= 0.0) break;
       }
     }
     frame.label_boxes[k] = best;
-    // A text moved off the marker's level gets a thin leader to it.
-    if (std::abs(0.5 * (best.y0 + best.y1) - p.y) > kLineHeight) {
-      const double x = best.x0 > p.x ? best.x0 - 2 : best.x1 + 2;
-      const double y = std::clamp(p.y, best.y0, best.y1);
-      fig.lines.push_back({{p, {x, y}}, Rgb{110, 110, 110}, 0.8});
-    }
+    // A text away from its marker gets a thin leader to it.
+    const Point2 near{std::clamp(p.x, best.x0 - 2, best.x1 + 2),
+                      std::clamp(p.y, best.y0 - 1, best.y1 + 1)};
+    if (std::hypot(near.x - p.x, near.y - p.y) > 15.0)
+      fig.lines.push_back({{p, near}, Rgb{110, 110, 110}, 0.8});
     fig.texts.push_back(
         {{best.x0, 0.5 * (best.y0 + best.y1)}, m.text, 11, kBlack, HAlign::kLeft, VAlign::kCentre});
   }
