@@ -66,6 +66,25 @@ void mark_reported_peaks(Panel& panel, const std::vector<std::optional<ReportedP
   }
 }
 
+std::vector<Panel> acceleration_panels(std::vector<PeakedSeries> all, int base,
+                                       const std::array<std::string, 3>& titles, bool symmetric) {
+  const auto panel = [&](const std::string& title) {
+    return Panel{title, "time [s]", "absolute acceleration [g]", {}, true, symmetric, !symmetric};
+  };
+  Panel own = panel(titles[0]), rest = panel(base >= 0 ? titles[1] : titles[2]);
+  std::vector<std::optional<ReportedPeak>> own_peaks, rest_peaks;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    Series& s = all[k].series;
+    if (!s.colour) s.colour = series_colour(static_cast<int>(k));
+    (static_cast<int>(k) == base ? own : rest).series.push_back(std::move(s));
+    (static_cast<int>(k) == base ? own_peaks : rest_peaks).push_back(all[k].peak);
+  }
+  mark_reported_peaks(rest, rest_peaks, kGravity, "g");
+  if (base < 0) return {rest};
+  mark_reported_peaks(own, own_peaks, kGravity, "g");
+  return {own, rest};
+}
+
 std::string sampled_every(const RunData& run) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "curves: histories.csv every %g ms", 1e3 * history_interval(run));
@@ -138,45 +157,27 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   mark_reported_peaks(drift, drift_peaks, 0.01, "%");
   panels.push_back(drift);
 
-  // Absolute accelerations: an isolated base (tens of g where it strikes a wall) in a panel of
-  // its own, so that the floors and the ground set the axis of theirs.
-  const bool isolated = slab != main.levels.end();
-  Panel base_acc{short_label(base.label, run) + ": absolute acceleration",
-                 "time [s]",
-                 "absolute acceleration [g]",
-                 {},
-                 true,
-                 true};
-  Panel acc{
-      isolated ? "Absolute accelerations of the floors and the ground" : "Absolute accelerations",
-      "time [s]",
-      "absolute acceleration [g]",
-      {},
-      true,
-      true};
-  std::vector<std::optional<ReportedPeak>> acc_peaks, base_peaks;
-  if (ag >= 0) {
-    acc.series.push_back({"ground", t, scaled(run.column(ag), kGravity), Rgb{120, 120, 120}, 1.2});
-    acc_peaks.push_back(reported_ground_peak(run, "pga_m_s2"));
-  }
-  int level_index = 0;  // each level keeps its colour in whichever panel it is drawn
+  std::vector<PeakedSeries> accelerations;
+  if (ag >= 0)
+    accelerations.push_back(
+        {{"ground", t, scaled(run.column(ag), kGravity), Rgb{120, 120, 120}, 1.2},
+         reported_ground_peak(run, "pga_m_s2")});
+  int base_index = -1;
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels)
       if (l.a_abs >= 0) {
-        const bool own = isolated && &l == &base;
-        Panel& p = own ? base_acc : acc;
-        p.series.push_back(
-            line_series(short_label(l.label, run), t, scaled(run.column(l.a_abs), kGravity)));
-        p.series.back().colour = series_colour(++level_index);
-        (own ? base_peaks : acc_peaks)
-            .push_back(reported_level_peak(run, l.label, "absolute_acceleration"));
+        if (slab != main.levels.end() && &l == &base)
+          base_index = static_cast<int>(accelerations.size());
+        accelerations.push_back(
+            {line_series(short_label(l.label, run), t, scaled(run.column(l.a_abs), kGravity)),
+             reported_level_peak(run, l.label, "absolute_acceleration")});
       }
-  if (isolated) {
-    mark_reported_peaks(base_acc, base_peaks, kGravity, "g");
-    panels.push_back(base_acc);
-  }
-  mark_reported_peaks(acc, acc_peaks, kGravity, "g");
-  panels.push_back(acc);
+  for (Panel& p : acceleration_panels(
+           std::move(accelerations), base_index,
+           {short_label(base.label, run) + ": absolute acceleration",
+            "Absolute accelerations of the floors and the ground", "Absolute accelerations"},
+           true))
+    panels.push_back(std::move(p));
 
   if (!run.contacts.empty()) {
     double peak = 0.0;

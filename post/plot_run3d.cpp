@@ -131,56 +131,38 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
   mark_reported_peaks(drift, drift_peaks, 0.01, "%");
   panels.push_back(drift);
 
-  // Absolute accelerations: an isolated building's base slab (tens of g where it strikes a
-  // wall) in a panel of its own, so that the floors and the ground (a few g and less) set the
-  // axis of theirs.
-  const Level* slab = base_level(run, main);
-  Panel slab_acc{
-      short_label(base.label, run) + ": absolute acceleration at the centre of mass (resultant)",
-      "time [s]",
-      "absolute acceleration [g]",
-      {},
-      true,
-      false,
-      true};
-  Panel acc{slab ? "Absolute accelerations of the floors and the ground (resultant at the centres "
-                   "of mass)"
-                 : "Absolute accelerations at the centres of mass (resultant)",
-            "time [s]",
-            "absolute acceleration [g]",
-            {},
-            true,
-            false,
-            true};
+  // Absolute accelerations (resultants at the centres of mass); summary.json has the ground's
+  // a_x and a_y peaks, not the resultant's.
+  std::vector<PeakedSeries> accelerations;
   const int gx = run.find("", "ground_acceleration"), gy = run.find("", "ground_acceleration_y");
-  std::vector<std::optional<ReportedPeak>> acc_peaks, slab_peaks;
   if (gx >= 0) {
     std::vector<double> g(t.size());
     for (std::size_t r = 0; r < t.size(); ++r)
       g[r] = std::hypot(run.values[gx][r], gy >= 0 ? run.values[gy][r] : 0.0) / kGravity;
-    acc.series.push_back({"ground (resultant)", t, g, Rgb{120, 120, 120}, 1.2});
-    acc_peaks.push_back(std::nullopt);  // summary.json has a_x's and a_y's, not the resultant's
+    accelerations.push_back({{"ground (resultant)", t, g, Rgb{120, 120, 120}, 1.2}, std::nullopt});
   }
-  int level_index = 0;  // each level keeps its colour in whichever panel it is drawn
+  const Level* slab = base_level(run, main);
+  int slab_index = -1;
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels)
       if (l.a_abs >= 0) {
-        const bool own = &l == slab;
-        Panel& p = own ? slab_acc : acc;
-        p.series.push_back(
-            line_series(short_label(l.label, run), t,
-                        scaled(point_history(run, l, run.site.bodies[l.body].p_WCM, true).resultant,
-                               kGravity)));
-        p.series.back().colour = series_colour(++level_index);
-        (own ? slab_peaks : acc_peaks)
-            .push_back(reported_level_peak(run, l.label, "absolute_acceleration"));
+        if (&l == slab) slab_index = static_cast<int>(accelerations.size());
+        accelerations.push_back(
+            {line_series(
+                 short_label(l.label, run), t,
+                 scaled(point_history(run, l, run.site.bodies[l.body].p_WCM, true).resultant,
+                        kGravity)),
+             reported_level_peak(run, l.label, "absolute_acceleration")});
       }
-  if (slab) {
-    mark_reported_peaks(slab_acc, slab_peaks, kGravity, "g");
-    panels.push_back(slab_acc);
-  }
-  mark_reported_peaks(acc, acc_peaks, kGravity, "g");
-  panels.push_back(acc);
+  for (Panel& p :
+       acceleration_panels(std::move(accelerations), slab_index,
+                           {short_label(base.label, run) +
+                                ": absolute acceleration at the centre of mass (resultant)",
+                            "Absolute accelerations of the floors and the ground (resultant at the "
+                            "centres of mass)",
+                            "Absolute accelerations at the centres of mass (resultant)"},
+                           false))
+    panels.push_back(std::move(p));
 
   if (!run.contact_log.pairs.empty()) {
     double peak = 0.0;
