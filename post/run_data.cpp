@@ -228,31 +228,6 @@ std::string locate_model(const RunData& run, const std::string& override_path) {
   return "";
 }
 
-// The friction coefficients of the contact pair labelled `pair` (RunData::friction): a bumper's
-// contacts ("<A>|<face> bumper", "... bumper bottomed", pounding3d.h) its rubber's, that of the
-// moat wall or of the structure whose slab face is <face>; every other pair the contact law's.
-std::optional<RunData::Friction> pair_friction(const ModelConfig& config, const std::string& pair) {
-  if (!config.contact3d.law.friction) return std::nullopt;
-  RunData::Friction f{config.contact3d.law.mu_static, config.contact3d.law.mu_kinetic};
-  const auto bar = pair.find('|');
-  for (const std::string& end :
-       {std::string(" ") + kBottomedLabel, std::string(" ") + kBumperLabel}) {
-    if (bar == std::string::npos || pair.size() < bar + 1 + end.size() ||
-        pair.compare(pair.size() - end.size(), end.size(), end) != 0)
-      continue;
-    const std::string face = pair.substr(bar + 1, pair.size() - end.size() - bar - 1);
-    for (const SiteBody& w : site_bodies(config))
-      if (w.role == "wall" && w.label() == face && w.building >= 0)
-        return RunData::Friction{config.structures3d[w.building].walls.bumper.mu_static,
-                                 config.structures3d[w.building].walls.bumper.mu_kinetic};
-    for (const Building3DConfig& b : config.structures3d)
-      if (face.rfind(b.name + "/", 0) == 0)
-        return RunData::Friction{b.bumper.mu_static, b.bumper.mu_kinetic};
-    break;
-  }
-  return f;
-}
-
 // 3D: the plan geometry of the model file (required: histories hold only the DOFs), elevations
 // of the levels from it, and the contact-event log.
 void find_geometry3d(RunData& run, const std::string& model_path) {
@@ -391,6 +366,29 @@ void find_geometry(RunData& run, const std::string& model_override) {
 }
 
 }  // namespace
+
+// A bumper's rubber is that of the moat wall, or of the structure whose slab face, is <face>.
+std::optional<RunData::Friction> pair_friction(const ModelConfig& config, const std::string& pair) {
+  if (!config.contact3d.law.friction) return std::nullopt;
+  RunData::Friction f{config.contact3d.law.mu_static, config.contact3d.law.mu_kinetic};
+  const auto bar = pair.find('|');
+  for (const std::string& end :
+       {std::string(" ") + kBottomedLabel, std::string(" ") + kBumperLabel}) {
+    if (bar == std::string::npos || pair.size() < bar + 1 + end.size() ||
+        pair.compare(pair.size() - end.size(), end.size(), end) != 0)
+      continue;
+    const std::string face = pair.substr(bar + 1, pair.size() - end.size() - bar - 1);
+    for (const SiteBody& w : site_bodies(config))
+      if (w.role == "wall" && w.label() == face && w.building >= 0)
+        return RunData::Friction{config.structures3d[w.building].walls.bumper.mu_static,
+                                 config.structures3d[w.building].walls.bumper.mu_kinetic};
+    for (const Building3DConfig& b : config.structures3d)
+      if (face.rfind(b.name + "/", 0) == 0)
+        return RunData::Friction{b.bumper.mu_static, b.bumper.mu_kinetic};
+    break;
+  }
+  return f;
+}
 
 ColumnName parse_column_name(const std::string& header) {
   ColumnName n;

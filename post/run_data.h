@@ -95,6 +95,11 @@ struct RunData {
   std::string unit_of(int index) const { return parse_column_name(columns.at(index)).unit; }
 };
 
+// The friction coefficients of the 3D contact pair labelled `pair` as `config` sets them
+// (RunData::friction): a bumper's contacts ("<A>|<face> bumper", "... bumper bottomed") its
+// rubber's, every other pair the contact law's; nullopt when contact.friction is false.
+std::optional<RunData::Friction> pair_friction(const ModelConfig& config, const std::string& pair);
+
 // Reads RUN_DIR. `model_file` overrides the model named in summary.json (for wall gaps and
 // neighbour placement); without either, wall gaps are inferred from the contact histories.
 // Throws RunDataError naming the file (and line) on anything missing or malformed.

@@ -6,6 +6,7 @@
 // the motion with the slab and walls at true scale in an equal-axes inset; every F_T-F_N panel
 // draws ±μ_s F_N and ±μ_k F_N with the model's μ; the bearings' legends name what they draw.
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <fstream>
@@ -16,6 +17,8 @@
 #include "post/run_data.h"
 #include "post_test_support.h"
 #include "solver/core/constants.h"
+#include "solver/io/model_input.h"
+#include "solver/structures/job.h"
 
 namespace isopound::post {
 namespace {
@@ -215,6 +218,61 @@ TEST_F(RunPictures, BearingLegendsNameAllBearingsAndTheFarthest) {
   }
   EXPECT_EQ(all, 3);  // x, y and orbit panels
   EXPECT_EQ(farthest, 3);
+}
+
+// The friction of every contact the solver builds, by its label: a bumpered wall's rubber (both
+// its contacts), a bumpered slab face's rubber, and the contact law's for the concrete pairs.
+TEST(RunFriction, EveryContactOfTheModelGetsItsOwnCoefficients) {
+  const std::string yaml = std::string(R"(structures:
+  - name: building
+    grid: {bays_x: [6 m, 6 m], bays_y: [6 m, 6 m]}
+    plan: {rectangle: [12.45 m, 12.45 m]}
+    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
+    storeys: {count: 2, height: 3.2 m, mass: 300 t}
+    base: {mass: 300 t}
+    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
+    walls: {sides: [east], gap: 8 cm, bumper: {thickness: 4 cm, E: 10 MPa, height: 50 cm, e: 0.8,
+                                               mu_static: 0.7, mu_kinetic: 0.4}}
+  - name: west
+    isolated: false
+    adjacent: {to: building, side: west, gap: 10 cm}
+    grid: {bays_x: [6 m], bays_y: [6 m, 6 m]}
+    plan: {rectangle: [6.35 m, 12.35 m]}
+    columns: {section: [35 cm, 35 cm], E: 30 GPa, nu: 0.2}
+    storeys: {count: 2, height: 3.2 m, mass: 150 t}
+    bumper: {thickness: 5 cm, E: 10 MPa, height: 30 cm, e: 0.7, mu_static: 0.9, mu_kinetic: 0.2}
+contact: {mu_static: 0.5, mu_kinetic: 0.3}
+ground_motion:
+  L: {pulse: {amplitude: 0.8 m/s, period: 1 s}}
+  T: {pulse: {amplitude: 0.4 m/s, period: 1 s}}
+)");
+  const ModelConfig config = load_model(YAML::Load(yaml), "inline.yaml", "");
+  const Model model = build_model(config);
+  int wall_rubber = 0, face_rubber = 0, concrete = 0;
+  for (const auto& e : model.elements) {
+    const std::string& label = e->label();
+    if (label.find('|') == std::string::npos || label.find("/bearing") != std::string::npos)
+      continue;
+    const auto f = pair_friction(config, label);
+    ASSERT_TRUE(f) << label;
+    const bool bumper = label.ends_with("bumper") || label.ends_with("bumper bottomed");
+    if (bumper && label.find("|wall east") != std::string::npos) {
+      EXPECT_EQ(f->mu_static, 0.7) << label;
+      EXPECT_EQ(f->mu_kinetic, 0.4) << label;
+      ++wall_rubber;
+    } else if (bumper) {
+      EXPECT_EQ(f->mu_static, 0.9) << label;
+      EXPECT_EQ(f->mu_kinetic, 0.2) << label;
+      ++face_rubber;
+    } else {
+      EXPECT_EQ(f->mu_static, 0.5) << label;
+      EXPECT_EQ(f->mu_kinetic, 0.3) << label;
+      ++concrete;
+    }
+  }
+  EXPECT_EQ(wall_rubber, 2);
+  EXPECT_EQ(face_rubber, 4);  // the neighbour's two at each pounding floor
+  EXPECT_GE(concrete, 3);     // the wall and two floors
 }
 
 }  // namespace
