@@ -66,6 +66,25 @@ void mark_reported_peaks(Panel& panel, const std::vector<std::optional<ReportedP
   }
 }
 
+std::vector<Panel> acceleration_panels(std::vector<PeakedSeries> all, int base,
+                                       const std::array<std::string, 3>& titles, bool symmetric) {
+  const auto panel = [&](const std::string& title) {
+    return Panel{title, "time [s]", "absolute acceleration [g]", {}, true, symmetric, !symmetric};
+  };
+  Panel own = panel(titles[0]), rest = panel(base >= 0 ? titles[1] : titles[2]);
+  std::vector<std::optional<ReportedPeak>> own_peaks, rest_peaks;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    Series& s = all[k].series;
+    if (!s.colour) s.colour = series_colour(static_cast<int>(k));
+    (static_cast<int>(k) == base ? own : rest).series.push_back(std::move(s));
+    (static_cast<int>(k) == base ? own_peaks : rest_peaks).push_back(all[k].peak);
+  }
+  mark_reported_peaks(rest, rest_peaks, kGravity, "g");
+  if (base < 0) return {rest};
+  mark_reported_peaks(own, own_peaks, kGravity, "g");
+  return {own, rest};
+}
+
 std::string sampled_every(const RunData& run) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "curves: histories.csv every %g ms", 1e3 * history_interval(run));
@@ -138,21 +157,27 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   mark_reported_peaks(drift, drift_peaks, 0.01, "%");
   panels.push_back(drift);
 
-  Panel acc{"Absolute accelerations", "time [s]", "absolute acceleration [g]", {}, true, true};
-  std::vector<std::optional<ReportedPeak>> acc_peaks;
-  if (ag >= 0) {
-    acc.series.push_back({"ground", t, scaled(run.column(ag), kGravity), Rgb{150, 150, 150}, 1.0});
-    acc_peaks.push_back(reported_ground_peak(run, "pga_m_s2"));
-  }
+  std::vector<PeakedSeries> accelerations;
+  if (ag >= 0)
+    accelerations.push_back(
+        {{"ground", t, scaled(run.column(ag), kGravity), Rgb{120, 120, 120}, 1.2},
+         reported_ground_peak(run, "pga_m_s2")});
+  int base_index = -1;
   for (const Structure& s : run.structures)
     for (const Level& l : s.levels)
       if (l.a_abs >= 0) {
-        acc.series.push_back(
-            line_series(short_label(l.label, run), t, scaled(run.column(l.a_abs), kGravity)));
-        acc_peaks.push_back(reported_level_peak(run, l.label, "absolute_acceleration"));
+        if (slab != main.levels.end() && &l == &base)
+          base_index = static_cast<int>(accelerations.size());
+        accelerations.push_back(
+            {line_series(short_label(l.label, run), t, scaled(run.column(l.a_abs), kGravity)),
+             reported_level_peak(run, l.label, "absolute_acceleration")});
       }
-  mark_reported_peaks(acc, acc_peaks, kGravity, "g");
-  panels.push_back(acc);
+  for (Panel& p : acceleration_panels(
+           std::move(accelerations), base_index,
+           {short_label(base.label, run) + ": absolute acceleration",
+            "Absolute accelerations of the floors and the ground", "Absolute accelerations"},
+           true))
+    panels.push_back(std::move(p));
 
   if (!run.contacts.empty()) {
     double peak = 0.0;
@@ -176,7 +201,8 @@ std::vector<NamedFigure> run_figures(const RunData& run) {
   std::vector<NamedFigure> out;
   const int rows = static_cast<int>(panels.size());
   NamedFigure th{"time_histories.png", {}, {}};
-  th.figure = xy_figure(panels, 1, 1000, 230 * rows + 40,
+  for (Panel& p : panels) p.legend_above_data = true;
+  th.figure = xy_figure(panels, 1, 1000, kHistoryPanelHeight * rows + 40,
                         "Time histories: " + run.dir.filename().string() + " (" +
                             sampled_every(run) + "; ◆ peaks over every step, summary.json)",
                         &th.frames);

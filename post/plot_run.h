@@ -5,6 +5,7 @@
 // step, is marked from summary.json (run_peaks.h) with its value and time.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,10 @@ struct NamedFigure {
   std::vector<PanelFrame> frames{};  // where each panel's data lands (xy_figure's), for tests
 };
 
+// px per panel of time_histories.png: room for the curves below a legend of four or five lines
+// (Panel::legend_above_data).
+inline constexpr int kHistoryPanelHeight = 270;
+
 // time_histories.png and hysteresis.png (the latter only when the run has isolators or contacts);
 // a 3D run's figures are run_figures3d's (plot_run3d.h).
 std::vector<NamedFigure> run_figures(const RunData& run);
@@ -35,6 +40,20 @@ std::string peak_text(const ReportedPeak& peak, double divisor, const std::strin
 // text beside its marker. A peak without a time gets no marker, its value in the legend only.
 void mark_reported_peaks(Panel& panel, const std::vector<std::optional<ReportedPeak>>& peaks,
                          double divisor, const std::string& unit);
+
+// A curve of a time-history panel with the peak summary.json reports for it (nullopt: none).
+struct PeakedSeries {
+  Series series;
+  std::optional<ReportedPeak> peak;
+};
+
+// The absolute-acceleration panels of a time-history figure, in g (`all` in SI divided by
+// kGravity already; the peaks in SI): with an isolated base (all[base], tens of g where it
+// strikes a wall) that one in a panel of its own titled titles[0], so that the floors and the
+// ground (a few g and less) set the axis of theirs, titles[1]; base < 0: one panel, titles[2].
+// Each curve without a colour takes that of its place in `all`, the same in either panel.
+std::vector<Panel> acceleration_panels(std::vector<PeakedSeries> all, int base,
+                                       const std::array<std::string, 3>& titles, bool symmetric);
 
 // " (curves: histories.csv every 5 ms)" for the title of a figure of sampled curves.
 std::string sampled_every(const RunData& run);

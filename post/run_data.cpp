@@ -5,10 +5,13 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "solver/io/model_input.h"
+#include "solver/structures/config3d.h"
 #include "solver/structures/pounding2d.h"
+#include "solver/structures/pounding3d.h"
 
 namespace fs = std::filesystem;
 
@@ -256,6 +259,8 @@ void find_geometry3d(RunData& run, const std::string& model_path) {
   } catch (const std::exception& e) {
     throw RunDataError(e.what());
   }
+  for (const auto& [pair, rows] : run.contact_log.pairs)
+    if (const auto f = pair_friction(config, pair)) run.friction[pair] = *f;
   for (PlanColumn& c : run.site.columns)
     if (!c.struck.label.empty()) {
       c.struck.drift_x = run.find(c.struck.label, "local_drift_x");
@@ -361,6 +366,29 @@ void find_geometry(RunData& run, const std::string& model_override) {
 }
 
 }  // namespace
+
+// A bumper's rubber is that of the moat wall, or of the structure whose slab face, is <face>.
+std::optional<RunData::Friction> pair_friction(const ModelConfig& config, const std::string& pair) {
+  if (!config.contact3d.law.friction) return std::nullopt;
+  RunData::Friction f{config.contact3d.law.mu_static, config.contact3d.law.mu_kinetic};
+  const auto bar = pair.find('|');
+  for (const std::string& end :
+       {std::string(" ") + kBottomedLabel, std::string(" ") + kBumperLabel}) {
+    if (bar == std::string::npos || pair.size() < bar + 1 + end.size() ||
+        pair.compare(pair.size() - end.size(), end.size(), end) != 0)
+      continue;
+    const std::string face = pair.substr(bar + 1, pair.size() - end.size() - bar - 1);
+    for (const SiteBody& w : site_bodies(config))
+      if (w.role == "wall" && w.label() == face && w.building >= 0)
+        return RunData::Friction{config.structures3d[w.building].walls.bumper.mu_static,
+                                 config.structures3d[w.building].walls.bumper.mu_kinetic};
+    for (const Building3DConfig& b : config.structures3d)
+      if (face.rfind(b.name + "/", 0) == 0)
+        return RunData::Friction{b.bumper.mu_static, b.bumper.mu_kinetic};
+    break;
+  }
+  return f;
+}
 
 ColumnName parse_column_name(const std::string& header) {
   ColumnName n;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -79,6 +80,13 @@ struct RunData {
   bool three_d = false;
   Site3D site;
   ContactLog contact_log;
+  // 3D: the friction coefficients of each pair of the contact log as the model sets them (the
+  // contact law's; a bumper's contacts: its rubber's), by pair label. Absent: no friction
+  // (contact.friction false).
+  struct Friction {
+    double mu_static = 0.0, mu_kinetic = 0.0;
+  };
+  std::map<std::string, Friction> friction;
 
   std::size_t rows() const { return values.empty() ? 0 : values[0].size(); }
   int find(const std::string& label, const std::string& quantity) const;  // -1 when absent
@@ -86,6 +94,11 @@ struct RunData {
   const std::vector<double>& time() const { return values.at(0); }
   std::string unit_of(int index) const { return parse_column_name(columns.at(index)).unit; }
 };
+
+// The friction coefficients of the 3D contact pair labelled `pair` as `config` sets them
+// (RunData::friction): a bumper's contacts ("<A>|<face> bumper", "... bumper bottomed") its
+// rubber's, every other pair the contact law's; nullopt when contact.friction is false.
+std::optional<RunData::Friction> pair_friction(const ModelConfig& config, const std::string& pair);
 
 // Reads RUN_DIR. `model_file` overrides the model named in summary.json (for wall gaps and
 // neighbour placement); without either, wall gaps are inferred from the contact histories.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace isopound::post {
 
@@ -137,6 +138,117 @@ int data_in_box(const Figure& fig, const DrawnData& data, double x0, double y0, 
   return n;
 }
 
+// Text extents as estimated for layout: about 6.5 px per character at 11 pt (UTF-8 counted by
+// code points), 14 px high.
+constexpr double kCharWidth = 6.5, kLineHeight = 14.0;
+std::size_t code_points(const std::string& s) {
+  std::size_t n = 0;
+  for (unsigned char ch : s) n += (ch & 0xC0) != 0x80;
+  return n;
+}
+
+// A legend's width (px: wide enough for the longest label, inside the plot), its longest label
+// (characters) and its number of entries (0 without a legend).
+struct LegendSize {
+  double width = 0.0;
+  std::size_t longest = 0;
+  int entries = 0;
+};
+LegendSize legend_size(const Panel& panel, const PanelFrame& frame) {
+  LegendSize size;
+  for (const Series& s : panel.series) {
+    size.longest = std::max(size.longest, code_points(s.label));
+    size.entries += panel.legend && !s.label.empty();
+  }
+  size.width = std::min(std::max(150.0, 36.0 + kCharWidth * size.longest), frame.width - 4.0);
+  return size;
+}
+
+// Panel::legend_above_data: the top of the y range raised (the range at most doubled) until the
+// data (points and marks) under a top-right legend's span of x lie below its box.
+void raise_above_legend(const Panel& panel, PanelFrame& frame) {
+  const LegendSize legend = legend_size(panel, frame);
+  if (legend.entries == 0) return;
+  const double per_px_x = (frame.x_hi - frame.x_lo) / frame.width,
+               per_px_y = (frame.y_hi - frame.y_lo) / frame.height;
+  const double x_from = frame.x_hi - (legend.width + 4.0) * per_px_x;
+  double top = -std::numeric_limits<double>::infinity();
+  for (const Series& s : panel.series)
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+      if (s.x[i] >= x_from && std::isfinite(s.y[i])) top = std::max(top, s.y[i]);
+  for (const Mark& m : panel.marks)
+    if (m.x + 0.5 * m.size * per_px_x >= x_from) top = std::max(top, m.y + 0.5 * m.size * per_px_y);
+  // The legend's box reaches 16 px per entry + 10 px below the top; 4 px more to the data.
+  const double band = std::min(0.5, (16.0 * legend.entries + 14.0) / frame.height);
+  if (top - frame.y_lo > (1.0 - band) * (frame.y_hi - frame.y_lo))
+    frame.y_hi = frame.y_lo + (top - frame.y_lo) / (1.0 - band);
+}
+
+// Each Mark's diamond, and its text where it is clear: candidate places beside the marker (right,
+// left, then also centred, on its level, then 1, 2, ... lines below and above) scored by how much
+// of the text box lies on the legend, on texts already placed, on the marks' diamonds or outside
+// the plot area; the first clear one, else the least covered.
+void place_marks(const Panel& panel, PanelFrame& frame, Figure& fig) {
+  const Box plot{frame.left, frame.bottom, frame.left + frame.width, frame.bottom + frame.height};
+  std::vector<std::optional<Point2>> at;
+  std::vector<Box> diamonds;
+  for (const Mark& m : panel.marks) {
+    const bool drawn =
+        std::isfinite(axis_value(m.x, panel.log_x)) && std::isfinite(axis_value(m.y, panel.log_y));
+    at.push_back(drawn ? std::optional(frame.to_pixel(m.x, m.y)) : std::nullopt);
+    const double h = 0.5 * m.size;
+    diamonds.push_back(
+        drawn ? Box{at.back()->x - h, at.back()->y - h, at.back()->x + h, at.back()->y + h}
+              : Box{});
+    if (drawn)
+      fig.markers.push_back(
+          {marker_outline(MarkerShape::kDiamond, *at.back(), m.size), m.colour, kBlack, 1.0});
+  }
+  frame.label_boxes.assign(panel.marks.size(), Box{});
+  for (std::size_t k = 0; k < panel.marks.size(); ++k) {
+    const Mark& m = panel.marks[k];
+    if (!at[k] || m.text.empty()) continue;
+    const Point2 p = *at[k];
+    const double w = kCharWidth * static_cast<double>(code_points(m.text));
+    const auto covered = [&](const Box& b) {
+      double c = b.overlap(frame.legend_box);
+      c += (b.x1 - b.x0) * (b.y1 - b.y0) - b.overlap(plot);
+      for (std::size_t j = 0; j < panel.marks.size(); ++j)
+        c += frame.label_boxes[j].overlap(b) + diamonds[j].overlap(b);
+      return c;
+    };
+    // A candidate moved down or up into the plot area where it sticks out (a peak near the top).
+    const auto inside = [&](Box b) {
+      const double dy = std::max(0.0, plot.y0 - b.y0) - std::max(0.0, b.y1 - plot.y1);
+      return Box{b.x0, b.y0 + dy, b.x1, b.y1 + dy};
+    };
+    Box best;
+    double best_cover = std::numeric_limits<double>::infinity();
+    const int steps = 2 * static_cast<int>(frame.height / 16.0);  // every line of the plot
+    for (int step = 0; step <= steps && best_cover > 0.0; ++step) {
+      // 0, -1, +1, -2, +2, ... lines (16 px) below or above the marker: right of it, left of it,
+      // or centred under or over it.
+      const double yc = p.y + 16.0 * ((step + 1) / 2) * (step % 2 ? -1.0 : 1.0);
+      const double y0 = yc - 0.5 * kLineHeight, y1 = yc + 0.5 * kLineHeight;
+      for (const Box b : {inside({p.x + m.size, y0, p.x + m.size + w, y1}),
+                          inside({p.x - m.size - w, y0, p.x - m.size, y1}),
+                          inside({p.x - 0.5 * w, y0, p.x + 0.5 * w, y1})}) {
+        const double c = covered(b);
+        if (c < best_cover) best = b, best_cover = c;
+        if (c <= 0.0) break;
+      }
+    }
+    frame.label_boxes[k] = best;
+    // A text away from its marker gets a thin leader to it.
+    const Point2 near{std::clamp(p.x, best.x0 - 2, best.x1 + 2),
+                      std::clamp(p.y, best.y0 - 1, best.y1 + 1)};
+    if (std::hypot(near.x - p.x, near.y - p.y) > 15.0)
+      fig.lines.push_back({{p, near}, Rgb{110, 110, 110}, 0.8});
+    fig.texts.push_back(
+        {{best.x0, 0.5 * (best.y0 + best.y1)}, m.text, 11, kBlack, HAlign::kLeft, VAlign::kCentre});
+  }
+}
+
 void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Figure& fig,
                 PanelFrame& frame) {
   // Margins inside the panel cell for tick labels and titles.
@@ -161,6 +273,8 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
     }
   }
   const double L = frame.left, B = frame.bottom, R = L + frame.width, T = B + frame.height;
+  if (panel.legend && panel.legend_above_data && !panel.log_x && !panel.log_y)
+    raise_above_legend(panel, frame);
 
   const auto ticks = [](double lo, double hi, bool log, int target) {
     return log ? log_ticks(std::pow(10.0, lo), std::pow(10.0, hi)) : nice_ticks(lo, hi, target);
@@ -201,22 +315,22 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
     ++index;
   }
   drawn.line_end = fig.lines.size();
-  for (const Mark& m : panel.marks) {
-    if (!std::isfinite(axis_value(m.x, panel.log_x)) ||
-        !std::isfinite(axis_value(m.y, panel.log_y)))
-      continue;
-    const Point2 p = frame.to_pixel(m.x, m.y);
-    fig.markers.push_back(
-        {marker_outline(MarkerShape::kDiamond, p, m.size), m.colour, kBlack, 1.0});
-    // Beside the marker, on the side with room (about 6.5 px per character at 11 pt).
-    const bool left = p.x + 10 + 6.5 * static_cast<double>(m.text.size()) > R;
-    fig.texts.push_back({{left ? p.x - m.size : p.x + m.size, p.y},
-                         m.text,
-                         11,
-                         kBlack,
-                         left ? HAlign::kRight : HAlign::kLeft,
-                         VAlign::kCentre});
-  }
+
+  // The legend's place first (the marks' texts keep clear of it).
+  const auto [legend_w, longest, entries] = legend_size(panel, frame);
+  const double top_y = T - 14, bottom_y = B + 14 + 16.0 * std::max(0, entries - 1);
+  double legend_y = top_y;
+  if (panel.legend_at == Panel::LegendAt::kBottomRight) legend_y = bottom_y;
+  if (panel.legend_at == Panel::LegendAt::kBest && entries > 0 &&
+      data_in_box(fig, drawn, R - legend_w - 4, top_y - 16.0 * (entries - 1) - 8, R, top_y + 8) >
+          data_in_box(fig, drawn, R - legend_w - 4, B + 6, R, bottom_y + 8))
+    legend_y = bottom_y;
+  if (entries > 0)
+    frame.legend_box = {R - legend_w - 4, legend_y - 16.0 * (entries - 1) - 8,
+                        std::max(R, R - legend_w + 30 + kCharWidth * longest), legend_y + 8};
+
+  place_marks(panel, frame, fig);
+
   fig.lines.push_back({{{L, B}, {R, B}, {R, T}, {L, T}, {L, B}}, kFrame, 1.0});
   fig.texts.push_back(
       {{(L + R) / 2, y0 + 4}, panel.x_title, 12, kBlack, HAlign::kCentre, VAlign::kBottom});
@@ -231,37 +345,19 @@ void draw_panel(const Panel& panel, double x0, double y0, double w, double h, Fi
                          VAlign::kBottom,
                          0.0,
                          true});
-  if (panel.legend) {
-    // Wide enough for the longest label (about 6.5 px per character at 11 pt, UTF-8 counted
-    // by code points), at most half the plot.
-    std::size_t longest = 0;
-    for (const Series& s : panel.series) {
-      std::size_t n = 0;
-      for (unsigned char ch : s.label) n += (ch & 0xC0) != 0x80;
-      longest = std::max(longest, n);
-    }
-    const double width = std::min(std::max(150.0, 36.0 + 6.5 * longest), 0.5 * frame.width);
-    const int entries =
-        static_cast<int>(std::count_if(panel.series.begin(), panel.series.end(),
-                                       [](const Series& s) { return !s.label.empty(); }));
-    const double top_y = T - 14, bottom_y = B + 14 + 16.0 * std::max(0, entries - 1);
-    double y = top_y;
-    if (panel.legend_at == Panel::LegendAt::kBottomRight) y = bottom_y;
-    if (panel.legend_at == Panel::LegendAt::kBest && entries > 0 &&
-        data_in_box(fig, drawn, R - width - 4, top_y - 16.0 * (entries - 1) - 8, R, top_y + 8) >
-            data_in_box(fig, drawn, R - width - 4, B + 6, R, bottom_y + 8))
-      y = bottom_y;
+  if (entries > 0) {
+    double y = legend_y;
     index = 0;
     for (const Series& s : panel.series) {
       const Rgb c = s.colour.value_or(series_colour(index++));
       if (s.label.empty()) continue;
-      if (s.width > 0.0) fig.lines.push_back({{{R - width, y}, {R - width + 24, y}}, c, 2.5});
+      if (s.width > 0.0) fig.lines.push_back({{{R - legend_w, y}, {R - legend_w + 24, y}}, c, 2.5});
       if (s.marker != MarkerShape::kNone)
         fig.markers.push_back(
-            {marker_outline(s.marker, {R - width + 12, y}, std::min(s.marker_size, 11.0)), c,
+            {marker_outline(s.marker, {R - legend_w + 12, y}, std::min(s.marker_size, 11.0)), c,
              s.marker_edge, 1.0});
       fig.texts.push_back(
-          {{R - width + 30, y}, s.label, 11, kBlack, HAlign::kLeft, VAlign::kCentre});
+          {{R - legend_w + 30, y}, s.label, 11, kBlack, HAlign::kLeft, VAlign::kCentre});
       y -= 16;
     }
   }
@@ -290,6 +386,12 @@ Figure xy_figure(const std::vector<Panel>& panels, int columns, int width, int h
     if (frames) (*frames)[i] = frame;
   }
   return fig;
+}
+
+PanelFrame add_panel(Figure& fig, const Panel& panel, double x0, double y0, double w, double h) {
+  PanelFrame frame;
+  draw_panel(panel, x0, y0, w, h, fig, frame);
+  return frame;
 }
 
 }  // namespace isopound::post

@@ -2,6 +2,7 @@
 // titles (with units) and a legend. Data in any units; the mapping to pixels is linear.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -57,7 +58,9 @@ double peak_of(const std::vector<double>& v);
 // elsewhere than the drawn samples: a diamond of `colour` (black outline) and the text in black.
 struct Mark {
   double x = 0.0, y = 0.0;  // data units of the panel
-  std::string text;         // drawn right of the marker (left of it near the right edge)
+  // Drawn beside the marker where it is clear of the legend, the other marks' texts and markers
+  // and the frame: right of it, else left, else shifted up or down (PanelFrame::label_boxes).
+  std::string text;
   Rgb colour{0, 0, 0};
   double size = 11.0;  // px across
 };
@@ -73,10 +76,24 @@ struct Panel {
   // Where the legend goes: top right, bottom right, or whichever of the two the data cross less.
   enum class LegendAt { kTopRight, kBottomRight, kBest };
   LegendAt legend_at = LegendAt::kTopRight;
+  // The y range raised so that the data stay below a legend at the top right (time histories:
+  // no curve under the legend's text), at most doubled.
+  bool legend_above_data = false;
   // Logarithmic axes: decades with log_ticks; values <= 0 are not drawn (nor symmetric_y,
   // y_from_zero, equal_axes on that axis).
   bool log_x = false, log_y = false;
   std::vector<Mark> marks{};  // inside the data range; drawn above the series
+};
+
+// A rectangle on the figure, px: [x0, x1] x [y0, y1].
+struct Box {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return !(x1 > x0 && y1 > y0); }
+  // The area both cover (0 when they do not overlap).
+  double overlap(const Box& o) const {
+    return std::max(0.0, std::min(x1, o.x1) - std::max(x0, o.x0)) *
+           std::max(0.0, std::min(y1, o.y1) - std::max(y0, o.y0));
+  }
 };
 
 // Where a panel's data lands on the figure (for tests and overlays).
@@ -84,6 +101,11 @@ struct PanelFrame {
   double left = 0, bottom = 0, width = 0, height = 0;  // plot area, px
   double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;       // data range shown (log10 on a log axis)
   bool log_x = false, log_y = false;
+  // Where the legend and each Mark's text were placed (estimated extents of their text, 6.5 px
+  // per character at 11 pt): legend_box empty without a legend; label_boxes in panel.marks'
+  // order, empty boxes for marks without text or outside the range.
+  Box legend_box;
+  std::vector<Box> label_boxes;
   Point2 to_pixel(double x, double y) const {
     if (log_x) x = std::log10(x);
     if (log_y) y = std::log10(y);
@@ -95,5 +117,10 @@ struct PanelFrame {
 // Panels in a grid of `columns` columns, row by row from the top, under an optional title.
 Figure xy_figure(const std::vector<Panel>& panels, int columns, int width, int height,
                  const std::string& title = "", std::vector<PanelFrame>* frames = nullptr);
+
+// One more panel drawn into the cell [x0, x0 + w] x [y0, y0 + h] px of a figure (cell as
+// xy_figure's: margins for ticks and titles inside it), e.g. an inset beside a larger panel or
+// a layout of unequal cells; returns where its data lands.
+PanelFrame add_panel(Figure& fig, const Panel& panel, double x0, double y0, double w, double h);
 
 }  // namespace isopound::post

@@ -82,7 +82,8 @@ TEST(PostPlotPeaks, EveryTimeHistoryPanelMarksSummaryPeakWithValueAndTimeAtItsPl
   ASSERT_FALSE(figures.empty());
   const NamedFigure& th = figures.front();
   ASSERT_EQ(th.file, "time_histories.png");
-  ASSERT_EQ(th.frames.size(), 4u);  // ground and base, drifts, accelerations, impacts
+  // Ground and base, drifts, the base's acceleration, the floors' and ground's, impacts.
+  ASSERT_EQ(th.frames.size(), 5u);
   EXPECT_NE(th.figure.texts.front().text.find("histories.csv every 20 ms"), std::string::npos)
       << th.figure.texts.front().text;
 
@@ -103,7 +104,7 @@ TEST(PostPlotPeaks, EveryTimeHistoryPanelMarksSummaryPeakWithValueAndTimeAtItsPl
       {0, base["displacement"], 0.01, "peak %.4g cm at %.3f s (summary.json)"},
       {1, drift, 0.01, "peak %.4g %% at %.3f s (summary.json)"},
       {2, base["absolute_acceleration"], kGravity, "peak %.4g g at %.3f s (summary.json)"},
-      {3, (*wall)["peak_force"], 1e6, "peak %.4g MN at %.3f s (summary.json)"}};
+      {4, (*wall)["peak_force"], 1e6, "peak %.4g MN at %.3f s (summary.json)"}};
   std::string force_unit;
   ASSERT_EQ(force_scale((*wall)["peak_force"]["value"].get<double>(), force_unit), 1e6);
   const auto png = dir / "th.png";
@@ -127,6 +128,19 @@ TEST(PostPlotPeaks, EveryTimeHistoryPanelMarksSummaryPeakWithValueAndTimeAtItsPl
     EXPECT_LE(std::abs(px[0] - fill.r) + std::abs(px[1] - fill.g) + std::abs(px[2] - fill.b), 6)
         << int(px[0]) << "," << int(px[1]) << "," << int(px[2]);
   }
+  // The floors and the ground set their acceleration panel's axis, not the base's impacts; the
+  // peak texts are clear of the legends and of each other.
+  double floors = 0.0;
+  for (std::size_t k = 1; k < levels.size(); ++k)
+    floors = std::max(floors, levels[k]["absolute_acceleration"]["value"].get<double>() / kGravity);
+  const double pga = summary["ground_motion"]["pga_m_s2"].get<double>() / kGravity;
+  const double base_a = base["absolute_acceleration"]["value"].get<double>() / kGravity;
+  // 7.8 g against 5.3 g: the base in the panel would raise its top above 1.5 x 7.8 g.
+  ASSERT_GT(base_a, 1.4 * floors);
+  EXPECT_GE(th.frames[3].y_hi, std::max(floors, pga));
+  EXPECT_LE(th.frames[3].y_lo, -std::max(floors, pga));
+  EXPECT_LT(th.frames[3].y_hi, 2.0 * floors);
+  test::expect_labels_clear(th);
   // The sampled curves peak lower than the run: the marks are needed.
   double drawn = 0.0;
   for (const ElementColumns& c : run.contacts)

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "png_image.h"
+#include "post/plot_run.h"
 #include "test_support.h"
 
 namespace isopound::post::test {
@@ -73,6 +74,29 @@ inline std::string same_text_for_every_five_percent(const std::string& args,
   }
   EXPECT_FALSE(first.empty());
   return first;
+}
+
+// Every placed peak text (PanelFrame::label_boxes) inside its plot area, off the legend and off
+// every other peak text.
+inline bool inside_plot(const PanelFrame& f, const Box& b) {
+  constexpr double kPx = 1e-9;
+  return b.x0 >= f.left - kPx && b.x1 <= f.left + f.width + kPx && b.y0 >= f.bottom - kPx &&
+         b.y1 <= f.bottom + f.height + kPx;
+}
+
+inline void expect_labels_clear(const NamedFigure& figure) {
+  for (std::size_t p = 0; p < figure.frames.size(); ++p) {
+    const PanelFrame& f = figure.frames[p];
+    for (std::size_t i = 0; i < f.label_boxes.size(); ++i) {
+      const Box& b = f.label_boxes[i];
+      if (b.empty()) continue;
+      EXPECT_TRUE(inside_plot(f, b)) << figure.file << " panel " << p << " text " << i;
+      EXPECT_EQ(b.overlap(f.legend_box), 0.0) << figure.file << " panel " << p << " text " << i;
+      for (std::size_t j = 0; j < i; ++j)
+        EXPECT_EQ(b.overlap(f.label_boxes[j]), 0.0)
+            << figure.file << " panel " << p << " texts " << j << ", " << i;
+    }
+  }
 }
 
 using ::isopound::test::Image;

@@ -253,7 +253,8 @@ TEST(PostRun3D, AnimateFramesReadBackWithRangesAndContactBlocksExactlyWhileInCon
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const test::Image th = test::read_png((dir / "plot" / "time_histories.png").string());
   EXPECT_EQ(th.width, 1000);
-  EXPECT_EQ(th.height, 230 * 5 + 40);  // base, drifts, accelerations, F_N, F_T
+  // Base, drifts, the base slab's acceleration, the floors' and ground's, F_N, F_T.
+  EXPECT_EQ(th.height, kHistoryPanelHeight * 6 + 40);
   EXPECT_GT(th.variance(), 100.0);
   const test::Image hy = test::read_png((dir / "plot" / "hysteresis.png").string());
   EXPECT_EQ(hy.width, 1500);
@@ -268,7 +269,7 @@ TEST(PostRun3D, AnimateFramesReadBackWithRangesAndContactBlocksExactlyWhileInCon
   // (over every step) with its value and time in the legend and a marker at that place.
   {
     const std::vector<NamedFigure> figures = run_figures3d(run);
-    ASSERT_EQ(figures.front().frames.size(), 5u);
+    ASSERT_EQ(figures.front().frames.size(), 6u);
     const auto& peak = summary["buildings_3d"][0]["levels"][0]["centre_of_mass"]
                               ["absolute_acceleration"]["resultant"];
     const double a = peak_value(peak) / kGravity, at = peak.at("time_s").get<double>();

@@ -219,7 +219,8 @@ TEST(PostPlot, RunFiguresAreWrittenNonBlankWithTheirSize) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const test::Image th = test::read_png((out / "time_histories.png").string());
   EXPECT_EQ(th.width, 1000);
-  EXPECT_EQ(th.height, 230 * 4 + 40);  // four panels: base, drifts, accelerations, impacts
+  // Five panels: base, drifts, the base's acceleration, the floors' and ground's, impacts.
+  EXPECT_EQ(th.height, kHistoryPanelHeight * 5 + 40);
   EXPECT_GT(th.variance(), 100.0);
   const test::Image hy = test::read_png((out / "hysteresis.png").string());
   EXPECT_EQ(hy.width, 1000);  // isolator + two walls: two columns
