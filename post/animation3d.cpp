@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -80,8 +79,7 @@ struct BodyState {
   double u = 0, v = 0, theta = 0;        // m, m, rad
   double a_x = 0, a_y = 0, a_theta = 0;  // absolute accelerations, m/s2 and rad/s2
   int structure = -1;
-  // The gap offset of the body's points (animation.h): its separation at rest from the first
-  // structure, zero for that structure's own bodies.
+  // The gap offset of the body's points (animation.h): PlanBody::gap_W.
   Vec2 gap;
   // Displacement and absolute acceleration of the plan point p (DOFs at the plan origin).
   Vec2 displacement(Vec2 p) const { return {u - p.y * theta, v + p.x * theta}; }
@@ -98,29 +96,8 @@ std::vector<BodyState> body_states(const RunData& run, double t) {
       b = {at(l.u),       at(l.u_y),         at(l.theta),         at(l.a_abs),
            at(l.a_abs_y), at(l.a_abs_theta), static_cast<int>(s), Vec2{}};
     }
-  // Gaps: every wall and every other structure is moved as a whole by its separation at rest
-  // from the first structure's slabs (the nearest of them).
   const std::vector<PlanBody>& bodies = run.site.bodies;
-  std::string first;
-  for (const PlanBody& b : bodies)
-    if (b.role == "slab") {
-      first = b.structure;
-      break;
-    }
-  std::map<std::string, std::pair<double, Vec2>> separation;  // per structure: nearest, vector
-  for (const PlanBody& a : bodies) {
-    if (a.role != "slab" || a.structure != first) continue;
-    for (const PlanBody& b : bodies) {
-      if (b.structure == first || b.role == "rubber") continue;
-      const Separation sep = separation_of(a.polygon(), b.polygon());
-      auto [it, fresh] = separation.try_emplace(b.structure, sep.distance, sep.n_AB);
-      if (!fresh && sep.distance < it->second.first) it->second = {sep.distance, sep.n_AB};
-    }
-  }
-  for (std::size_t i = 0; i < bodies.size(); ++i)
-    if (const auto it = separation.find(bodies[i].structure);
-        it != separation.end() && it->second.first > 0.0)
-      states[i].gap = it->second.first * it->second.second;
+  for (std::size_t i = 0; i < bodies.size(); ++i) states[i].gap = bodies[i].gap_W;
   // Rubber strips move with the wall or slab they are glued to (listed after it).
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (const int owner = bodies[i].follows; owner >= 0) states[i] = states[owner];

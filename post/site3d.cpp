@@ -5,10 +5,12 @@
 #include "post/site3d.h"
 
 #include <cmath>
+#include <map>
 #include <span>
 #include <stdexcept>
 #include <utility>
 
+#include "geometry/overlap.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/bumper_layer3d.h"
 #include "solver/structures/config3d.h"
@@ -67,6 +69,35 @@ const PlanColumn* Site3D::struck(const std::string& label) const {
     if (!c.struck.label.empty() && c.struck.label == label) return &c;
   return nullptr;
 }
+
+namespace {
+
+// PlanBody::gap_W: every wall and every other structure is moved as a whole by its separation at
+// rest from the first structure's slabs (the nearest of them).
+void set_rest_gaps(std::vector<PlanBody>& bodies) {
+  std::string first;
+  for (const PlanBody& b : bodies)
+    if (b.role == "slab") {
+      first = b.structure;
+      break;
+    }
+  std::map<std::string, std::pair<double, Vec2>> separation;  // per structure: nearest, vector
+  for (const PlanBody& a : bodies) {
+    if (a.role != "slab" || a.structure != first) continue;
+    for (const PlanBody& b : bodies) {
+      if (b.structure == first || b.role == "rubber") continue;
+      const Separation sep = separation_of(a.polygon(), b.polygon());
+      auto [it, fresh] = separation.try_emplace(b.structure, sep.distance, sep.n_AB);
+      if (!fresh && sep.distance < it->second.first) it->second = {sep.distance, sep.n_AB};
+    }
+  }
+  for (PlanBody& b : bodies)
+    if (const auto it = separation.find(b.structure);
+        it != separation.end() && it->second.first > 0.0)
+      b.gap_W = it->second.first * it->second.second;
+}
+
+}  // namespace
 
 Site3D site_geometry(const ModelConfig& config) {
   Site3D site;
@@ -167,6 +198,7 @@ Site3D site_geometry(const ModelConfig& config) {
           c.struck = {s.label(), s.slab_elevation - s.z_lower,
                       site.find(s.striker_name + "/" + s.slab_level), s.section_W};
     }
+  set_rest_gaps(site.bodies);
   return site;
 }
 

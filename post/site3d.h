@@ -24,6 +24,10 @@ struct PlanBody {
   // A rubber strip (issue 27, bumper_layer3d.h): the body it is glued to, whose motion it
   // shares; -1 for slabs and walls.
   int follows = -1;
+  // Its separation at rest from the first structure's slabs (the nearest of them), shared by every
+  // body of its structure; zero for the first structure's own bodies and strips' structures.
+  // animation3d draws gaps scaled by it (gap_offset, animation.h).
+  Vec2 gap_W;
   // The name contact labels use: "<structure>/<level>" for slabs, "<structure>" for walls and
   // strips ("wall east bumper", "east-neighbour/floor 1 west bumper bottomed").
   std::string key() const { return role == "slab" ? structure + "/" + level : structure; }
