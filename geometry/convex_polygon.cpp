@@ -152,7 +152,11 @@ ConvexPolygon ConvexPolygon::placed(const Placement2& x, Vec2 about) const {
 }
 
 AreaProperties area_properties(const ConvexPolygon& polygon) {
-  const int n = polygon.size();
+  return outline_area_properties(polygon.vertices());
+}
+
+AreaProperties outline_area_properties(std::span<const Vec2> polygon) {
+  const int n = int(polygon.size());
   Vec2 origin;
   for (int i = 0; i < n; ++i) origin = origin + polygon[i];
   origin = (1.0 / n) * origin;

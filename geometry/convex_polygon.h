@@ -103,5 +103,7 @@ struct AreaProperties {
 // Area, centroid and polar second moment about the centroid, computed about a vertex-mean origin
 // (less round-off far from W's origin). A rectangle b×h: A = bh, J_c = bh(b² + h²)/12.
 AreaProperties area_properties(const ConvexPolygon& polygon);
+// The same for any simple outline given counter-clockwise (SimplePolygon's, or a piece's).
+AreaProperties outline_area_properties(std::span<const Vec2> outline);
 
 }  // namespace isopound
