@@ -1,11 +1,11 @@
 // libFuzzer target: the polygon-pairs file of `isopound geometry overlap`, read and then
-// measured as the command does (fast overlap, exact overlap, separation). Only InputError
+// measured as the command does (fast overlap, exact overlap, separation; convex or not). Only InputError
 // (exit 2) may escape; anything else is a finding.
 #include <cstdint>
 #include <string>
 
 #include "fuzz/fuzz_support.h"
-#include "geometry/overlap.h"
+#include "geometry/plan_overlap.h"
 #include "solver/io/polygon_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -14,9 +14,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       fuzz::write_scratch("pairs.yaml", reinterpret_cast<const char*>(data), size);
   try {
     for (const PolygonPair& p : load_polygon_pairs_file(path)) {
-      (void)overlap_of(p.a, p.b, OverlapMethod::kFast);
-      (void)overlap_of(p.a, p.b, OverlapMethod::kExact);
-      (void)separation_of(p.a, p.b);
+      (void)plan_overlap(p.a, p.b, OverlapMethod::kFast);
+      (void)plan_overlap(p.a, p.b, OverlapMethod::kExact);
+      (void)plan_separation(p.a, p.b);
     }
   } catch (const InputError&) {
   }

@@ -19,11 +19,13 @@ double length(Vec2 v) {
   return std::hypot(v.x, v.y);
 }
 
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+// Squared distance from p to the segment ab (squares: no square root in the inner loops).
+double point_segment_distance_sq(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 e = b - a;
   const double ee = dot(e, e);
   const double s = ee > 0.0 ? std::clamp(dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
-  return length(p - (a + s * e));
+  const Vec2 d = p - (a + s * e);
+  return dot(d, d);
 }
 
 bool boxes_apart(Vec2 a_min, Vec2 a_max, Vec2 b_min, Vec2 b_max) {
@@ -33,7 +35,9 @@ bool boxes_apart(Vec2 a_min, Vec2 a_max, Vec2 b_min, Vec2 b_max) {
 bool on_outline(const SimplePolygon& polygon, Vec2 p, double tolerance) {
   const int n = polygon.size();
   for (int i = 0; i < n; ++i)
-    if (point_segment_distance(p, polygon[i], polygon[(i + 1) % n]) <= tolerance) return true;
+    if (point_segment_distance_sq(p, polygon[i], polygon[i + 1 == n ? 0 : i + 1]) <=
+        tolerance * tolerance)
+      return true;
   return false;
 }
 
@@ -43,6 +47,40 @@ bool on_outline(const SimplePolygon& polygon, Vec2 p, double tolerance) {
 bool segment_on_outline(const SimplePolygon& polygon, Vec2 p, Vec2 q, double tolerance) {
   return on_outline(polygon, p, tolerance) && on_outline(polygon, q, tolerance) &&
          on_outline(polygon, 0.5 * (p + q), tolerance);
+}
+
+// A segment on one of the plan's diagonals (inside the plan unless it is also on an outline).
+bool segment_on_diagonal(const SimplePolygon& polygon, Vec2 p, Vec2 q, double tolerance) {
+  const double t2 = tolerance * tolerance;
+  for (const Segment2& d : polygon.diagonals())
+    if (point_segment_distance_sq(p, d.from, d.to) <= t2 &&
+        point_segment_distance_sq(q, d.from, d.to) <= t2)
+      return true;
+  return false;
+}
+
+// Whether some diagonal of the plan comes within `tolerance` of the overlap's bounding box.
+bool near_a_diagonal(const SimplePolygon& polygon, const Overlap& o, double tolerance) {
+  if (polygon.diagonals().empty() || o.vertex_count == 0) return false;
+  Vec2 lo = o.vertices[0], hi = o.vertices[0];
+  for (int k = 1; k < o.vertex_count; ++k) {
+    lo = {std::min(lo.x, o.vertices[k].x), std::min(lo.y, o.vertices[k].y)};
+    hi = {std::max(hi.x, o.vertices[k].x), std::max(hi.y, o.vertices[k].y)};
+  }
+  lo = lo - Vec2{tolerance, tolerance};
+  hi = hi + Vec2{tolerance, tolerance};
+  for (const Segment2& d : polygon.diagonals())
+    if (!boxes_apart({std::min(d.from.x, d.to.x), std::min(d.from.y, d.to.y)},
+                     {std::max(d.from.x, d.to.x), std::max(d.from.y, d.to.y)}, lo, hi))
+      return true;
+  return false;
+}
+
+// An edge of a piece overlap inside both plans: on a diagonal, off both outlines.
+bool inside_edge(const SimplePolygon& a, const SimplePolygon& b, Vec2 p, Vec2 q, double tolerance) {
+  if (!segment_on_diagonal(a, p, q, tolerance) && !segment_on_diagonal(b, p, q, tolerance))
+    return false;
+  return !segment_on_outline(a, p, q, tolerance) && !segment_on_outline(b, p, q, tolerance);
 }
 
 // Two convex overlaps glued along a common segment of positive length (on a diagonal).
@@ -105,14 +143,13 @@ void finish_component(const SimplePolygon& a, const SimplePolygon& b, Workspace&
     if (largest < 0 || o.area > w.pieces[largest].overlap.area) largest = k;
   }
   const Overlap& big = w.pieces[largest].overlap;
-  if (members == 1) {  // one convex overlap, its edges all on the true outlines
-    bool inside_edge = false;
-    for (int e = 0; e < big.vertex_count && !inside_edge; ++e)
-      inside_edge = !segment_on_outline(a, big.vertices[e],
-                                        big.vertices[(e + 1) % big.vertex_count], tolerance) &&
-                    !segment_on_outline(b, big.vertices[e],
-                                        big.vertices[(e + 1) % big.vertex_count], tolerance);
-    if (!inside_edge) {
+  if (members == 1) {     // one convex overlap, as it is unless an edge lies inside both plans
+    bool inside = false;  // no diagonal near: every edge is on an outline
+    if (near_a_diagonal(a, big, tolerance) || near_a_diagonal(b, big, tolerance))
+      for (int e = 0; e < big.vertex_count && !inside; ++e)
+        inside =
+            inside_edge(a, b, big.vertices[e], big.vertices[(e + 1) % big.vertex_count], tolerance);
+    if (!inside) {
       out = big;
       return;
     }
@@ -125,8 +162,8 @@ void finish_component(const SimplePolygon& a, const SimplePolygon& b, Workspace&
     for (int e = 0; e < o.vertex_count; ++e) {
       const Vec2 p = o.vertices[e], q = o.vertices[(e + 1) % o.vertex_count];
       if (length(q - p) <= tolerance) continue;
-      const bool on_a = segment_on_outline(a, p, q, tolerance);
-      if (on_a || segment_on_outline(b, p, q, tolerance)) w.edges.push_back({p, q, on_a, false});
+      if (inside_edge(a, b, p, q, tolerance)) continue;
+      w.edges.push_back({p, q, segment_on_outline(a, p, q, tolerance), false});
     }
   }
   // Chained head to tail (counter-clockwise, as every piece overlap is), merging collinear runs
@@ -193,17 +230,18 @@ void finish_component(const SimplePolygon& a, const SimplePolygon& b, Workspace&
 
 }  // namespace
 
-PlanOverlap plan_overlap(const SimplePolygon& a, const SimplePolygon& b, OverlapMethod method) {
-  PlanOverlap out;
-  if (boxes_apart(a.box_min(), a.box_max(), b.box_min(), b.box_max())) return out;
+void plan_overlap(const SimplePolygon& a, const SimplePolygon& b, PlanOverlap& out,
+                  OverlapMethod method) {
+  out.count = 0;
+  out.dropped = 0;
+  out.touching = false;
+  if (boxes_apart(a.box_min(), a.box_max(), b.box_min(), b.box_max())) return;
   if (a.convex() && b.convex()) {
-    const Overlap o = overlap_of(a.pieces()[0], b.pieces()[0], method);
-    if (o.kind == OverlapCase::kTouching) out.touching = true;
-    if (o.area > 0.0) {
-      out.components[0] = o;
-      out.count = 1;
-    }
-    return out;
+    Overlap& o = out.components[0];
+    o = overlap_of(a.pieces()[0], b.pieces()[0], method);
+    out.touching = o.kind == OverlapCase::kTouching;
+    out.count = o.area > 0.0 ? 1 : 0;
+    return;
   }
   thread_local Workspace w;
   w.pieces.clear();
@@ -242,6 +280,11 @@ PlanOverlap plan_overlap(const SimplePolygon& a, const SimplePolygon& b, Overlap
     finish_component(a, b, w, k, tolerance, out.components[out.count++]);
   }
   if (out.count > 0) out.touching = false;
+}
+
+PlanOverlap plan_overlap(const SimplePolygon& a, const SimplePolygon& b, OverlapMethod method) {
+  PlanOverlap out;
+  plan_overlap(a, b, out, method);
   return out;
 }
 

@@ -36,7 +36,10 @@ struct PlanOverlap {
   bool touching = false;
 };
 
-// A ∩ B of two placed plans. Allocates nothing once the thread has met plans of this size.
+// A ∩ B of two placed plans, into `out` (a contact keeps one: a PlanOverlap is ~5 kB).
+// Allocates nothing once the thread has met plans of this size.
+void plan_overlap(const SimplePolygon& a, const SimplePolygon& b, PlanOverlap& out,
+                  OverlapMethod method = OverlapMethod::kFast);
 PlanOverlap plan_overlap(const SimplePolygon& a, const SimplePolygon& b,
                          OverlapMethod method = OverlapMethod::kFast);
 

@@ -204,11 +204,11 @@ SimplePolygon::SimplePolygon(std::span<const Vec2> in) {
       if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
       const Vec2 a = in[i], b = in[(i + 1) % n], c = in[j], d = in[(j + 1) % n];
       if (segment_distance(a, b, c, d) <= kTouchingFraction * size)
-        throw InvalidPolygon(-1, "the outline touches or crosses itself (edge " +
-                                     std::to_string(i) + "-" + std::to_string((i + 1) % n) +
-                                     " meets edge " + std::to_string(j) + "-" +
-                                     std::to_string((j + 1) % n) +
-                                     "): list the vertices in order around the outline");
+        throw InvalidPolygon(
+            -1, "the outline touches or crosses itself (edge " + std::to_string(i) + "-" +
+                    std::to_string((i + 1) % n) + " meets edge " + std::to_string(j) + "-" +
+                    std::to_string((j + 1) % n) +
+                    "): a self-crossing plan; list the vertices in order around the outline");
     }
   if (std::abs(twice_area) <= kCollinearSine * size * size)
     throw InvalidPolygon(-1, "zero area: all " + std::to_string(n) + " vertices lie on one line");

@@ -164,9 +164,15 @@ int print_overlaps(const std::string& path, bool exact) {
   std::vector<nlohmann::ordered_json> out;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const PolygonPair& p = pairs[k];
-    const Overlap overlap =
-        overlap_of(p.a, p.b, exact ? OverlapMethod::kExact : OverlapMethod::kFast);
-    out.push_back(overlap_json(int(k), p.name, overlap, separation_of(p.a, p.b)));
+    const OverlapMethod method = exact ? OverlapMethod::kExact : OverlapMethod::kFast;
+    if (!p.a.convex() || !p.b.convex()) {
+      out.push_back(plan_overlap_json(int(k), p.name, plan_overlap(p.a, p.b, method),
+                                      plan_separation(p.a, p.b)));
+      continue;
+    }
+    const ConvexPolygon& a = p.a.pieces()[0];
+    const ConvexPolygon& b = p.b.pieces()[0];
+    out.push_back(overlap_json(int(k), p.name, overlap_of(a, b, method), separation_of(a, b)));
   }
   std::cout << overlaps_text(out);
   return kOk;
@@ -344,11 +350,12 @@ int main(int argc, char** argv) {
   check->add_flag("-q,--quiet", quiet, "Print nothing when the model is valid");
   check->add_flag("--strict", strict, "Implausible values (warnings) are errors: exit 2");
 
-  CLI::App* geometry = app.add_subcommand("geometry", "Geometry of convex polygons in plan");
+  CLI::App* geometry = app.add_subcommand("geometry", "Geometry of plans (convex or any simple outline)");
   geometry->require_subcommand(1);
   CLI::App* overlap = geometry->add_subcommand(
       "overlap",
-      "Overlap of polygon pairs (area, centroid, crossings, normal, indentation) as JSON");
+      "Overlap of polygon pairs (area, centroid, crossings, normal, indentation) as JSON; a "
+      "non-convex pair: one such object per connected component (contact)");
   std::string pairs_path;
   bool exact = false;
   overlap->add_option("file", pairs_path, "YAML file with pairs: [{a: [[x, y], ...], b: ...}]")

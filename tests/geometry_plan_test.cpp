@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "geometry/moat.h"
 #include "geometry/plan_overlap.h"
 #include "geometry/simple_polygon.h"
 
@@ -299,6 +300,66 @@ TEST(PlanOverlapRandom, AreasAndCentroidsOfEveryComponentMatchTheExactBooleanInt
       "area error %.2e, centroid %.2e (relative)\n",
       made, non_convex, multi, worst_area, worst_centroid);
   EXPECT_GT(multi, pairs / 100);
+}
+
+TEST(FollowingMoat, ARectanglesMoatIsTodaysFourWalls) {
+  // Today's walls (solver/structures/pounding3d.cpp, moat_wall_outline): east x in [hi.x + g,
+  // hi.x + g + t], y in [lo.y - e, hi.y + e], and so on round the slab's box.
+  const double g = 0.2, t = 1.0, e = 1.0;
+  const SimplePolygon slab{{2, 3}, {18.5, 3}, {18.5, 19.5}, {2, 19.5}};
+  const std::vector<MoatWall> walls = following_moat(slab, g, t, e);
+  ASSERT_EQ(walls.size(), 4u);
+  const auto box = [&](double x0, double x1, double y0, double y1) {
+    return std::array<double, 4>{x0, x1, y0, y1};
+  };
+  const std::array<double, 4> expected[] = {
+      box(2 - e, 18.5 + e, 3 - g - t, 3 - g),        // south (the run from (2, 3))
+      box(18.5 + g, 18.5 + g + t, 3 - e, 19.5 + e),  // east
+      box(2 - e, 18.5 + e, 19.5 + g, 19.5 + g + t),  // north
+      box(2 - g - t, 2 - g, 3 - e, 19.5 + e)};       // west
+  for (int k = 0; k < 4; ++k) {
+    const ConvexPolygon& w = walls[k].outline;
+    EXPECT_EQ(w.size(), 4);
+    EXPECT_NEAR(w.box_min().x, expected[k][0], 1e-12) << k;
+    EXPECT_NEAR(w.box_max().x, expected[k][1], 1e-12) << k;
+    EXPECT_NEAR(w.box_min().y, expected[k][2], 1e-12) << k;
+    EXPECT_NEAR(w.box_max().y, expected[k][3], 1e-12) << k;
+    EXPECT_NEAR(area_properties(w).area,
+                (expected[k][1] - expected[k][0]) * (expected[k][3] - expected[k][2]), 1e-9);
+  }
+}
+
+TEST(FollowingMoat, TheLsWallsStandAtTheGapAndMeetOnceAtTheReEntrantCorner) {
+  const SimplePolygon l{std::span<const Vec2>(kL)};
+  const double g = 0.25, t = 0.8;
+  const std::vector<MoatWall> walls = following_moat(l, g, t, 1.0);
+  ASSERT_EQ(walls.size(), 6u);
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const SimplePolygon w{std::span<const Vec2>(walls[k].outline.vertices())};
+    EXPECT_NEAR(plan_separation(l, w).distance, g, 1e-12) << k;  // the gap, nothing closer
+    for (std::size_t j = k + 1; j < walls.size(); ++j) {
+      const SimplePolygon v{std::span<const Vec2>(walls[j].outline.vertices())};
+      const PlanOverlap o = plan_overlap(w, v);
+      const bool neighbours = j == k + 1 || (k == 0 && j == walls.size() - 1);
+      // At the re-entrant corner (6, 4) the two walls share their mitre and nothing else; at
+      // the convex corners they overlap in the corner square (t + e beyond), as today's do.
+      if (!neighbours || (walls[k].p_WE.x == 6 && walls[k].p_WE.y == 4)) {
+        EXPECT_EQ(o.count, 0) << k << " " << j;
+      }
+    }
+  }
+  // The slab pushed 0.3 m (> g) along +x and +y into the notch corner meets the two notch walls
+  // (and the outer east wall's run along x = 10 only below y = 4), each once.
+  const SimplePolygon moved = l.placed({0.3, 0.3, 0.0});
+  int touched = 0;
+  for (const MoatWall& w : walls) {
+    const SimplePolygon v{std::span<const Vec2>(w.outline.vertices())};
+    const PlanOverlap o = plan_overlap(moved, v);
+    EXPECT_LE(o.count, 1);
+    touched += o.count;
+  }
+  EXPECT_EQ(touched, 4);  // east, notch bottom, notch side, north
+  EXPECT_THROW(following_moat(l, 3.0, 2.0, 1.0), InvalidPolygon);  // the notch is 4 m wide
 }
 
 }  // namespace

@@ -35,14 +35,44 @@ Json overlap_json(int index, const std::string& name, const Overlap& overlap,
   return out;
 }
 
+Json plan_overlap_json(int index, const std::string& name, const PlanOverlap& overlap,
+                       const Separation& separation) {
+  Json out;
+  out["pair"] = index;
+  if (!name.empty()) out["name"] = name;
+  out["case"] = "contacts";
+  out["contacts"] = overlap.count;
+  double area = 0.0;
+  Json components = Json::array();
+  for (int k = 0; k < overlap.count; ++k) {
+    area += overlap.components[k].area;
+    Json c = overlap_json(k, "", overlap.components[k], separation);
+    c.erase("pair");
+    c.erase("separation_m");
+    components.push_back(c);
+  }
+  out["area_m2"] = area;
+  out["components"] = components;
+  out["separation_m"] = separation.distance;
+  return out;
+}
+
 std::string overlaps_text(const std::vector<Json>& objects) {
   std::string text = "[";
   for (std::size_t k = 0; k < objects.size(); ++k) {
     text += k == 0 ? "\n  {" : ",\n  {";
     bool first = true;
     for (const auto& [key, value] : objects[k].items()) {
-      text += (first ? "\n    " : ",\n    ") + Json(key).dump() + ": " + value.dump();
+      text += (first ? "\n    " : ",\n    ") + Json(key).dump() + ": ";
       first = false;
+      if (!value.is_array() || value.empty() || !value.front().is_object()) {
+        text += value.dump();
+        continue;
+      }
+      // A list of objects (a non-convex pair's components): one object per line.
+      for (std::size_t c = 0; c < value.size(); ++c)
+        text += (c == 0 ? "[\n      " : ",\n      ") + value[c].dump();
+      text += "\n    ]";
     }
     text += "\n  }";
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/overlap.h"
+#include "geometry/plan_overlap.h"
 
 namespace isopound {
 
@@ -16,6 +17,13 @@ namespace isopound {
 // when the polygons are separated.
 nlohmann::ordered_json overlap_json(int index, const std::string& name, const Overlap& overlap,
                                     const Separation& separation);
+
+// A pair with a non-convex plan: {"pair", "name"?, "case": "contacts", "contacts": the number of
+// connected overlap components, "area_m2": their sum, "components": [one object as above per
+// component, without pair, name and separation], "separation_m"}.
+nlohmann::ordered_json plan_overlap_json(int index, const std::string& name,
+                                         const PlanOverlap& overlap,
+                                         const Separation& separation);
 
 // An array of such objects as text: one key per line, each value on one line.
 std::string overlaps_text(const std::vector<nlohmann::ordered_json>& objects);

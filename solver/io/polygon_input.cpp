@@ -1,5 +1,6 @@
-// Convex polygons in plan read from YAML (coordinates with optional length units), and the pairs
-// file of `isopound geometry overlap`. Validation is ConvexPolygon's; messages gain file:line:key.
+// Polygons in plan read from YAML (coordinates with optional length units), and the pairs file of
+// `isopound geometry overlap`. Validation is ConvexPolygon's or SimplePolygon's; messages gain
+// file:line:key.
 #include "solver/io/polygon_input.h"
 
 #ifdef ISOPOUND_FUZZ_PLANTED_BUG
@@ -9,7 +10,11 @@
 
 namespace isopound {
 
-ConvexPolygon read_polygon(const InputNode& node) {
+namespace {
+
+// The polygon type T built from the list, its InvalidPolygon placed at the vertex it names.
+template <class T>
+T read_outline(const InputNode& node) {
   const std::vector<InputNode> points = node.elements();
   std::vector<Vec2> vertices;
   for (const InputNode& point : points) {
@@ -20,11 +25,21 @@ ConvexPolygon read_polygon(const InputNode& node) {
     vertices.push_back({xy[0].quantity(dim::kLength), xy[1].quantity(dim::kLength)});
   }
   try {
-    return ConvexPolygon(std::span<const Vec2>(vertices));
+    return T(std::span<const Vec2>(vertices));
   } catch (const InvalidPolygon& e) {
     if (e.vertex() >= 0 && e.vertex() < int(points.size())) points[e.vertex()].fail(e.what());
     node.fail(e.what());
   }
+}
+
+}  // namespace
+
+ConvexPolygon read_polygon(const InputNode& node) {
+  return read_outline<ConvexPolygon>(node);
+}
+
+SimplePolygon read_plan(const InputNode& node) {
+  return read_outline<SimplePolygon>(node);
 }
 
 std::vector<PolygonPair> load_polygon_pairs_file(const std::string& path) {
@@ -50,7 +65,7 @@ std::vector<PolygonPair> load_polygon_pairs_file(const std::string& path) {
       (void)past_the_end;
     }
 #endif
-    pairs.push_back({name, read_polygon(item.required("a")), read_polygon(item.required("b"))});
+    pairs.push_back({name, read_plan(item.required("a")), read_plan(item.required("b"))});
   }
   if (pairs.empty()) list.fail("no pairs: give at least one {a: ..., b: ...}");
   return pairs;
