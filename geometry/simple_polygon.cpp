@@ -37,12 +37,16 @@ double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return length(p - (a + s * e));
 }
 
-// Distance between segments ab and cd (0 when they cross).
-double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+// Segments ab and cd cross at a point inside both (strict signs: not at an end, not collinear).
+bool properly_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double s1 = cross(b - a, c - a), s2 = cross(b - a, d - a);
   const double s3 = cross(d - c, a - c), s4 = cross(d - c, b - c);
-  if (((s1 > 0 && s2 < 0) || (s1 < 0 && s2 > 0)) && ((s3 > 0 && s4 < 0) || (s3 < 0 && s4 > 0)))
-    return 0.0;
+  return ((s1 > 0 && s2 < 0) || (s1 < 0 && s2 > 0)) && ((s3 > 0 && s4 < 0) || (s3 < 0 && s4 > 0));
+}
+
+// Distance between segments ab and cd (0 when they cross).
+double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (properly_cross(a, b, c, d)) return 0.0;
   return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d),
                    point_segment_distance(c, a, b), point_segment_distance(d, a, b)});
 }
@@ -191,6 +195,19 @@ SimplePolygon::SimplePolygon(std::span<const Vec2> in) {
         throw InvalidPolygon(i, describe(i, in[i]) + ": repeats vertex " + std::to_string(j));
   double twice_area = 0.0;
   for (int i = 1; i + 1 < n; ++i) twice_area += cross(in[i] - in[0], in[i + 1] - in[0]);
+  // Zero area: a bow tie (its halves cancel) or points on one line.
+  if (std::abs(twice_area) <= kCollinearSine * size * size) {
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 2; j < n; ++j) {
+        if (i == 0 && j == n - 1) continue;
+        if (properly_cross(in[i], in[(i + 1) % n], in[j], in[(j + 1) % n]))
+          throw InvalidPolygon(-1, "the outline touches or crosses itself (edge " +
+                                       std::to_string(i) + "-" + std::to_string((i + 1) % n) +
+                                       " meets edge " + std::to_string(j) + "-" +
+                                       std::to_string((j + 1) % n) + "): a self-crossing plan");
+      }
+    throw InvalidPolygon(-1, "zero area: all " + std::to_string(n) + " vertices lie on one line");
+  }
   // A spike: the outline runs back along the edge it came from.
   for (int i = 0; i < n; ++i) {
     const Vec2 p = in[(i + n - 1) % n], q = in[i], r = in[(i + 1) % n];
@@ -210,8 +227,6 @@ SimplePolygon::SimplePolygon(std::span<const Vec2> in) {
                     std::to_string((j + 1) % n) +
                     "): a self-crossing plan; list the vertices in order around the outline");
     }
-  if (std::abs(twice_area) <= kCollinearSine * size * size)
-    throw InvalidPolygon(-1, "zero area: all " + std::to_string(n) + " vertices lie on one line");
   reversed_ = twice_area < 0.0;
   vertices_.resize(n);
   for (int i = 0; i < n; ++i) vertices_[i] = reversed_ ? in[n - 1 - i] : in[i];
