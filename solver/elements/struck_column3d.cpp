@@ -189,11 +189,19 @@ void StruckColumn3D::solve_node() {
   // applied; the node's rate makes it stiff, c / h): a step of 1e-11 m resolves the friction's
   // stick ramp (width ~ mu F_N h / c_T) at any step and stays well above the round-off of the
   // placements (~1e-15 m). The one-sided differences are kept for kinks (below).
+  // The slope is taken only where a Newton step starts from (not at trial points of the line
+  // search, nor where the node is balanced): its differences cost four residuals.
   std::array<Eigen::Matrix2d, 2> one_sided;  // forward, backward
-  const auto residual = [&](const Eigen::Vector2d& n, Eigen::Matrix2d& slope) {
+  Eigen::Matrix2d column_slope;              // the column's, at the last residual's node
+  const auto residual = [&](const Eigen::Vector2d& n) {
     zl_.segment<2>(3) = n;
-    Eigen::Vector2d g = node_residual(&slope);
+    return node_residual(&column_slope);
+  };
+  // The slope at n, the node of the last residual; returns the residual there, re-evaluated.
+  const auto slope_at = [&](const Eigen::Vector2d& n, Eigen::Matrix2d& slope) {
+    slope = column_slope;
     one_sided = {slope, slope};
+    Eigen::Vector2d g = fl_.segment<2>(3);
     if (!contact_.trial_closed()) return g;
     constexpr double eps = 1e-11;
     Eigen::Vector2d g_plus[2], g_minus[2];
@@ -226,9 +234,11 @@ void StruckColumn3D::solve_node() {
   };
   // Newton from the node; true when converged.
   const auto solve = [&](Eigen::Vector2d& node, Eigen::Vector2d& g, Eigen::Matrix2d& slope) {
-    g = residual(node, slope);
+    g = residual(node);
+    bool have_slope = false;
     for (int it = 0; it < 100; ++it) {
       if (converged(g)) return true;
+      if (!have_slope) g = slope_at(node, slope), have_slope = true;
       // Newton with backtracking (the residual's norm must fall). At a kink (the no-tension
       // clamp, stick to slip, a hinge) the central slope averages the two sides and its step may
       // not descend: then the slopes of each side, one-sided per coordinate.
@@ -245,19 +255,18 @@ void StruckColumn3D::solve_node() {
         if (!step.allFinite() || step.norm() <= 1e-14 * (1e-3 + node.norm())) continue;
         double t = 1.0;
         for (int cut = 0; cut < 30; ++cut, t *= 0.5) {
-          Eigen::Matrix2d slope_next;
-          const Eigen::Vector2d g_next = residual(node + t * step, slope_next);
+          const Eigen::Vector2d g_next = residual(node + t * step);
           if (g_next.norm() < g.norm()) {
             node += t * step;
             g = g_next;
-            slope = slope_next;
+            have_slope = false;
             moved = true;
             break;
           }
         }
       }
       if (!moved) {
-        g = residual(node, slope);  // the state back at the best node
+        g = residual(node);  // the state back at the best node
         return false;
       }
     }
@@ -276,12 +285,12 @@ void StruckColumn3D::solve_node() {
       contact_.force_friction_status(status);
       solve(n_branch, g_branch, slope);
       contact_.force_friction_status(PolygonContact::FrictionStatus::kFree);
-      g_branch = residual(n_branch, slope);
+      g_branch = residual(n_branch);
       const bool better = g_branch.norm() < g.norm();
       if (better) n = n_branch, g = g_branch;
       if (converged(g)) break;
     }
-    g = residual(n, slope);
+    g = residual(n);
   }
 }
 
