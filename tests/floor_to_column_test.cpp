@@ -416,6 +416,20 @@ TEST(FloorToColumnConvergence, DefaultPeaksWithinOnePercentOfAConvergedFixedStep
       def.analysis.stats.rejected_steps);
 }
 
+// Issue 39: the shipped config's default run over the same window steps without collapse. The
+// node's relaxation limited the step to one relaxation time c / (k + n k_node) (60 991 steps,
+// 1.6e-5 s through every long contact) and a cut at a separation ending 1e-14 s before the
+// interval's end left that remainder as a step; now 10 relaxation times and the cut ends at the
+// end: about 7300 steps, the smallest 2.5e-8 s.
+TEST(FloorToColumnConvergence, DefaultRunStepsWithoutCollapse) {
+  ISOPOUND_REQUIRE_RECORDS();
+  const JobResult def = run_job(mismatch_case(0.0));
+  std::printf("[steps] floor-to-column default: %ld steps, smallest %.3e s\n",
+              def.analysis.stats.steps, def.analysis.stats.min_step);
+  EXPECT_GE(def.analysis.stats.min_step, 1e-9);
+  EXPECT_LT(def.analysis.stats.steps, 15000);
+}
+
 // The reference itself: halving its step moves no peak by more than 0.1 % (measured 1.5e-4, a
 // hinge moment; over 10 s of the record 0.25 %, the roof's acceleration).
 TEST(FloorToColumnConvergence, FixedStepReferenceIsConverged) {

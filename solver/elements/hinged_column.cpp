@@ -41,6 +41,25 @@ HingedColumn::HingedColumn(const HingedColumnSection& section) : s_(section) {
   k_uy_ = k.topRightCorner<3, 4>();
   k_yu_ = k.bottomLeftCorner<4, 3>();
   k_yy_ = k.bottomRightCorner<4, 4>();
+  for (int code = 0; code < 27; ++code) {
+    int active[3];
+    set_signs(code, active);
+    Eigen::Matrix4d A = k_yy_;
+    Eigen::Matrix<double, 4, 3> B = k_yu_;
+    flowing_[code] = 0;
+    for (int i = 0; i < 3; ++i) {
+      flowing_[code] += active[i] != 0;
+      if (active[i] == 0) {
+        A.row(i + 1).setZero();
+        A(i + 1, i + 1) = 1.0;
+        B.row(i + 1).setZero();
+      } else {
+        A(i + 1, i + 1) += s_.hardening;
+      }
+    }
+    sets_[code].lu.compute(A);
+    sets_[code].tangent = k_uu_ - k_uy_ * sets_[code].lu.solve(B);
+  }
 }
 
 double HingedColumn::storey_stiffness() const {
@@ -57,27 +76,26 @@ double HingedColumn::shape_at_node() const {
   return xi * xi * (3.0 - 2.0 * xi);
 }
 
+void HingedColumn::set_signs(int code, int active[3]) {
+  for (int i = 0; i < 3; ++i, code /= 3) active[i] = code % 3 == 0 ? 0 : (code % 3 == 1 ? 1 : -1);
+}
+
 bool HingedColumn::try_active_set(const Eigen::Vector3d& u, const HingeRotations& committed,
-                                  const int active[3], ColumnState& out, bool any) const {
+                                  int code, ColumnState& out, bool any) const {
   const double my = s_.yield_moment, h = s_.hardening;
+  int active[3];
+  set_signs(code, active);
   // Row 0: the node's moment equilibrium; row 1 + i: hinge i held (p = committed) or on its
-  // yield surface m + H p = -sign(dp) M_y.
-  Eigen::Matrix4d A = k_yy_;
+  // yield surface m + H p = -sign(dp) M_y (the matrix factored once: sets_).
   Eigen::Vector4d rhs = -k_yu_ * u;
-  Eigen::Matrix<double, 4, 3> B = k_yu_;
   for (int i = 0; i < 3; ++i) {
-    if (active[i] == 0) {
-      A.row(i + 1).setZero();
-      A(i + 1, i + 1) = 1.0;
+    if (active[i] == 0)
       rhs(i + 1) = committed(i);
-      B.row(i + 1).setZero();
-    } else {
-      A(i + 1, i + 1) += h;
+    else
       rhs(i + 1) -= my * active[i];
-    }
   }
-  const Eigen::PartialPivLU<Eigen::Matrix4d> lu(A);
-  const Eigen::Vector4d y = lu.solve(rhs);
+  const ActiveSet& set = sets_[code];
+  const Eigen::Vector4d y = set.lu.solve(rhs);
   const Eigen::Vector4d r = k_yu_ * u + k_yy_ * y;  // (node moment, hinge moments m)
   for (int i = 0; i < 3; ++i) {
     const double dp = y(i + 1) - committed(i);
@@ -87,7 +105,7 @@ bool HingedColumn::try_active_set(const Eigen::Vector3d& u, const HingeRotations
   }
   out.plastic = y.tail<3>();
   out.force = k_uu_ * u + k_uy_ * y;
-  out.tangent = k_uu_ - k_uy_ * lu.solve(B);
+  out.tangent = set.tangent;
   out.moment = r.tail<3>();
   Vector7d q;
   q << u, y;
@@ -100,21 +118,15 @@ bool HingedColumn::try_active_set(const Eigen::Vector3d& u, const HingeRotations
 ColumnState HingedColumn::respond(const ColumnDisplacements& u,
                                   const HingeRotations& committed) const {
   ColumnState out;
-  const int elastic[3] = {0, 0, 0};
-  if (try_active_set(u, committed, elastic, out, !(s_.yield_moment > 0))) return out;
+  constexpr int kElastic = 0;
+  if (try_active_set(u, committed, kElastic, out, !(s_.yield_moment > 0))) return out;
   // The flowing hinges: the minimisation is strictly convex, so exactly one set fits; fewer
   // active hinges first.
   for (int count = 1; count <= 3; ++count)
-    for (int code = 0; code < 27; ++code) {
-      int active[3], c = code, n = 0;
-      for (int i = 0; i < 3; ++i, c /= 3) {
-        active[i] = c % 3 == 0 ? 0 : (c % 3 == 1 ? 1 : -1);
-        n += active[i] != 0;
-      }
-      if (n == count && try_active_set(u, committed, active, out, false)) return out;
-    }
+    for (int code = 0; code < 27; ++code)
+      if (flowing_[code] == count && try_active_set(u, committed, code, out, false)) return out;
   // Round-off at a set's border: the elastic solution (the next iteration moves off it).
-  try_active_set(u, committed, elastic, out, true);
+  try_active_set(u, committed, kElastic, out, true);
   return out;
 }
 

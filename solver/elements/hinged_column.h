@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 
 namespace isopound {
 
@@ -54,10 +55,21 @@ class HingedColumn {
   double shape_at_node() const;
 
  private:
-  // Solves for y = (theta, p) with the hinges in `active` (signs: 0 elastic, +-1 flowing);
-  // false when that set is not the solution (any: take it regardless).
-  bool try_active_set(const Eigen::Vector3d& u, const HingeRotations& committed,
-                      const int active[3], ColumnState& out, bool any) const;
+  // Solves for y = (theta, p) with the hinges of active set `code` (set_signs) for y and
+  // returns false when that set is not the solution (any: take it regardless).
+  bool try_active_set(const Eigen::Vector3d& u, const HingeRotations& committed, int code,
+                      ColumnState& out, bool any) const;
+  // Active set `code` (0 ... 26, base 3 per hinge: 0 elastic, 1 flowing +, 2 flowing -).
+  static void set_signs(int code, int active[3]);
+
+  // Per active set, what does not depend on u: the factors of its 4 x 4 system and the tangent
+  // they give (the same operations as factoring at each call, so the same bits, once).
+  struct ActiveSet {
+    Eigen::PartialPivLU<Eigen::Matrix4d> lu;
+    Eigen::Matrix3d tangent;
+  };
+  std::array<ActiveSet, 27> sets_;
+  std::array<int, 27> flowing_;  // the number of flowing hinges of each set
 
   HingedColumnSection s_;
   // Stiffness of both elements in q = (u_lower, u_node, u_upper, theta, p_b, p_n, p_t), split

@@ -491,6 +491,24 @@ double PolygonContact::event_fraction() {
   return theta;
 }
 
+bool PolygonContact::pending_has_indicator() const {
+  return pending_ == Event::kTension || pending_ == Event::kPhase || pending_ == Event::kSlip;
+}
+
+double PolygonContact::event_indicator(bool committed) const {
+  const State& S = committed ? committed_ : trial_;
+  switch (pending_) {
+    case Event::kTension:
+      return S.raw_normal;
+    case Event::kPhase:
+      return S.rate_n;
+    case Event::kSlip:  // the committed state's |F_T|, the trial's |f_tr|, as event_fraction
+      return cfg_.mu_static * S.normal - std::abs(committed ? S.tangential : S.tangential_trial);
+    default:
+      return 0.0;
+  }
+}
+
 bool PolygonContact::settle_event() {
   State& C = committed_;
   const Event event = pending_;

@@ -167,6 +167,16 @@ class PolygonContact final : public Element {
   enum class FrictionStatus { kFree, kStick, kSlip };
   void force_friction_status(FrictionStatus status) { forced_friction_ = status; }
 
+  // After event_fraction(): whether its event is one whose fraction interpolates a smooth
+  // indicator linearly (no-tension clamp F_N = 0, approach/restitution switch, stick -> slip),
+  // and that indicator at the committed (true) or trial state, > 0 before the event, < 0 after.
+  // For a caller whose trials are not linear in the step (a massless node behind a dashpot)
+  // and which finds the zero itself.
+  bool pending_has_indicator() const;
+  // The pending event only ends the step at a kink of a continuous force (no-tension, phase).
+  bool pending_is_kink() const { return pending_ == Event::kTension || pending_ == Event::kPhase; }
+  double event_indicator(bool committed) const;
+
   enum { kOutputCount = 12 };
 
  private:

@@ -42,7 +42,9 @@ class StruckColumn final : public Element {
   void revert() override;
 
   void begin_step(double h, bool freeze_status) override;
-  double event_fraction() override { return contact_.event_fraction(); }
+  // The contact's, but a cut ending within 1 ns of the step's end ends at the end (the stepper
+  // took the remainder as a step of its own: 1e-14 s).
+  double event_fraction() override;
   bool settle_event() override { return contact_.settle_event(); }
   // The contact's limit and, behind a dashpot, the node's relaxation time c / (k_contact +
   // k_node): the backward difference is first order in h over it.
@@ -93,7 +95,7 @@ class StruckColumn final : public Element {
   // Steps shorter than this (s, cut at events) take the node's committed velocity: a difference
   // over them is round-off.
   static constexpr double kShortestDifference = 1e-9;
-  static constexpr double kRelaxationSteps = 1.0;  // largest step / relaxation time
+  static constexpr double kRelaxationSteps = 10.0;  // largest step / relaxation time
   bool by_difference() const { return damped_commit_ && h_ > kShortestDifference; }
   HingeRotations plastic_commit_ = HingeRotations::Zero();
   ColumnState state_;

@@ -50,6 +50,8 @@ StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec
       zl_(Eigen::VectorXd::Zero(kLocal)),
       zdl_(Eigen::VectorXd::Zero(kLocal)),
       fl_(Eigen::VectorXd::Zero(kLocal)),
+      z_commit_(Eigen::VectorXd::Zero(kLocal)),
+      zd_commit_(Eigen::VectorXd::Zero(kLocal)),
       kk_(Eigen::MatrixXd::Zero(kLocal, kLocal)),
       kd_(Eigen::MatrixXd::Zero(kLocal, kLocal)) {
   if (spec.slab[0] < 0 || spec.upper[0] < 0)
@@ -178,16 +180,28 @@ Eigen::Vector2d StruckColumn3D::node_residual(Eigen::Matrix2d* slope) {
 
 void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
   gather(u, v);
+  solve_node();
+}
+
+void StruckColumn3D::solve_node() {
   // The node's residual and its slope at n. In contact the slope is the central difference of
   // the residual itself (the contact's law, the depth rule and the friction return map as
   // applied; the node's rate makes it stiff, c / h): a step of 1e-11 m resolves the friction's
   // stick ramp (width ~ mu F_N h / c_T) at any step and stays well above the round-off of the
   // placements (~1e-15 m). The one-sided differences are kept for kinks (below).
+  // The slope is taken only where a Newton step starts from (not at trial points of the line
+  // search, nor where the node is balanced): its differences cost four residuals.
   std::array<Eigen::Matrix2d, 2> one_sided;  // forward, backward
-  const auto residual = [&](const Eigen::Vector2d& n, Eigen::Matrix2d& slope) {
+  Eigen::Matrix2d column_slope;              // the column's, at the last residual's node
+  const auto residual = [&](const Eigen::Vector2d& n) {
     zl_.segment<2>(3) = n;
-    Eigen::Vector2d g = node_residual(&slope);
+    return node_residual(&column_slope);
+  };
+  // The slope at n, the node of the last residual; returns the residual there, re-evaluated.
+  const auto slope_at = [&](const Eigen::Vector2d& n, Eigen::Matrix2d& slope) {
+    slope = column_slope;
     one_sided = {slope, slope};
+    Eigen::Vector2d g = fl_.segment<2>(3);
     if (!contact_.trial_closed()) return g;
     constexpr double eps = 1e-11;
     Eigen::Vector2d g_plus[2], g_minus[2];
@@ -220,9 +234,11 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   };
   // Newton from the node; true when converged.
   const auto solve = [&](Eigen::Vector2d& node, Eigen::Vector2d& g, Eigen::Matrix2d& slope) {
-    g = residual(node, slope);
+    g = residual(node);
+    bool have_slope = false;
     for (int it = 0; it < 100; ++it) {
       if (converged(g)) return true;
+      if (!have_slope) g = slope_at(node, slope), have_slope = true;
       // Newton with backtracking (the residual's norm must fall). At a kink (the no-tension
       // clamp, stick to slip, a hinge) the central slope averages the two sides and its step may
       // not descend: then the slopes of each side, one-sided per coordinate.
@@ -239,19 +255,18 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
         if (!step.allFinite() || step.norm() <= 1e-14 * (1e-3 + node.norm())) continue;
         double t = 1.0;
         for (int cut = 0; cut < 30; ++cut, t *= 0.5) {
-          Eigen::Matrix2d slope_next;
-          const Eigen::Vector2d g_next = residual(node + t * step, slope_next);
+          const Eigen::Vector2d g_next = residual(node + t * step);
           if (g_next.norm() < g.norm()) {
             node += t * step;
             g = g_next;
-            slope = slope_next;
+            have_slope = false;
             moved = true;
             break;
           }
         }
       }
       if (!moved) {
-        g = residual(node, slope);  // the state back at the best node
+        g = residual(node);  // the state back at the best node
         return false;
       }
     }
@@ -270,12 +285,12 @@ void StruckColumn3D::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& 
       contact_.force_friction_status(status);
       solve(n_branch, g_branch, slope);
       contact_.force_friction_status(PolygonContact::FrictionStatus::kFree);
-      g_branch = residual(n_branch, slope);
+      g_branch = residual(n_branch);
       const bool better = g_branch.norm() < g.norm();
       if (better) n = n_branch, g = g_branch;
       if (converged(g)) break;
     }
-    g = residual(n, slope);
+    g = residual(n);
   }
 }
 
@@ -362,6 +377,68 @@ double StruckColumn3D::stored_energy() const {
   return state_[0].stored_energy + state_[1].stored_energy + contact_.stored_energy();
 }
 
+double StruckColumn3D::indicator_at(double theta, const Eigen::VectorXd& z1,
+                                    const Eigen::VectorXd& zd1, double h) {
+  for (const int k : kRest) {
+    zl_(k) = z_commit_(k) + theta * (z1(k) - z_commit_(k));
+    zdl_(k) = zd_commit_(k) + theta * (zd1(k) - zd_commit_(k));
+  }
+  set_twist();
+  h_ = theta * h;
+  contact_.begin_step(h_, false);
+  solve_node();
+  return contact_.event_indicator(false);
+}
+
+double StruckColumn3D::event_fraction() {
+  const double theta = contact_.event_fraction();
+  if (!(theta > 0 && theta < 1)) return theta;
+  // Shorter than this (s), a step cut at an event is round-off: the event is settled at the
+  // step's start or end (a cut ending that close to the end left the remainder as a step).
+  constexpr double kShortestCut = 1e-9;
+  constexpr double kSettledAtStart = 2e-4;
+  const double h = h_;
+  double located = theta;
+  const double f0 = contact_.event_indicator(true), f1 = contact_.event_indicator(false);
+  if (contact_.pending_has_indicator() && f0 > 0 && f1 < 0) {
+    // Illinois (regula falsi halving a retained end's value) on the node solved along the step,
+    // to 1e-3 of the fraction or 1 ns; the step is cut at the bracket's end past the event, so
+    // that the next step begins on the event's far side (cut before it, the linear guess from
+    // there fell short again). A stepper rejects the trial after a cut: the probes may leave it
+    // anywhere, but the contact's pending event and the trial are restored.
+    const Eigen::VectorXd z1 = zl_, zd1 = zdl_;
+    double lo = 0.0, hi = 1.0, flo = f0, fhi = f1;
+    int side = 0;
+    for (int it = 0; it < 40 && (hi - lo) * h > kShortestCut && hi - lo > 1e-3 * hi; ++it) {
+      const double t = std::clamp((lo * fhi - hi * flo) / (fhi - flo), lo + 1e-3 * (hi - lo),
+                                  hi - 1e-3 * (hi - lo));
+      const double f = indicator_at(t, z1, zd1, h);
+      if (f > 0) {
+        lo = t, flo = f;
+        if (side == 1) fhi *= 0.5;
+        side = 1;
+      } else {
+        hi = t, fhi = f;
+        if (side == -1) flo *= 0.5;
+        side = -1;
+      }
+    }
+    zl_ = z1, zdl_ = zd1, h_ = h;
+    contact_.begin_step(h, false);
+    solve_node();
+    contact_.event_fraction();
+    located = hi;
+  }
+  // A kink of a continuous force (no-tension, phase) at the step's very start: a short step past
+  // it rather than none (a stepper settles an event within 1e-4 of the start at once, element.h,
+  // and a kink settled would be found again).
+  if (contact_.pending_is_kink())
+    located = std::min(1.0, std::max({located, 1.0001 * kShortestCut / h, kSettledAtStart}));
+  if (located * h < kShortestCut) return 0.0;
+  if ((1.0 - located) * h <= kShortestCut) return 1.0 - 1e-15;
+  return located;
+}
+
 Eigen::Matrix2d StruckColumn3D::node_rate_slope() const {
   // Backward difference: I; the depth rule after an onset (quasi-static across the normal):
   // n n^T. (Behind the dashpot the depth rule's normal part is I too: D falls as the node moves
@@ -385,6 +462,8 @@ void StruckColumn3D::commit() {
         spec_.axis[i].yield_moment * (state_[i].plastic - plastic_commit_[i]).cwiseAbs().sum();
     plastic_commit_[i] = state_[i].plastic;
   }
+  z_commit_ = zl_;
+  zd_commit_ = zdl_;
   node_commit_ = zl_.segment<2>(3);
   rate_commit_ = zdl_.segment<2>(3);
   offset_commit_ = node_commit_ - chord(zl_, column_[0].shape_at_node());
