@@ -324,20 +324,14 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
 
   ProbeRecorder probe_recorder(model.probes);
 
-  auto record = [&](double t, const GroundAcceleration& ag, double h) {
-    const Eigen::VectorXd& u = stepper.u();
-    const Eigen::VectorXd& v = stepper.v();
-    const Eigen::VectorXd& a = stepper.a();
-    for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);  // absolute acceleration
-    displacement_peaks.record(u.data(), t);
-    velocity_peaks.record(v.data(), t);
-    acceleration_peaks.record(work.data(), t);
-    for (std::size_t s = 0; s < res.stories.size(); ++s) {
-      const Story& st = res.stories[s];
-      const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
-      update_peak(res.drift[s], drift, t);
-      update_peak(res.drift_ratio[s], drift / st.height, t);
-    }
+  // What each step records (RunOptions::record); a history row takes everything.
+  RecordScope scope = options.record;
+  if (sink || step_sink) scope = RecordScope{};
+  const bool shears = scope.story_shears || scope.base_shears;
+  const bool absolute = scope.accelerations || shears || scope.probes;
+
+  // Storey and base shears of the committed state (work: the absolute accelerations).
+  const auto record_shears = [&](double t) {
     mass_rows.multiply(work, inertia);
     for (std::size_t s = 0; s < above_story.size(); ++s) {
       double shear = 0.0;
@@ -378,22 +372,15 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       base_shear_now[s] = shear;
       update_peak(res.base_shear[s], shear, t);
     }
-    for (std::size_t k = 0; k < options.tracked.size(); ++k) {
-      const TrackedCoordinate& c = options.tracked[k];
-      const double x = (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) +
-                       (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0) +
-                       (c.dof_c >= 0 ? c.c_c * u[c.dof_c] : 0.0);
-      update_peak(res.tracked[k], x, t);
-    }
-    // work holds the absolute accelerations until the energy terms below.
-    probe_recorder.record(u.data(), work.data(), t, res.probes);
-    stepper.batches().outputs(output_scratch.data());
-    output_peaks.record(output_scratch.data(), t);
+  };
 
-    // Energy.
+  // Energy terms of the committed state, reached by a step h.
+  const auto record_energy = [&](const GroundAcceleration& ag, double h) {
+    const Eigen::VectorXd& u = stepper.u();
+    const Eigen::VectorXd& v = stepper.v();
     double p_in = -v.dot(m_iota.col(0)) * ag.x;
     if (ag.y != 0.0) p_in -= v.dot(m_iota.col(1)) * ag.y;
-    const double p_visc = v.dot(damping_force);  // C v, computed for the base shear
+    const double p_visc = v.dot(stepper.c_v());  // C v
     double p_elem = 0.0, stored = 0.0;
     stepper.batches().add_energy(v, p_elem, stored);
     e_in += 0.5 * h * (p_in_prev + p_in);
@@ -417,6 +404,37 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     en.error = e_in + initial_energy - (kinetic + strain + e_visc + w_elem) - stored_at_start;
     max_in = std::max(max_in, std::abs(e_in) + initial_energy);
     max_err = std::max(max_err, std::abs(en.error));
+  };
+
+  auto record = [&](double t, const GroundAcceleration& ag, double h) {
+    const Eigen::VectorXd& u = stepper.u();
+    const Eigen::VectorXd& v = stepper.v();
+    const Eigen::VectorXd& a = stepper.a();
+    if (absolute)
+      for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);  // absolute acceleration
+    displacement_peaks.record(u.data(), t);
+    if (scope.velocities) velocity_peaks.record(v.data(), t);
+    if (scope.accelerations) acceleration_peaks.record(work.data(), t);
+    for (std::size_t s = 0; s < res.stories.size(); ++s) {
+      const Story& st = res.stories[s];
+      const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
+      update_peak(res.drift[s], drift, t);
+      update_peak(res.drift_ratio[s], drift / st.height, t);
+    }
+    if (shears) record_shears(t);
+    for (std::size_t k = 0; k < options.tracked.size(); ++k) {
+      const TrackedCoordinate& c = options.tracked[k];
+      const double x = (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) +
+                       (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0) +
+                       (c.dof_c >= 0 ? c.c_c * u[c.dof_c] : 0.0);
+      update_peak(res.tracked[k], x, t);
+    }
+    if (scope.probes) probe_recorder.record(u.data(), work.data(), t, res.probes);
+    if (scope.element_outputs) {
+      stepper.batches().outputs(output_scratch.data());
+      output_peaks.record(output_scratch.data(), t);
+    }
+    if (scope.energy) record_energy(ag, h);
 
     if (sink || step_sink) {
       double* r = row.data();

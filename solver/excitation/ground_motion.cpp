@@ -594,9 +594,9 @@ GroundMotion read_columns(const std::string& path, const std::vector<std::string
     // sample k is at k*dt from the start of the record, as everywhere in isopound.
   } else {
     if (options.dt == 0.0)
-      throw RecordError(path, 0,
-                        "no time step: a column file without a time column needs dt > 0" +
-                            std::string(hint));
+      throw RecordError(
+          path, 0,
+          "no time step: a column file without a time column needs dt > 0" + std::string(hint));
     if (!(options.dt > 0.0) || !std::isfinite(options.dt))
       throw RecordError(path, 0, "dt = " + fmt(options.dt) + " s: the time step must be > 0");
     dt = options.dt;
