@@ -497,7 +497,15 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   int level = 0;
   int settles_here = 0;
   const double min_fraction = std::ldexp(1.0, -max_level);
-  const auto level_step = [&](int l) { return H * std::ldexp(1.0, -l); };
+  // 2^-l for the levels 0..max_level (exact), looked up: ldexp twice a step was 2 % of a 2D run.
+  std::vector<double> fraction_of_level(static_cast<std::size_t>(std::max(max_level, 0)) + 1);
+  for (std::size_t l = 0; l < fraction_of_level.size(); ++l)
+    fraction_of_level[l] = std::ldexp(1.0, -static_cast<int>(l));
+  const auto level_fraction = [&](int l) {
+    return l >= 0 && l <= max_level ? fraction_of_level[static_cast<std::size_t>(l)]
+                                    : std::ldexp(1.0, -l);
+  };
+  const auto level_step = [&](int l) { return H * level_fraction(l); };
   // The elements with events or step limits (Element::has_events); the others are never asked.
   std::vector<int> eventful;
   for (int k = 0; k < n_elements; ++k)
@@ -529,7 +537,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     double pos = 0.0;
     double forced = 0.0;  // > 0: the fraction of H of a step cut at an event
     while (pos < 1.0) {
-      double frac = forced > 0 ? forced : std::ldexp(1.0, -level);
+      double frac = forced > 0 ? forced : level_fraction(level);
       bool regular = forced == 0.0;
       if (pos + frac > 1.0 - 1e-12 * frac) {
         regular = regular && pos + frac == 1.0;
@@ -551,7 +559,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
             // A step cut to end at an event failed: half of it no longer ends at the event, so
             // the event is dropped (no element may settle at the wrong instant) and found
             // again by regular, unfrozen steps of at most half the cut step.
-            while (level < max_level && std::ldexp(1.0, -level) > 0.5 * forced) ++level;
+            while (level < max_level && level_fraction(level) > 0.5 * forced) ++level;
             forced = 0.0;
             std::fill(settling.begin(), settling.end(), 0);
           } else {

@@ -18,57 +18,96 @@ struct SmallLlt {
   // In place: the lower triangle of a (n x n, column-major, n <= kMaxSize) becomes L (the upper
   // triangle is not read and keeps its values). False at a pivot that is not > 0, as Eigen's
   // NumericalIssue (a NaN pivot passes, as there).
-  static bool factor(Eigen::MatrixXd& a) {
-    const int n = static_cast<int>(a.rows());
-    for (int k = 0; k < n; ++k) {
-      // Eigen: x = a_kk - |row k left of the diagonal|^2, summed in order (a strided row).
-      double x = a(k, k);
-      if (k > 0) {
-        double squares = a(k, 0) * a(k, 0);
-        for (int j = 1; j < k; ++j) squares += a(k, j) * a(k, j);
-        x -= squares;
-      }
-      if (x <= 0.0) return false;
-      x = std::sqrt(x);
-      a(k, k) = x;
-      const int below = n - k - 1;
-      if (k > 0 && below == 1) {
-        // One row left: Eigen's product falls back to an inner product, dst += -1 * dot.
-        double dot = a(k + 1, 0) * a(k, 0);
-        for (int j = 1; j < k; ++j) dot += a(k + 1, j) * a(k, j);
-        a(k + 1, k) += -1.0 * dot;
-      } else if (k > 0) {
-        // Eigen's column-major matrix-vector product: each row sums from 0 in column order.
-        for (int i = k + 1; i < n; ++i) {
-          double c = 0.0;
-          for (int j = 0; j < k; ++j) c += a(i, j) * a(k, j);
-          a(i, k) += -1.0 * c;
-        }
-      }
-      for (int i = k + 1; i < n; ++i) a(i, k) /= x;
-    }
-    return true;
-  }
+  static bool factor(Eigen::MatrixXd& a) { return dispatch<Factor>(a.rows(), a.data(), nullptr); }
 
   // b <- (L L^T)^-1 b with the factor of factor().
   static void solve(const Eigen::MatrixXd& l, Eigen::VectorXd& b) {
-    const int n = static_cast<int>(l.rows());
-    // L y = b, forward by columns.
-    for (int i = 0; i < n; ++i) {
-      if (b[i] == 0.0) continue;
-      b[i] /= l(i, i);
-      for (int s = i + 1; s < n; ++s) b[s] -= b[i] * l(s, i);
-    }
-    // L^T x = y, backward by rows of L^T (columns of L): each row's sum as Eigen's vectorised
-    // reduction of the contiguous products, two lanes.
-    for (int i = n - 1; i >= 0; --i) {
-      const int count = n - 1 - i;
-      if (count > 0) b[i] -= lane_sum(&l(i + 1, i), &b[i + 1], count);
-      if (b[i] != 0.0) b[i] /= l(i, i);
-    }
+    dispatch<Solve>(l.rows(), l.data(), b.data());
   }
 
  private:
+  // The size as a template argument: the loops unroll (the operations and their order are the
+  // same for every size).
+  struct Factor {
+    template <int n>
+    static bool run(double* a, double*) {
+      const auto at = [a](int i, int j) -> double& { return a[i + j * n]; };
+      for (int k = 0; k < n; ++k) {
+        // Eigen: x = a_kk - |row k left of the diagonal|^2, summed in order (a strided row).
+        double x = at(k, k);
+        if (k > 0) {
+          double squares = at(k, 0) * at(k, 0);
+          for (int j = 1; j < k; ++j) squares += at(k, j) * at(k, j);
+          x -= squares;
+        }
+        if (x <= 0.0) return false;
+        x = std::sqrt(x);
+        at(k, k) = x;
+        const int below = n - k - 1;
+        if (k > 0 && below == 1) {
+          // One row left: Eigen's product falls back to an inner product, dst += -1 * dot.
+          double dot = at(k + 1, 0) * at(k, 0);
+          for (int j = 1; j < k; ++j) dot += at(k + 1, j) * at(k, j);
+          at(k + 1, k) += -1.0 * dot;
+        } else if (k > 0) {
+          // Eigen's column-major matrix-vector product: each row sums from 0 in column order.
+          for (int i = k + 1; i < n; ++i) {
+            double c = 0.0;
+            for (int j = 0; j < k; ++j) c += at(i, j) * at(k, j);
+            at(i, k) += -1.0 * c;
+          }
+        }
+        for (int i = k + 1; i < n; ++i) at(i, k) /= x;
+      }
+      return true;
+    }
+  };
+
+  struct Solve {
+    template <int n>
+    static bool run(const double* l, double* b) {
+      const auto at = [l](int i, int j) { return l[i + j * n]; };
+      // L y = b, forward by columns.
+      for (int i = 0; i < n; ++i) {
+        if (b[i] == 0.0) continue;
+        b[i] /= at(i, i);
+        for (int s = i + 1; s < n; ++s) b[s] -= b[i] * at(s, i);
+      }
+      // L^T x = y, backward by rows of L^T (columns of L): each row's sum as Eigen's vectorised
+      // reduction of the contiguous products, two lanes.
+      for (int i = n - 1; i >= 0; --i) {
+        const int count = n - 1 - i;
+        if (count > 0) b[i] -= lane_sum(&l[(i + 1) + i * n], &b[i + 1], count);
+        if (b[i] != 0.0) b[i] /= at(i, i);
+      }
+      return true;
+    }
+  };
+
+  template <typename Op, typename Matrix>
+  static bool dispatch(Eigen::Index n, Matrix* a, double* b) {
+    switch (n) {
+      case 1:
+        return Op::template run<1>(a, b);
+      case 2:
+        return Op::template run<2>(a, b);
+      case 3:
+        return Op::template run<3>(a, b);
+      case 4:
+        return Op::template run<4>(a, b);
+      case 5:
+        return Op::template run<5>(a, b);
+      case 6:
+        return Op::template run<6>(a, b);
+      case 7:
+        return Op::template run<7>(a, b);
+      case 8:
+        return Op::template run<8>(a, b);
+      default:
+        return true;  // n = 0: nothing to do (callers keep Eigen beyond kMaxSize)
+    }
+  }
+
   // sum_m p[m] q[m] in the order of Eigen's redux (LinearVectorizedTraversal, packets of 2, two
   // packet accumulators, then the lanes added, then the scalar tail).
   static double lane_sum(const double* p, const double* q, int size) {
