@@ -107,7 +107,7 @@ class LineReader {
     return end_ > 0;
   }
 
-  static constexpr std::size_t kBlockBytes = 1 << 16;
+  static constexpr std::size_t kBlockBytes = 1 << 13;
   std::string path_;
   std::ifstream in_;
   std::vector<char> buffer_;
