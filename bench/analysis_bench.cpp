@@ -1,5 +1,6 @@
 // Benchmarks of one analysis: the thesis 3-storey building under RSN1084 SCS052, at the default
-// adaptive settings and at the thesis's fixed 2e-5 s step, and with moat walls at 10 cm.
+// adaptive settings and at the thesis's fixed 2e-5 s step, and with moat walls at 10 cm; and the
+// library path of `isopound run` for a plain 2D model (file, record, model, analysis).
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -7,7 +8,9 @@
 
 #include "solver/core/analysis.h"
 #include "solver/excitation/ground_motion.h"
+#include "solver/io/model_input.h"
 #include "solver/structures/building2d.h"
+#include "solver/structures/job.h"
 #include "solver/structures/pounding2d.h"
 
 namespace {
@@ -91,6 +94,35 @@ void BM_Walls10cm_HertzDampYe(benchmark::State& s) {
   run(s, with_walls("hertz_damp_ye"), 0);
 }
 
+// What `isopound run configs/<name> --no-histories` computes, in process: the model file and the
+// record read, the model built, the analysis run (issue 39: a plain 2D run had become 12 %
+// slower by reading its record twice; bench/run2d_bench.sh times the whole process).
+void run_config(benchmark::State& state, const char* name) {
+  const auto path = std::filesystem::path(ISOPOUND_SOURCE_DIR) / "configs" / name;
+  ModelConfig config;
+  try {
+    config = load_model_file(path.string());
+    config.output.histories = false;
+    run_job(config);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());  // e.g. ../shared/records absent
+    return;
+  }
+  long steps = 0;
+  for (auto _ : state) {
+    const JobResult job = run_job(config);
+    steps = job.analysis.stats.steps;
+    benchmark::DoNotOptimize(job.analysis.displacement[0].value);
+  }
+  state.counters["steps"] = static_cast<double>(steps);
+}
+void BM_RunJob_Thesis3StoreyBL(benchmark::State& s) {
+  run_config(s, "thesis-3storey-bl.yaml");
+}
+void BM_RunJob_Thesis3StoreyBW(benchmark::State& s) {
+  run_config(s, "thesis-3storey-bw.yaml");
+}
+
 BENCHMARK(BM_BoucWen_Default)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BoucWen_Fixed2e5)->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_Bilinear_Default)->Unit(benchmark::kMillisecond);
@@ -98,6 +130,8 @@ BENCHMARK(BM_Bilinear_Fixed2e5)->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_Walls10cm_KelvinVoigt)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Walls10cm_HertzDampMuthukumar)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Walls10cm_HertzDampYe)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RunJob_Thesis3StoreyBL)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RunJob_Thesis3StoreyBW)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -90,7 +90,8 @@ void create_output_directory(const std::string& out_dir) {
 
 int run_and_write(const ModelConfig& config, const std::string& out_dir, bool quiet,
                   bool compare_unobstructed = false,
-                  const EnsembleOptions* ensemble_options = nullptr) {
+                  const EnsembleOptions* ensemble_options = nullptr,
+                  std::optional<GroundMotion> motion = std::nullopt) {
   create_output_directory(out_dir);
   const std::string summary = (fs::path(out_dir) / "summary.json").string();
   std::string histories;
@@ -116,7 +117,8 @@ int run_and_write(const ModelConfig& config, const std::string& out_dir, bool qu
       ensemble = run_ensemble(config, *ensemble_options, writer.get(), std::ref(progress), events);
       job = std::move(ensemble->member0);
     } else {
-      job = run_job(config, writer.get(), std::ref(progress), events, step_writer.get());
+      job = run_job(config, writer.get(), std::ref(progress), events, step_writer.get(),
+                    std::move(motion));
     }
   } catch (...) {
     // No partial histories.csv from a run that failed (it would look like a result); the event
@@ -439,7 +441,7 @@ int main(int argc, char** argv) {
     }
     if (*run)
       return run_and_write(config, out_dir, quiet, compare_unobstructed,
-                           ensemble.members > 0 ? &ensemble : nullptr);
+                           ensemble.members > 0 ? &ensemble : nullptr, std::move(motion));
     if (*pushover) {
       BuildingPushoverOptions options;
       options.target_drift_ratio = target_drift;

@@ -1,6 +1,6 @@
-// The stepper's own small linear algebra (SmallLu, CompressedRows) must give Eigen's results to
-// the bit: the analyses' results were checked against Eigen's, and a cheaper product or solve
-// must not move them. Random matrices of every size the shortcuts take, with the zeros, ties
+// The stepper's own small linear algebra (SmallLu, SmallLlt, CompressedRows) must give Eigen's
+// results to the bit: the analyses' results were checked against Eigen's, and a cheaper product or
+// solve must not move them. Random matrices of every size the shortcuts take, with the zeros, ties
 // and row swaps that decide the order of the operations.
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "solver/core/compressed_rows.h"
+#include "solver/core/small_llt.h"
 #include "solver/core/small_lu.h"
 
 namespace isopound {
@@ -58,6 +59,38 @@ TEST(SmallLu, SolvesAsEigensPartialPivLuBitForBit) {
       expect_same_bits(x, eigen, "n " + std::to_string(n) + ", trial " + std::to_string(trial));
       // And it is a solution (the comparison above would pass for two equal wrong answers).
       EXPECT_LE((a * x - b).norm(), 1e-9 * (a.norm() * x.norm() + b.norm()));
+    }
+}
+
+// Symmetric positive definite matrices as the stepper's K_hat: a mass-like diagonal over decades
+// plus stiffness couplings (B B^T), some entries exactly zero; the factor and the solve must be
+// Eigen's LLT to the bit, and a matrix that is not positive definite must fail as there.
+TEST(SmallLlt, FactorsAndSolvesAsEigensLltBitForBit) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> decade(-2, 6);
+  for (int n = 1; n <= SmallLlt::kMaxSize; ++n)
+    for (int trial = 0; trial < 200; ++trial) {
+      const Eigen::MatrixXd b = random_matrix(rng, n, n, trial % 4 == 0 ? 0.5 : 0.1);
+      Eigen::MatrixXd a = b * b.transpose();
+      for (int i = 0; i < n; ++i) a(i, i) += std::pow(10.0, decade(rng));
+      const Eigen::VectorXd rhs = random_vector(rng, n);
+      const std::string what = "n " + std::to_string(n) + ", trial " + std::to_string(trial);
+      const Eigen::LLT<Eigen::MatrixXd> eigen(a);
+      ASSERT_EQ(eigen.info(), Eigen::Success) << what;
+      Eigen::MatrixXd l = a;
+      ASSERT_TRUE(SmallLlt::factor(l)) << what;
+      const Eigen::MatrixXd eigen_l = eigen.matrixL();
+      for (int j = 0; j < n; ++j)
+        for (int i = j; i < n; ++i) EXPECT_EQ(l(i, j), eigen_l(i, j)) << what << ", L " << i << j;
+      Eigen::VectorXd x = rhs;
+      SmallLlt::solve(l, x);
+      expect_same_bits(x, eigen.solve(rhs), what);
+      EXPECT_LE((a * x - rhs).norm(), 1e-9 * (a.norm() * x.norm() + rhs.norm())) << what;
+      // Not positive definite (a negative pivot at the last row): both refuse.
+      Eigen::MatrixXd indefinite = a;
+      indefinite(n - 1, n - 1) = -1.0;
+      EXPECT_NE(Eigen::LLT<Eigen::MatrixXd>(indefinite).info(), Eigen::Success) << what;
+      EXPECT_FALSE(SmallLlt::factor(indefinite)) << what;
     }
 }
 

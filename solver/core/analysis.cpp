@@ -324,20 +324,14 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
 
   ProbeRecorder probe_recorder(model.probes);
 
-  auto record = [&](double t, const GroundAcceleration& ag, double h) {
-    const Eigen::VectorXd& u = stepper.u();
-    const Eigen::VectorXd& v = stepper.v();
-    const Eigen::VectorXd& a = stepper.a();
-    for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);  // absolute acceleration
-    displacement_peaks.record(u.data(), t);
-    velocity_peaks.record(v.data(), t);
-    acceleration_peaks.record(work.data(), t);
-    for (std::size_t s = 0; s < res.stories.size(); ++s) {
-      const Story& st = res.stories[s];
-      const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
-      update_peak(res.drift[s], drift, t);
-      update_peak(res.drift_ratio[s], drift / st.height, t);
-    }
+  // What each step records (RunOptions::record); a history row takes everything.
+  RecordScope scope = options.record;
+  if (sink || step_sink) scope = RecordScope{};
+  const bool shears = scope.story_shears || scope.base_shears;
+  const bool absolute = scope.accelerations || shears || scope.probes;
+
+  // Storey and base shears of the committed state (work: the absolute accelerations).
+  const auto record_shears = [&](double t) {
     mass_rows.multiply(work, inertia);
     for (std::size_t s = 0; s < above_story.size(); ++s) {
       double shear = 0.0;
@@ -378,22 +372,15 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       base_shear_now[s] = shear;
       update_peak(res.base_shear[s], shear, t);
     }
-    for (std::size_t k = 0; k < options.tracked.size(); ++k) {
-      const TrackedCoordinate& c = options.tracked[k];
-      const double x = (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) +
-                       (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0) +
-                       (c.dof_c >= 0 ? c.c_c * u[c.dof_c] : 0.0);
-      update_peak(res.tracked[k], x, t);
-    }
-    // work holds the absolute accelerations until the energy terms below.
-    probe_recorder.record(u.data(), work.data(), t, res.probes);
-    stepper.batches().outputs(output_scratch.data());
-    output_peaks.record(output_scratch.data(), t);
+  };
 
-    // Energy.
+  // Energy terms of the committed state, reached by a step h.
+  const auto record_energy = [&](const GroundAcceleration& ag, double h) {
+    const Eigen::VectorXd& u = stepper.u();
+    const Eigen::VectorXd& v = stepper.v();
     double p_in = -v.dot(m_iota.col(0)) * ag.x;
     if (ag.y != 0.0) p_in -= v.dot(m_iota.col(1)) * ag.y;
-    const double p_visc = v.dot(damping_force);  // C v, computed for the base shear
+    const double p_visc = v.dot(stepper.c_v());  // C v
     double p_elem = 0.0, stored = 0.0;
     stepper.batches().add_energy(v, p_elem, stored);
     e_in += 0.5 * h * (p_in_prev + p_in);
@@ -417,6 +404,37 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     en.error = e_in + initial_energy - (kinetic + strain + e_visc + w_elem) - stored_at_start;
     max_in = std::max(max_in, std::abs(e_in) + initial_energy);
     max_err = std::max(max_err, std::abs(en.error));
+  };
+
+  auto record = [&](double t, const GroundAcceleration& ag, double h) {
+    const Eigen::VectorXd& u = stepper.u();
+    const Eigen::VectorXd& v = stepper.v();
+    const Eigen::VectorXd& a = stepper.a();
+    if (absolute)
+      for (int i = 0; i < n; ++i) work[i] = a[i] + rigid(i, ag);  // absolute acceleration
+    displacement_peaks.record(u.data(), t);
+    if (scope.velocities) velocity_peaks.record(v.data(), t);
+    if (scope.accelerations) acceleration_peaks.record(work.data(), t);
+    for (std::size_t s = 0; s < res.stories.size(); ++s) {
+      const Story& st = res.stories[s];
+      const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
+      update_peak(res.drift[s], drift, t);
+      update_peak(res.drift_ratio[s], drift / st.height, t);
+    }
+    if (shears) record_shears(t);
+    for (std::size_t k = 0; k < options.tracked.size(); ++k) {
+      const TrackedCoordinate& c = options.tracked[k];
+      const double x = (c.dof_a >= 0 ? c.c_a * u[c.dof_a] : 0.0) +
+                       (c.dof_b >= 0 ? c.c_b * u[c.dof_b] : 0.0) +
+                       (c.dof_c >= 0 ? c.c_c * u[c.dof_c] : 0.0);
+      update_peak(res.tracked[k], x, t);
+    }
+    if (scope.probes) probe_recorder.record(u.data(), work.data(), t, res.probes);
+    if (scope.element_outputs) {
+      stepper.batches().outputs(output_scratch.data());
+      output_peaks.record(output_scratch.data(), t);
+    }
+    if (scope.energy) record_energy(ag, h);
 
     if (sink || step_sink) {
       double* r = row.data();
@@ -479,7 +497,15 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   int level = 0;
   int settles_here = 0;
   const double min_fraction = std::ldexp(1.0, -max_level);
-  const auto level_step = [&](int l) { return H * std::ldexp(1.0, -l); };
+  // 2^-l for the levels 0..max_level (exact), looked up: ldexp twice a step was 2 % of a 2D run.
+  std::vector<double> fraction_of_level(static_cast<std::size_t>(std::max(max_level, 0)) + 1);
+  for (std::size_t l = 0; l < fraction_of_level.size(); ++l)
+    fraction_of_level[l] = std::ldexp(1.0, -static_cast<int>(l));
+  const auto level_fraction = [&](int l) {
+    return l >= 0 && l <= max_level ? fraction_of_level[static_cast<std::size_t>(l)]
+                                    : std::ldexp(1.0, -l);
+  };
+  const auto level_step = [&](int l) { return H * level_fraction(l); };
   // The elements with events or step limits (Element::has_events); the others are never asked.
   std::vector<int> eventful;
   for (int k = 0; k < n_elements; ++k)
@@ -511,7 +537,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     double pos = 0.0;
     double forced = 0.0;  // > 0: the fraction of H of a step cut at an event
     while (pos < 1.0) {
-      double frac = forced > 0 ? forced : std::ldexp(1.0, -level);
+      double frac = forced > 0 ? forced : level_fraction(level);
       bool regular = forced == 0.0;
       if (pos + frac > 1.0 - 1e-12 * frac) {
         regular = regular && pos + frac == 1.0;
@@ -533,7 +559,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
             // A step cut to end at an event failed: half of it no longer ends at the event, so
             // the event is dropped (no element may settle at the wrong instant) and found
             // again by regular, unfrozen steps of at most half the cut step.
-            while (level < max_level && std::ldexp(1.0, -level) > 0.5 * forced) ++level;
+            while (level < max_level && level_fraction(level) > 0.5 * forced) ++level;
             forced = 0.0;
             std::fill(settling.begin(), settling.end(), 0);
           } else {

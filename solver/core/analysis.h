@@ -125,6 +125,20 @@ struct AnalysisResult {
   History history;
 };
 
+// What run_analysis records each step beside the displacement, drift and tracked peaks and the
+// final displacement (always kept). A caller that reads only some results (a study's outputs)
+// switches the others off: their fields of AnalysisResult then stay at zero. Histories
+// (output.histories, a history or step sink) take every column, whatever is switched off here.
+struct RecordScope {
+  bool velocities = true;       // AnalysisResult::velocity
+  bool accelerations = true;    // absolute_acceleration
+  bool story_shears = true;     // story_shear
+  bool base_shears = true;      // base_shear, base_shear_y, base_shear_resultant
+  bool element_outputs = true;  // element_outputs
+  bool probes = true;           // probes
+  bool energy = true;           // energy
+};
+
 struct RunOptions {
   AnalysisConfig analysis;
   OutputConfig output;
@@ -139,6 +153,7 @@ struct RunOptions {
   // floor spectra need (output.floor_spectra, solver/io/step_accelerations.h).
   HistorySink* step_sink = nullptr;
   StepObserver* observer = nullptr;  // after every accepted step, when set
+  RecordScope record;                // everything by default (summary.json reads everything)
   // Called now and then (every 4096 accepted steps) with the analysed and the total time, s.
   std::function<void(double t, double total)> progress;
 };

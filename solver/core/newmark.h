@@ -112,6 +112,9 @@ class NewmarkStepper {
   // factors; the callers rebuild it every iteration), eigen_lu beyond.
   void solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::MatrixXd>& eigen_lu,
                 const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  // du_ = k_tangent_^-1 r_ by Cholesky: SmallLlt up to its size (Eigen's LLT to the bit, without
+  // its set-up), llt_ beyond; false (k_tangent_ unchanged) when not positive definite.
+  bool solve_llt();
 
   Model& model_;
   NewtonSettings settings_;
@@ -130,6 +133,7 @@ class NewmarkStepper {
   // Factorisations are only ever computed in place, never copied (an unused Eigen
   // factorisation holds uninitialised state).
   Eigen::LLT<Eigen::MatrixXd> llt_;
+  Eigen::MatrixXd llt_factor_;  // SmallLlt's factor (small models)
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // beyond SmallLu::kMaxSize
   Eigen::LLT<Eigen::MatrixXd> mass_llt_;

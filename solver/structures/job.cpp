@@ -153,9 +153,10 @@ void check_step_against_record(const AnalysisConfig& analysis, const GroundMotio
 
 JobResult run_job(const ModelConfig& config, HistorySink* history_sink,
                   std::function<void(double, double)> progress, const std::string& event_log,
-                  HistorySink* step_sink) {
+                  HistorySink* step_sink, std::optional<GroundMotion> motion) {
   JobResult job;
-  job.motion = load_ground_motion(config.ground_motion, !config.structures3d.empty());
+  job.motion = motion ? std::move(*motion)
+                      : load_ground_motion(config.ground_motion, !config.structures3d.empty());
   check_step_against_record(config.analysis, job.motion);
   job.motion_peaks = peaks_of(job.motion);
   job.model = build_model(config);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,9 +39,12 @@ struct JobResult {
 // RunOptions.
 // `event_log`: where contact_events.csv goes for a model with polygon contacts ("" = nowhere).
 // `step_sink` receives the row of every accepted step (RunOptions::step_sink).
+// `motion`: the config's ground motion when the caller has loaded it already (isopound run reads
+// it first to check it), so that the record is not read twice.
 JobResult run_job(const ModelConfig& config, HistorySink* history_sink = nullptr,
                   std::function<void(double, double)> progress = {},
-                  const std::string& event_log = "", HistorySink* step_sink = nullptr);
+                  const std::string& event_log = "", HistorySink* step_sink = nullptr,
+                  std::optional<GroundMotion> motion = std::nullopt);
 
 // A contact of the pounding model and how far its gap closes in the unobstructed run.
 struct ContactGap {

@@ -496,6 +496,39 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
   return r;
 }
 
+RecordScope record_scope_of(const std::vector<ResolvedOutput>& outputs) {
+  // The fields evaluate_output reads, branch by branch; displacements, drifts and the final
+  // displacement are always recorded.
+  RecordScope scope{false, false, false, false, false, false, false};
+  for (const ResolvedOutput& r : outputs) {
+    switch (r.kind) {
+      case OutputSelector::Kind::kEnergy:
+        scope.energy = true;
+        break;
+      case OutputSelector::Kind::kGround:
+        break;
+      case OutputSelector::Kind::kLevel:
+      case OutputSelector::Kind::kStory:
+        if (r.at_end) break;
+        if (r.probe_component >= 0) {
+          scope.probes = true;
+        } else if (r.kind == OutputSelector::Kind::kLevel) {
+          scope.velocities = scope.velocities || r.quantity == 1;
+          scope.accelerations = scope.accelerations || r.quantity == 2;
+        } else if (r.quantity == kStoryHystereticEnergy) {
+          scope.element_outputs = true;
+        } else {
+          scope.story_shears = scope.story_shears || r.quantity == 2;
+        }
+        break;
+      case OutputSelector::Kind::kElement:
+        scope.element_outputs = true;
+        break;
+    }
+  }
+  return scope;
+}
+
 double evaluate_output(const ResolvedOutput& r, const AnalysisResult& result,
                        const GroundMotionPeaks& ground,
                        const std::vector<double>* first_impact_times) {

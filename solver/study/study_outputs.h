@@ -89,6 +89,10 @@ struct ResolvedOutput {
 // Throws std::invalid_argument when the model has no such level, story, element or output.
 ResolvedOutput resolve_output(const OutputSelector& selector, const Model& model);
 
+// What a run must record (RunOptions::record) for evaluate_output to give these outputs the
+// values it gives from a run that records everything.
+RecordScope record_scope_of(const std::vector<ResolvedOutput>& outputs);
+
 // `first_impact_times`: per element, the time of its first counted impact or -1 (the run's
 // contact log, ContactEventLog, as summary.json's first_impact_time_s); without it,
 // first_impact_time is the first accepted step in contact (one step after the located onset).

@@ -159,9 +159,9 @@ class DatabaseLock {
     std::error_code ec;
     if (!folder.empty()) std::filesystem::create_directories(folder, ec);
     if (ec)
-      throw InputError(db_path, 0, 0, "",
-                       "cannot create the database's folder " + folder.string() + ": " +
-                           ec.message());
+      throw InputError(
+          db_path, 0, 0, "",
+          "cannot create the database's folder " + folder.string() + ": " + ec.message());
     fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
     if (fd_ < 0)
       throw InputError(path, 0, 0, "", "cannot create the lock file beside the database");
@@ -256,18 +256,26 @@ RunRecord CaseRunner::run(std::int64_t case_id) const {
     check_step_against_record(input.config.analysis, motion.motion);
     Model model = build_model(input.config);
     RunOptions options = run_options(input.config);
+    // The outputs resolved before the run, which then records only what they read.
+    std::vector<ResolvedOutput> outputs;
+    std::vector<char> resolved;
+    for (const OutputSelector& selector : selectors_) {
+      try {
+        outputs.push_back(resolve_output(selector, model));
+        resolved.push_back(1);
+      } catch (const std::invalid_argument&) {  // an element this case does not have (validated)
+        resolved.push_back(0);
+      }
+    }
+    options.record = record_scope_of(outputs);
     ContactEventLog contacts(model, "");  // first-impact times, as summary.json (no file)
     if (!contacts.empty()) options.observer = &contacts;
     const AnalysisResult result = run_analysis(model, motion.motion, options);
     const std::vector<double> first_impacts = contacts.first_impact_times(model);
-    for (const OutputSelector& selector : selectors_) {
-      try {
-        record.values.push_back(
-            evaluate_output(resolve_output(selector, model), result, motion.peaks, &first_impacts));
-      } catch (const std::invalid_argument&) {  // an element this case does not have (validated)
-        record.values.push_back(std::numeric_limits<double>::quiet_NaN());
-      }
-    }
+    for (std::size_t k = 0, next = 0; k < selectors_.size(); ++k)
+      record.values.push_back(
+          resolved[k] ? evaluate_output(outputs[next++], result, motion.peaks, &first_impacts)
+                      : std::numeric_limits<double>::quiet_NaN());
     record.steps = result.stats.steps;
     record.ok = true;
   } catch (const std::exception& e) {

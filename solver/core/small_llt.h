@@ -1,0 +1,138 @@
+// Cholesky factorisation A = L L^T of a small symmetric positive definite matrix, and its solve:
+// the operations of Eigen's LLT (3.4, SSE2 packets of two doubles) for sizes up to 8, in the same
+// order, so that every result is the same to the bit; without its L1 norm, dispatch and product
+// set-up, which cost more than the arithmetic at the sizes of a 2D building (4 x 4 for three
+// storeys), factored every Newton iteration.
+#pragma once
+
+#include <Eigen/Dense>
+#include <cmath>
+
+namespace isopound {
+
+struct SmallLlt {
+  // Up to one panel of Eigen's triangular solves (EIGEN_TUNE_TRIANGULAR_PANEL_WIDTH): beyond it
+  // the solves go through matrix-vector products that round otherwise, so callers keep Eigen.
+  static constexpr int kMaxSize = 8;
+
+  // In place: the lower triangle of a (n x n, column-major, n <= kMaxSize) becomes L (the upper
+  // triangle is not read and keeps its values). False at a pivot that is not > 0, as Eigen's
+  // NumericalIssue (a NaN pivot passes, as there).
+  static bool factor(Eigen::MatrixXd& a) { return dispatch<Factor>(a.rows(), a.data(), nullptr); }
+
+  // b <- (L L^T)^-1 b with the factor of factor().
+  static void solve(const Eigen::MatrixXd& l, Eigen::VectorXd& b) {
+    dispatch<Solve>(l.rows(), l.data(), b.data());
+  }
+
+ private:
+  // The size as a template argument: the loops unroll (the operations and their order are the
+  // same for every size).
+  struct Factor {
+    template <int n>
+    static bool run(double* a, double*) {
+      const auto at = [a](int i, int j) -> double& { return a[i + j * n]; };
+      for (int k = 0; k < n; ++k) {
+        // Eigen: x = a_kk - |row k left of the diagonal|^2, summed in order (a strided row).
+        double x = at(k, k);
+        if (k > 0) {
+          double squares = at(k, 0) * at(k, 0);
+          for (int j = 1; j < k; ++j) squares += at(k, j) * at(k, j);
+          x -= squares;
+        }
+        if (x <= 0.0) return false;
+        x = std::sqrt(x);
+        at(k, k) = x;
+        const int below = n - k - 1;
+        if (k > 0 && below == 1) {
+          // One row left: Eigen's product falls back to an inner product, dst += -1 * dot.
+          double dot = at(k + 1, 0) * at(k, 0);
+          for (int j = 1; j < k; ++j) dot += at(k + 1, j) * at(k, j);
+          at(k + 1, k) += -1.0 * dot;
+        } else if (k > 0) {
+          // Eigen's column-major matrix-vector product: each row sums from 0 in column order.
+          for (int i = k + 1; i < n; ++i) {
+            double c = 0.0;
+            for (int j = 0; j < k; ++j) c += at(i, j) * at(k, j);
+            at(i, k) += -1.0 * c;
+          }
+        }
+        for (int i = k + 1; i < n; ++i) at(i, k) /= x;
+      }
+      return true;
+    }
+  };
+
+  struct Solve {
+    template <int n>
+    static bool run(const double* l, double* b) {
+      const auto at = [l](int i, int j) { return l[i + j * n]; };
+      // L y = b, forward by columns.
+      for (int i = 0; i < n; ++i) {
+        if (b[i] == 0.0) continue;
+        b[i] /= at(i, i);
+        for (int s = i + 1; s < n; ++s) b[s] -= b[i] * at(s, i);
+      }
+      // L^T x = y, backward by rows of L^T (columns of L): each row's sum as Eigen's vectorised
+      // reduction of the contiguous products, two lanes.
+      for (int i = n - 1; i >= 0; --i) {
+        const int count = n - 1 - i;
+        if (count > 0) b[i] -= lane_sum(&l[(i + 1) + i * n], &b[i + 1], count);
+        if (b[i] != 0.0) b[i] /= at(i, i);
+      }
+      return true;
+    }
+  };
+
+  template <typename Op, typename Matrix>
+  static bool dispatch(Eigen::Index n, Matrix* a, double* b) {
+    switch (n) {
+      case 1:
+        return Op::template run<1>(a, b);
+      case 2:
+        return Op::template run<2>(a, b);
+      case 3:
+        return Op::template run<3>(a, b);
+      case 4:
+        return Op::template run<4>(a, b);
+      case 5:
+        return Op::template run<5>(a, b);
+      case 6:
+        return Op::template run<6>(a, b);
+      case 7:
+        return Op::template run<7>(a, b);
+      case 8:
+        return Op::template run<8>(a, b);
+      default:
+        return true;  // n = 0: nothing to do (callers keep Eigen beyond kMaxSize)
+    }
+  }
+
+  // sum_m p[m] q[m] in the order of Eigen's redux (LinearVectorizedTraversal, packets of 2, two
+  // packet accumulators, then the lanes added, then the scalar tail).
+  static double lane_sum(const double* p, const double* q, int size) {
+    if (size < 2) return p[0] * q[0];
+    const int aligned2 = size / 4 * 4, aligned = size / 2 * 2;
+    double r0 = p[0] * q[0], r1 = p[1] * q[1];
+    if (aligned > 2) {
+      double s0 = p[2] * q[2], s1 = p[3] * q[3];
+      for (int m = 4; m < aligned2; m += 4) {
+        r0 = r0 + p[m] * q[m];
+        r1 = r1 + p[m + 1] * q[m + 1];
+        s0 = s0 + p[m + 2] * q[m + 2];
+        s1 = s1 + p[m + 3] * q[m + 3];
+      }
+      r0 = r0 + s0;
+      r1 = r1 + s1;
+      if (aligned > aligned2) {
+        r0 = r0 + p[aligned2] * q[aligned2];
+        r1 = r1 + p[aligned2 + 1] * q[aligned2 + 1];
+      }
+    }
+    double sum = r0 + r1;
+    for (int m = aligned; m < size; ++m) sum = sum + p[m] * q[m];
+    return sum;
+  }
+};
+
+}  // namespace isopound
