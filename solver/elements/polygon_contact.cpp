@@ -388,6 +388,32 @@ void PolygonContact::add_tangent(Eigen::MatrixXd& K, double velocity_factor) con
   }
 }
 
+// Pseudocode: the displacements move by ± s x, s such that the largest DOF moves by add_tangent's
+// ε (a rotation scaled by the body size); y += (f(+) − f(−)) / (2s) on the element's DOFs.
+void PolygonContact::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  if (!trial_.closed) return;
+  Vec6 dx{};
+  double size = 0.0;
+  for (int j = 0; j < kDofs; ++j) {
+    if (dof_[j] < 0) continue;
+    dx[j] = x[dof_[j]];
+    size = std::max(size, std::abs(dx[j]) * (j % 3 == 2 ? length_scale_ : 1.0));
+  }
+  if (size == 0.0) return;
+  const double eps_u = std::clamp(1e-3 * trial_.indentation, 1e-10, 1e-7);
+  const double s = eps_u / size;
+  Vec6 qp = trial_.q, qm = trial_.q;
+  for (int j = 0; j < kDofs; ++j) {
+    qp[j] += s * dx[j];
+    qm[j] -= s * dx[j];
+  }
+  State plus, minus;
+  evaluate(qp, trial_.qdot, freeze_, plus);
+  evaluate(qm, trial_.qdot, freeze_, minus);
+  for (int i = 0; i < kDofs; ++i)
+    if (dof_[i] >= 0) y[dof_[i]] += (plus.force[i] - minus.force[i]) / (2 * s);
+}
+
 double PolygonContact::power(const Eigen::VectorXd& v) const {
   double p = 0.0;
   for (int k = 0; k < kDofs; ++k)
