@@ -139,10 +139,13 @@ void ConvexPolygon::update_box() {
 }
 
 ConvexPolygon ConvexPolygon::placed(const Placement2& x, Vec2 about) const {
+  return placed(x, about, std::cos(x.theta), std::sin(x.theta));
+}
+
+ConvexPolygon ConvexPolygon::placed(const Placement2& x, Vec2 about, double c, double s) const {
   ConvexPolygon out;
   out.count_ = count_;
   out.reversed_ = reversed_;
-  const double c = std::cos(x.theta), s = std::sin(x.theta);
   for (int i = 0; i < count_; ++i) {
     const Vec2 r = vertices_[i] - about;
     out.vertices_[i] = {about.x + c * r.x - s * r.y + x.u, about.y + s * r.x + c * r.y + x.v};

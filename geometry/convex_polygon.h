@@ -79,6 +79,9 @@ class ConvexPolygon {
   // This polygon moved rigidly: each vertex p ↦ about + R(θ)(p − about) + (u, v).
   // No validation and no allocation (a rigid motion keeps a valid polygon valid, up to round-off).
   ConvexPolygon placed(const Placement2& x, Vec2 about = {0.0, 0.0}) const;
+  // The same with cos θ and sin θ given (a caller that places at one θ often keeps them): the
+  // same vertices, bit for bit, when they are std::cos(x.theta) and std::sin(x.theta).
+  ConvexPolygon placed(const Placement2& x, Vec2 about, double cos_theta, double sin_theta) const;
 
  private:
   ConvexPolygon() = default;

@@ -2,7 +2,9 @@
 // Expected numbers are derived by hand in each test (closed forms for rectangles and triangles).
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -180,6 +182,27 @@ TEST(GeometryPolygon, PlacementAboutOriginByDefault) {
   const ConvexPolygon moved = sq.placed({0.0, 0.0, t});
   EXPECT_NEAR(moved[1].x, 2 * std::cos(t), 1e-15);
   EXPECT_NEAR(moved[1].y, 2 * std::sin(t), 1e-15);
+}
+
+// The overload with cos θ and sin θ given (a contact keeps them per body): the same vertices and
+// box, bit for bit; other values place by them (a caller's stale pair would show).
+TEST(GeometryPolygon, PlacementWithGivenCosAndSinIsBitIdentical) {
+  const ConvexPolygon sq{{1, 0}, {2, 0.5}, {1.5, 1.25}, {0.75, 1}};
+  for (const double t : {0.0, -0.0, 1e-12, -3e-5, 0.3, 2.9}) {
+    const Placement2 x{0.125, -7.3, t};
+    const Vec2 about{8.25, -3.1};
+    const ConvexPolygon a = sq.placed(x, about);
+    const ConvexPolygon b = sq.placed(x, about, std::cos(t), std::sin(t));
+    for (int i = 0; i < sq.size(); ++i) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(a[i].x), std::bit_cast<std::uint64_t>(b[i].x));
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(a[i].y), std::bit_cast<std::uint64_t>(b[i].y));
+    }
+    EXPECT_EQ(a.box_min().x, b.box_min().x);
+    EXPECT_EQ(a.box_max().y, b.box_max().y);
+  }
+  const ConvexPolygon quarter = sq.placed({0.0, 0.0, 0.3}, {0.0, 0.0}, 0.0, 1.0);
+  EXPECT_NEAR(quarter[0].x, 0.0, 1e-15);  // (1, 0) turned by the given 90°, not by 0.3 rad
+  EXPECT_NEAR(quarter[0].y, 1.0, 1e-15);
 }
 
 }  // namespace

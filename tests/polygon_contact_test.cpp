@@ -548,6 +548,55 @@ TEST(PolygonContactTangent, MatchesFiniteDifferencesOfTheForce) {
   }
 }
 
+// The stiffness product of the error estimate (one difference along x) against add_tangent's
+// columns (velocity factor 0) times x, at stick, slip and frictionless states: the same to the
+// differences' truncation error; an open contact adds nothing.
+TEST(PolygonContactTangent, StiffnessProductMatchesTheTangentTimesX) {
+  const double h = 1e-3;
+  struct Case {
+    bool friction;
+    double slide;
+  };
+  for (const Case& k : {Case{false, 0.0}, Case{true, 1e-6}, Case{true, 2e-2}}) {
+    PolygonContactConfig cfg;
+    cfg.friction = k.friction;
+    PolygonContact c("c", slab(0), slab(3, {kSide + 0.0398, 2.0}), cfg);
+    ASSERT_TRUE(c.has_stiffness_product());
+    Eigen::VectorXd u(6), v(6);
+    u << 0.03, 0.0, 2e-5, -0.01, 0.0, -3e-5;
+    v << 0.5, 0.1, 0.02, -0.2, 0.05, -0.01;
+    c.begin_step(h, false);
+    c.set_trial(u, v);
+    c.commit();
+    u[1] += k.slide;
+    u[0] += 1e-5;
+    c.begin_step(h, false);
+    c.set_trial(u, v);
+    ASSERT_EQ(c.output(11), 1.0);
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(6, 6);
+    c.add_tangent(K, 0.0);
+    // An error-estimate-like x: displacements of a few nm, a rotation of ~1e-10 rad.
+    Eigen::VectorXd x(6);
+    x << 3e-9, -1e-9, 2e-10, -2e-9, 4e-9, -1e-10;
+    const Eigen::VectorXd expected = K * x;
+    Eigen::VectorXd y = Eigen::VectorXd::Constant(6, 1.0);
+    c.add_stiffness_product(x, y);
+    y.array() -= 1.0;
+    // k_N w ~ 2.6e11 N/m times nm: ~1e3 N; a wrong sign or a missing DOF is off by ~100 %.
+    EXPECT_LT((y - expected).cwiseAbs().maxCoeff(), 1e-5 * expected.cwiseAbs().maxCoeff())
+        << "friction " << k.friction << " slide " << k.slide << "\nK x = " << expected.transpose()
+        << "\nproduct = " << y.transpose();
+  }
+  // Open: nothing added.
+  PolygonContact open("c", slab(0), slab(3, {kSide + 1.0, 2.0}), PolygonContactConfig{});
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
+  open.begin_step(h, false);
+  open.set_trial(u, v);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(6);
+  open.add_stiffness_product(Eigen::VectorXd::Constant(6, 1e-9), y);
+  EXPECT_EQ(y.cwiseAbs().maxCoeff(), 0.0);
+}
+
 TEST(PolygonContactTangent, FaceOnMatchesTheAnalyticKelvinVoigtStiffness) {
   // Face-on: F = k_N L δ + c δ̇, so dF/du + vf dF/dv = k_N L + vf c with c = 2ξ√(k_N L m_eff).
   PolygonContactConfig cfg;

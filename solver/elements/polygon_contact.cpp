@@ -97,10 +97,19 @@ PolygonContact::PolygonContact(std::string label, PolygonBody a, PolygonBody b,
   trial_ = committed_;
 }
 
-ConvexPolygon PolygonContact::place(const PolygonBody& body, double u, double v, double theta) {
+ConvexPolygon PolygonContact::place(const PolygonBody& body, double u, double v,
+                                    double theta) const {
   // A fixed body (no DOF) stays where it is: no trigonometry.
   if (body.dof_u < 0 && body.dof_v < 0 && body.dof_theta < 0) return body.shape;
-  return body.shape.placed({u, v, theta}, body.p_WO);
+  return placed(body, u, v, theta);
+}
+
+ConvexPolygon PolygonContact::placed(const PolygonBody& body, double u, double v,
+                                     double theta) const {
+  Trig& t = trig_[&body == &a_ ? 0 : 1];
+  if (theta != t.theta || std::signbit(theta) != std::signbit(t.theta))
+    t = {theta, std::cos(theta), std::sin(theta)};
+  return body.shape.placed({u, v, theta}, body.p_WO, t.cos, t.sin);
 }
 
 void PolygonContact::gather(const Eigen::VectorXd& x, Vec6& q) const {
@@ -121,6 +130,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.q = q;
   out.qdot = qdot;
   out.witness_valid = false;
+  out.speed = -1.0;
   out.force.fill(0.0);
   out.area = out.indentation = out.width = 0.0;
   out.p_WC = out.n_AB = out.t_AB = Vec2{};
@@ -137,18 +147,20 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.box_gap =
       std::max(std::max(pb.box_min().x - pa.box_max().x, pa.box_min().x - pb.box_max().x),
                std::max(pb.box_min().y - pa.box_max().y, pa.box_min().y - pb.box_max().y));
+  const auto open = [&] {
+    // The tangential spring's energy is lost when a contact ends.
+    if (C.closed && cfg_.friction)
+      out.friction_dissipated += C.spring * C.spring / (2 * cfg_.k_tangential);
+    out.closed = out.started = out.slipping = false;
+  };
+  // Boxes apart (overlap_of's own first test): no overlap, open unless frozen closed.
+  if (out.box_gap > 0.0 && !(freeze && C.closed)) return open();
   Overlap ov = overlap_of(pa, pb, cfg_.overlap);
   const bool overlapping = ov.area > 0.0;
   out.closed = freeze ? C.closed : overlapping;
   out.started = !freeze && !C.closed && overlapping;
   out.slipping = out.started ? false : C.slipping;
-  if (!out.closed) {
-    // The tangential spring's energy is lost when a contact ends.
-    if (C.closed && cfg_.friction)
-      out.friction_dissipated += C.spring * C.spring / (2 * cfg_.k_tangential);
-    out.slipping = false;
-    return;
-  }
+  if (!out.closed) return open();
   bool at_surface = false;
   const double sliver = kSurfaceSliver * length_scale_;
   const double actual_area = ov.area;
@@ -161,8 +173,8 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // (continuous_force: a sliver as deep as the overlap is short of it, so that the shape is
     // continuous where the overlap reaches the sliver's depth too.)
     const double deeper_by = cfg_.continuous_force ? sliver - ov.area / overlap_width : sliver;
-    const ConvexPolygon deeper = b_.shape.placed(
-        {q[3] - deeper_by * ov.n_AB.x, q[4] - deeper_by * ov.n_AB.y, q[5]}, b_.p_WO);
+    const ConvexPolygon deeper =
+        placed(b_, q[3] - deeper_by * ov.n_AB.x, q[4] - deeper_by * ov.n_AB.y, q[5]);
     const Overlap shape = overlap_of(pa, deeper, cfg_.overlap);
     if (shape.area > 0.0) ov = shape;
   }
@@ -283,7 +295,7 @@ Overlap PolygonContact::surface_overlap(const ConvexPolygon& pa, const ConvexPol
   const Separation sep = separation_of(pa, pb);
   const double shift = std::max(sep.distance, 0.0) + sliver;
   const ConvexPolygon deeper =
-      b_.shape.placed({q[3] - shift * sep.n_AB.x, q[4] - shift * sep.n_AB.y, q[5]}, b_.p_WO);
+      placed(b_, q[3] - shift * sep.n_AB.x, q[4] - shift * sep.n_AB.y, q[5]);
   return overlap_of(pa, deeper, cfg_.overlap);
 }
 
@@ -298,6 +310,11 @@ double PolygonContact::speed_bound(const Vec6& qdot) const {
     v += std::hypot(qdot[3 * body], qdot[3 * body + 1]) +
          std::abs(qdot[3 * body + 2]) * length_scale_;
   return v;
+}
+
+double PolygonContact::speed_of(const State& s) const {
+  if (s.speed < 0.0) s.speed = speed_bound(s.qdot);
+  return s.speed;
 }
 
 double PolygonContact::area_contact_step(double secant_width) const {
@@ -369,6 +386,32 @@ void PolygonContact::add_tangent(Eigen::MatrixXd& K, double velocity_factor) con
     for (int i = 0; i < kDofs; ++i)
       if (dof_[i] >= 0) K(dof_[i], dof_[j]) += (plus.force[i] - minus.force[i]) / (2 * eps);
   }
+}
+
+// Pseudocode: the displacements move by ± s x, s such that the largest DOF moves by add_tangent's
+// ε (a rotation scaled by the body size); y += (f(+) − f(−)) / (2s) on the element's DOFs.
+void PolygonContact::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  if (!trial_.closed) return;
+  Vec6 dx{};
+  double size = 0.0;
+  for (int j = 0; j < kDofs; ++j) {
+    if (dof_[j] < 0) continue;
+    dx[j] = x[dof_[j]];
+    size = std::max(size, std::abs(dx[j]) * (j % 3 == 2 ? length_scale_ : 1.0));
+  }
+  if (size == 0.0) return;
+  const double eps_u = std::clamp(1e-3 * trial_.indentation, 1e-10, 1e-7);
+  const double s = eps_u / size;
+  Vec6 qp = trial_.q, qm = trial_.q;
+  for (int j = 0; j < kDofs; ++j) {
+    qp[j] += s * dx[j];
+    qm[j] -= s * dx[j];
+  }
+  State plus, minus;
+  evaluate(qp, trial_.qdot, freeze_, plus);
+  evaluate(qm, trial_.qdot, freeze_, minus);
+  for (int i = 0; i < kDofs; ++i)
+    if (dof_[i] >= 0) y[dof_[i]] += (plus.force[i] - minus.force[i]) / (2 * s);
 }
 
 double PolygonContact::power(const Eigen::VectorXd& v) const {
@@ -457,7 +500,7 @@ double PolygonContact::event_fraction() {
   // basis peaks at 4/27), and |ẇ| is at most the bodies' speed bound; so a box gap larger than
   // h (speed_C + speed_T) at both ends excludes a crossing without the three separation_of
   // calls of the witness.
-  const double margin = h_ * (speed_bound(C.qdot) + speed_bound(T.qdot)) + 1e-9 * length_scale_;
+  const double margin = h_ * (speed_of(C) + speed_of(T)) + 1e-9 * length_scale_;
   const bool far = !C.closed && !T.closed && C.box_gap > margin && T.box_gap > margin;
   if (!far) {
     if (!C.witness_valid) compute_witness(C);
@@ -597,7 +640,7 @@ double PolygonContact::approach_limit() const {
   if (approach_cached_) return approach_limit_;
   const State& C = committed_;
   const double acceleration_bound = 2.0 * rate_change_;
-  const TimeOfImpact far = time_of_impact(C.box_gap, speed_bound(C.qdot), acceleration_bound);
+  const TimeOfImpact far = time_of_impact(C.box_gap, speed_of(C), acceleration_bound);
   approach_cached_ = true;
   if (far.time >= 2.0 * longest_step_) return approach_limit_ = far.time;
   State s = C;

@@ -116,6 +116,11 @@ class PolygonContact final : public Element {
     return true;
   }
   bool symmetric_tangent() const override { return false; }
+  // y += K x (stiffness, velocity factor 0) by one central difference along x: what add_tangent's
+  // columns give times x, to their truncation error, with 2 force evaluations instead of 2 per
+  // DOF (the stepper's error estimate).
+  bool has_stiffness_product() const override { return true; }
+  void add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const override;
   double power(const Eigen::VectorXd& v) const override;
   double stored_energy() const override;
   void commit() override;
@@ -211,13 +216,18 @@ class PolygonContact final : public Element {
     double box_gap =
         0.0;  // m, lower bound of the distance apart (bounding boxes), < 0 if they meet
     bool witness_valid = false;
-    ImpactPhase phase;  // the normal law's memory of this contact (option normal_law)
+    mutable double speed = -1.0;  // speed_bound(qdot) once asked (speed_of), else < 0
+    ImpactPhase phase;            // the normal law's memory of this contact (option normal_law)
   };
 
   // The force law at (q, qdot) from the committed state; `out` gets everything but work.
   void evaluate(const Vec6& q, const Vec6& qdot, bool freeze, State& out) const;
   void gather(const Eigen::VectorXd& x, Vec6& q) const;
-  static ConvexPolygon place(const PolygonBody& body, double u, double v, double theta);
+  // The body's outline placed by (u, v, θ); a fixed body (no DOF) stays where it is.
+  ConvexPolygon place(const PolygonBody& body, double u, double v, double theta) const;
+  // body.shape placed by (u, v, θ) about its DOF origin, cos θ and sin θ kept from the body's
+  // last placement at the same θ (a trial's evaluations and most of its tangent's share one).
+  ConvexPolygon placed(const PolygonBody& body, double u, double v, double theta) const;
   void compute_witness(State& s) const;
   // The overlap of A and B moved together along their separation direction until B is a sliver
   // `sliver` deep inside A: the shape of a contact at A_c → 0+ (empty if they are far apart).
@@ -226,6 +236,8 @@ class PolygonContact final : public Element {
   // Bound of the speed of any material point of the two bodies, relative to the other: Σ over
   // A and B of |(u̇, v̇)| + |θ̇| L (m/s; of accelerations times a step when given rate changes).
   double speed_bound(const Vec6& qdot) const;
+  // speed_bound(s.qdot), computed once per state.
+  double speed_of(const State& s) const;
   // A_c/δ_N of an overlap's shape under the configured indentation rule (w, or w/2).
   double secant_width_of(const Overlap& ov) const;
   // The contact step of the area law at a secant width (m): π √(m_eff/(k_N w_s))/steps, w_s
@@ -262,9 +274,13 @@ class PolygonContact final : public Element {
   bool freeze_ = false;
   FrictionStatus forced_friction_ = FrictionStatus::kFree;
   State committed_, trial_;
-  double contact_step_ = 1e300;  // s, the contact step from the current contact's onset
-  int steps_in_contact_ = 0;     // accepted steps since the current contact began
-  double rate_change_ = 0.0;     // bound of |δ̈| over the last accepted step (kinematic), m/s²
+  struct Trig {
+    double theta = 0.0, cos = 1.0, sin = 0.0;  // cos θ, sin θ as std::cos, std::sin give them
+  };
+  mutable std::array<Trig, 2> trig_{};  // of a_ and b_
+  double contact_step_ = 1e300;         // s, the contact step from the current contact's onset
+  int steps_in_contact_ = 0;            // accepted steps since the current contact began
+  double rate_change_ = 0.0;  // bound of |δ̈| over the last accepted step (kinematic), m/s²
   mutable bool approach_cached_ = false;  // approach_limit() of the committed state is known
   mutable double approach_limit_ = 1e300;
   Event pending_ = Event::kNone;
