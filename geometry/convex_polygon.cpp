@@ -6,27 +6,17 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
+
+#include "geometry/outline_rules.h"
 
 namespace isopound {
 namespace {
 
-// A vertex whose turn has |sin| below this (relative to its two edges) lies on the line
-// through its neighbours: it deviates from that line by < 1e-9 of an edge length, far below
-// anything a drawing means, yet well above the round-off (~1e-13) of coordinates near 10³ m.
-constexpr double kCollinearSine = 1e-9;
-// Two vertices closer than this fraction of the polygon's size are the same vertex.
-constexpr double kRepeatedFraction = 1e-12;
-
-std::string describe(int i, Vec2 p) {
-  std::ostringstream out;
-  out.precision(12);
-  out << "vertex " << i << " (" << p.x << ", " << p.y << ")";
-  return out.str();
-}
+using detail::kCollinearSine;
+using detail::kRepeatedFraction;
 
 [[noreturn]] void reject(int i, Vec2 p, const std::string& what) {
-  throw InvalidPolygon(i, describe(i, p) + ": " + what);
+  throw InvalidPolygon(i, detail::describe_vertex(i, p) + ": " + what);
 }
 
 // Two edges of the outline that cross (not at a shared vertex), as "edge 0-1 crosses edge 2-3";

@@ -7,10 +7,12 @@
 #include <sstream>
 #include <string>
 
+#include "geometry/outline_rules.h"
+
 namespace isopound {
 namespace {
 
-constexpr double kCollinearSine = 1e-9;  // as SimplePolygon's
+using detail::kCollinearSine;
 
 Vec2 unit(Vec2 v) {
   const double l = std::hypot(v.x, v.y);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/outline_rules.h"
 #include "geometry/overlap_finish.h"
 
 namespace isopound {
@@ -19,14 +20,7 @@ double length(Vec2 v) {
   return std::hypot(v.x, v.y);
 }
 
-// Squared distance from p to the segment ab (squares: no square root in the inner loops).
-double point_segment_distance_sq(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 e = b - a;
-  const double ee = dot(e, e);
-  const double s = ee > 0.0 ? std::clamp(dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
-  const Vec2 d = p - (a + s * e);
-  return dot(d, d);
-}
+using detail::point_segment_distance_sq;  // squares: no square root in the inner loops
 
 bool boxes_apart(Vec2 a_min, Vec2 a_max, Vec2 b_min, Vec2 b_max) {
   return a_max.x < b_min.x || b_max.x < a_min.x || a_max.y < b_min.y || b_max.y < a_min.y;

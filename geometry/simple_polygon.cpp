@@ -7,34 +7,25 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <string>
+
+#include "geometry/outline_rules.h"
 
 namespace isopound {
 namespace {
 
-constexpr double kCollinearSine = 1e-9;
-constexpr double kRepeatedFraction = 1e-12;
+using detail::kCollinearSine;
+using detail::kRepeatedFraction;
 // Two non-adjacent edges closer than this fraction of the plan's size touch: the outline is not
 // simple (a drawing's separate rooms joined at a point, or a notch closed to nothing).
 constexpr double kTouchingFraction = 1e-9;
-
-std::string describe(int i, Vec2 p) {
-  std::ostringstream out;
-  out.precision(12);
-  out << "vertex " << i << " (" << p.x << ", " << p.y << ")";
-  return out.str();
-}
 
 double length(Vec2 a) {
   return std::hypot(a.x, a.y);
 }
 
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 e = b - a;
-  const double ee = dot(e, e);
-  const double s = ee > 0.0 ? std::clamp(dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
-  return length(p - (a + s * e));
+  return std::sqrt(detail::point_segment_distance_sq(p, a, b));
 }
 
 // Segments ab and cd cross at a point inside both (strict signs: not at an end, not collinear).
@@ -182,7 +173,8 @@ SimplePolygon::SimplePolygon(std::span<const Vec2> in) {
                                  " vertices, got " + std::to_string(n));
   for (int i = 0; i < n; ++i)
     if (!std::isfinite(in[i].x) || !std::isfinite(in[i].y))
-      throw InvalidPolygon(i, describe(i, in[i]) + ": coordinate is not a finite number");
+      throw InvalidPolygon(
+          i, detail::describe_vertex(i, in[i]) + ": coordinate is not a finite number");
   Vec2 lo = in[0], hi = in[0];
   for (const Vec2& p : in) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
@@ -192,7 +184,8 @@ SimplePolygon::SimplePolygon(std::span<const Vec2> in) {
   for (int i = 1; i < n; ++i)
     for (int j = 0; j < i; ++j)
       if (length(in[i] - in[j]) <= kRepeatedFraction * size)
-        throw InvalidPolygon(i, describe(i, in[i]) + ": repeats vertex " + std::to_string(j));
+        throw InvalidPolygon(
+            i, detail::describe_vertex(i, in[i]) + ": repeats vertex " + std::to_string(j));
   double twice_area = 0.0;
   for (int i = 1; i + 1 < n; ++i) twice_area += cross(in[i] - in[0], in[i + 1] - in[0]);
   // Zero area: a bow tie (its halves cancel) or points on one line.
@@ -212,7 +205,7 @@ SimplePolygon::SimplePolygon(std::span<const Vec2> in) {
   for (int i = 0; i < n; ++i) {
     const Vec2 p = in[(i + n - 1) % n], q = in[i], r = in[(i + 1) % n];
     if (std::abs(turn_sine(p, q, r)) <= kCollinearSine && dot(q - p, r - q) < 0.0)
-      throw InvalidPolygon(i, describe(i, q) +
+      throw InvalidPolygon(i, detail::describe_vertex(i, q) +
                                   ": the outline turns back along the edge it came from "
                                   "(a spike of zero width)");
   }
