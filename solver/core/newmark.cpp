@@ -299,8 +299,7 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
     batches_.add_tangents(k_tangent_, 2.0 / h);
     if (use_lu_) {
       solve_lu(k_tangent_, lu_, r_, du_);
-    } else if (solve_llt()) {
-    } else {
+    } else if (!solve_llt()) {  // not positive definite: LDL^T
       ldlt_.compute(k_tangent_);
       du_ = ldlt_.solve(r_);
     }
