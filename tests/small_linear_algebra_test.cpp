@@ -97,8 +97,9 @@ TEST(SmallLlt, FactorsAndSolvesAsEigensLltBitForBit) {
 TEST(CompressedRows, ProductsAsEigensBitForBit) {
   std::mt19937 rng(9);
   // Up to Eigen's unblocked width (127 columns), and one beyond, where Eigen's product is kept.
-  for (const int cols : {1, 2, 3, 5, 9, 12, 31, 127, 130})
-    for (const int rows : {1, 3, 12}) {
+  // Square up to 8 (kept whole, zeros included) as well as the rest.
+  for (const int cols : {1, 2, 3, 4, 5, 6, 8, 9, 12, 31, 127, 130})
+    for (const int rows : {1, 3, 4, 6, 8, 12}) {
       const Eigen::MatrixXd a = random_matrix(rng, rows, cols, 0.6);
       const Eigen::VectorXd x = random_vector(rng, cols), y0 = random_vector(rng, rows);
       CompressedRows rows_of_a;

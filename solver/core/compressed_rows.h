@@ -7,6 +7,12 @@
 // that sum to the destination (alpha = 1 for y = A x and y += A x, -1 for y -= A x). Leaving
 // out a zero term changes no such sum: c + (+-0) = c for c != 0, and a sum started at +0 is
 // never -0. Wider matrices (Eigen sums them in blocks of columns) keep Eigen's product.
+//
+// Square matrices up to kMaxDense (a 2D building's M, C, K, K_hat) are kept whole, zeros
+// included, the size a template argument: a zero term adds +-0 to a sum started at +0, which
+// changes no sum either, while the unrolled rows cost a fraction of the indexed ones. (For a
+// non-finite x, 0 x = NaN spreads to every row rather than to the rows that read it: a residual
+// that is non-finite either way.)
 #pragma once
 
 #include <Eigen/Dense>
@@ -22,6 +28,7 @@ class CompressedRows {
     column_.reserve(static_cast<std::size_t>(rows * cols));
     value_.reserve(static_cast<std::size_t>(rows * cols));
     if (cols > kMaxColumns) wide_.resize(rows, cols);
+    if (rows == cols && rows <= kMaxDense) dense_.reserve(static_cast<std::size_t>(rows * cols));
   }
 
   void assign(const Eigen::MatrixXd& a) {
@@ -30,8 +37,16 @@ class CompressedRows {
     row_end_.clear();
     column_.clear();
     value_.clear();
+    dense_size_ = 0;
     if (cols_ > kMaxColumns) {
       wide_ = a;
+      return;
+    }
+    if (rows_ == cols_ && rows_ <= kMaxDense) {  // by rows, zeros included
+      dense_size_ = static_cast<int>(rows_);
+      dense_.resize(static_cast<std::size_t>(rows_ * cols_));
+      for (Eigen::Index i = 0; i < rows_; ++i)
+        for (Eigen::Index j = 0; j < cols_; ++j) dense_[i * cols_ + j] = a(i, j);
       return;
     }
     for (Eigen::Index i = 0; i < rows_; ++i) {
@@ -72,8 +87,40 @@ class CompressedRows {
  private:
   static constexpr Eigen::Index kMaxColumns = 127;  // Eigen's unblocked product (cols < 128)
 
+  static constexpr int kMaxDense = 8;
+
+  template <int n, class Store>
+  void dense_rows(const double* x, Store& store) const {
+    const double* a = dense_.data();
+    for (int i = 0; i < n; ++i) {
+      double sum = 0.0;
+      for (int j = 0; j < n; ++j) sum += a[i * n + j] * x[j];
+      store(i, sum);
+    }
+  }
+
   template <class Store>
   void each_row(const Eigen::VectorXd& x, Store&& store) const {
+    switch (dense_size_) {
+      case 1:
+        return dense_rows<1>(x.data(), store);
+      case 2:
+        return dense_rows<2>(x.data(), store);
+      case 3:
+        return dense_rows<3>(x.data(), store);
+      case 4:
+        return dense_rows<4>(x.data(), store);
+      case 5:
+        return dense_rows<5>(x.data(), store);
+      case 6:
+        return dense_rows<6>(x.data(), store);
+      case 7:
+        return dense_rows<7>(x.data(), store);
+      case 8:
+        return dense_rows<8>(x.data(), store);
+      default:
+        break;
+    }
     int k = 0;
     for (Eigen::Index i = 0; i < rows_; ++i) {
       double sum = 0.0;
@@ -87,6 +134,8 @@ class CompressedRows {
   std::vector<int> column_;
   std::vector<double> value_;
   Eigen::MatrixXd wide_;  // the matrix itself when it has more than kMaxColumns columns
+  int dense_size_ = 0;    // n > 0: the matrix is n x n, whole in dense_ (by rows)
+  std::vector<double> dense_;
 };
 
 }  // namespace isopound

@@ -14,6 +14,34 @@
 
 namespace isopound {
 
+namespace {
+
+// The step's vector arithmetic as plain loops over the DOFs: element for element the operations
+// of the Eigen expressions they replace (a max is exact, whatever the order), without Eigen's
+// dispatch, which costs more than the arithmetic on a 2D building's four or six DOFs.
+// (A loop, not std::copy: a call to memcpy costs more than copying four doubles.)
+template <class Dense>
+void copy(const Dense& from, Dense& to) {
+  const double* f = from.data();
+  double* t = to.data();
+  for (Eigen::Index i = 0, size = from.size(); i < size; ++i) t[i] = f[i];
+}
+
+// max_i term(i) over i < n of terms >= 0; NaN if a term is NaN (the callers test for it).
+template <class Term>
+double max_of(int n, Term&& term) {
+  double m = 0.0;
+  bool nan = false;
+  for (int i = 0; i < n; ++i) {
+    const double x = term(i);
+    nan = nan || std::isnan(x);
+    m = std::max(m, x);
+  }
+  return nan ? std::numeric_limits<double>::quiet_NaN() : m;
+}
+
+}  // namespace
+
 NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
     : model_(model),
       settings_(settings),
@@ -235,9 +263,9 @@ void NewmarkStepper::solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::Mat
 
 bool NewmarkStepper::solve_llt() {
   if (k_tangent_.rows() <= SmallLlt::kMaxSize) {
-    llt_factor_ = k_tangent_;  // the same size every time: no allocation
+    copy(k_tangent_, llt_factor_);  // the same size every time
     if (!SmallLlt::factor(llt_factor_)) return false;
-    du_ = r_;
+    copy(r_, du_);
     SmallLlt::solve(llt_factor_, du_);
     return true;
   }
@@ -250,38 +278,50 @@ bool NewmarkStepper::solve_llt() {
 StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cache, bool freeze) {
   h_ = h;
   const EffectiveLinear& linear = effective_linear(h, cache);
-  const Eigen::MatrixXd& k_hat = linear.k_hat;
   for (Element* e : eventful_) e->begin_step(h, freeze);
+  const int n = static_cast<int>(u0_.size());
   const double c1 = 4.0 / (h * h), c2 = 4.0 / h;
+  const double *u0 = u0_.data(), *v0 = v0_.data(), *a0 = a0_.data();
+  double *u1 = u1_.data(), *v1 = v1_.data(), *delta = delta_.data(), *r = r_.data();
+  double* p_hat = p_hat_.data();
   // Incremental form: the unknown is du = u1 - u0, so that a1 = 4/h^2 du - 4/h v0 - a0 carries
   // round-off relative to du, not to u0 (which would swamp the accelerations of short steps).
   //   R(du) = K_hat du + r0 + f_nl(u0 + du, v1),
   //   r0 = K u0 - M (4/h v0 + a0) - C v0 + M iota ag1.
-  work_ = c2 * v0_ + a0_;
-  p_hat_ = k_u0_;
+  for (int i = 0; i < n; ++i) work_[i] = c2 * v0[i] + a0[i];
+  copy(k_u0_, p_hat_);
   mass_rows_.subtract_product(work_, p_hat_);
   // Subtracting C v0 as one product or accumulating it differ in rounding: small models keep
   // their arithmetic (results unchanged since issue 8); the block-eliminated ones reuse C v0.
-  if (use_blocks_)
-    p_hat_ -= c_v0_;
-  else
+  if (use_blocks_) {
+    const double* c_v0 = c_v().data();
+    for (int i = 0; i < n; ++i) p_hat[i] -= c_v0[i];
+  } else {
     damping_rows_.subtract_product(v0_, p_hat_);
-  p_hat_ += m_iota_.col(0) * ag1.x;
-  if (ag1.y != 0.0) p_hat_ += m_iota_.col(1) * ag1.y;
+  }
+  const double* iota_x = m_iota_.data();  // M iota by columns
+  for (int i = 0; i < n; ++i) p_hat[i] += iota_x[i] * ag1.x;
+  if (ag1.y != 0.0)
+    for (int i = 0; i < n; ++i) p_hat[i] += iota_x[n + i] * ag1.y;
   const double tol_r = settings_.tolerance * force_ref_ +
                        64.0 * std::numeric_limits<double>::epsilon() *
-                           (p_hat_.cwiseAbs().maxCoeff() + c2 * m_v0_.cwiseAbs().maxCoeff());
+                           (max_of(n, [&](int i) { return std::abs(p_hat[i]); }) +
+                            c2 * max_of(n, [&](int i) { return std::abs(m_v0_[i]); }));
 
-  delta_ = h * v0_ + (0.5 * h * h) * a0_;  // constant-acceleration predictor
+  const double half_h2 = 0.5 * h * h, c_v = 2.0 / h;
+  for (int i = 0; i < n; ++i) delta[i] = h * v0[i] + half_h2 * a0[i];  // constant acceleration
+  const double* weight = residual_weight_.data();
   StepOutcome out;
   for (int it = 0; it <= settings_.max_iterations; ++it) {
-    u1_ = u0_ + delta_;
-    v1_ = (2.0 / h) * delta_ - v0_;
+    for (int i = 0; i < n; ++i) {
+      u1[i] = u0[i] + delta[i];
+      v1[i] = c_v * delta[i] - v0[i];
+    }
     batches_.set_trials(u1_, v1_);
     linear.k_hat_rows.multiply(delta_, r_);
-    r_ += p_hat_;
+    for (int i = 0; i < n; ++i) r[i] += p_hat[i];
     batches_.add_forces(r_);
-    const double r_norm = r_.cwiseAbs().cwiseProduct(residual_weight_).maxCoeff();
+    const double r_norm = max_of(n, [&](int i) { return std::abs(r[i]) * weight[i]; });
     if (!std::isfinite(r_norm)) break;
     out.iterations = it;
     // Only a small residual converges: a tiny correction alone may mean a stalled iteration.
@@ -292,41 +332,41 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
     if (it == settings_.max_iterations) break;
     if (linear.blocks) {
       solve_blocks(linear);
-      delta_ -= du_;
-      continue;
+    } else {
+      copy(linear.k_hat, k_tangent_);
+      batches_.add_tangents(k_tangent_, c_v);
+      if (use_lu_) {
+        solve_lu(k_tangent_, lu_, r_, du_);
+      } else if (!solve_llt()) {  // not positive definite: LDL^T
+        ldlt_.compute(k_tangent_);
+        du_ = ldlt_.solve(r_);
+      }
     }
-    k_tangent_ = k_hat;
-    batches_.add_tangents(k_tangent_, 2.0 / h);
-    if (use_lu_) {
-      solve_lu(k_tangent_, lu_, r_, du_);
-    } else if (!solve_llt()) {  // not positive definite: LDL^T
-      ldlt_.compute(k_tangent_);
-      du_ = ldlt_.solve(r_);
-    }
-    delta_ -= du_;
+    for (int i = 0; i < n; ++i) delta[i] -= du_[i];
   }
-  a1_ = c1 * delta_ - c2 * v0_ - a0_;
+  for (int i = 0; i < n; ++i) a1_[i] = c1 * delta[i] - c2 * v0[i] - a0[i];
   return out;
 }
 
 double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
   // e = h^2/12 (a1 - a0); force error K_s e with K_s = K + element stiffness tangents.
-  work_ = (h_ * h_ / 12.0) * (a1_ - a0_);
+  const int n = static_cast<int>(work_.size());
+  const double scale = h_ * h_ / 12.0;
+  for (int i = 0; i < n; ++i) work_[i] = scale * (a1_[i] - a0_[i]);
   if (stiffness_products_) {
     // The elements' products, not their assembled tangents (the same to round-off).
     stiffness_rows_.multiply(work_, du_);
     batches_.add_stiffness_products(work_, du_);
-    return du_.cwiseAbs().cwiseQuotient(force_scale).maxCoeff();
+    return max_of(n, [&](int i) { return std::abs(du_[i]) / force_scale[i]; });
   }
-  k_tangent_ = model_.stiffness;
+  copy(model_.stiffness, k_tangent_);
   batches_.add_tangents(k_tangent_, 0.0);
   // max_i |(K_s e)_i| / force_scale_i, each row summed as Eigen's column-major product sums it
   // (from 0, in column order) without its dispatch: a small model's step is a few hundred flops.
-  const Eigen::Index n = k_tangent_.rows();
   double norm = 0.0;
-  for (Eigen::Index i = 0; i < n; ++i) {
+  for (int i = 0; i < n; ++i) {
     double row = 0.0;
-    for (Eigen::Index j = 0; j < n; ++j) row += k_tangent_(i, j) * work_[j];
+    for (int j = 0; j < n; ++j) row += k_tangent_(i, j) * work_[j];
     const double x = std::abs(0.0 + row) / force_scale[i];
     if (std::isnan(x)) return x;
     norm = std::max(norm, x);
@@ -336,24 +376,24 @@ double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
 
 void NewmarkStepper::accept() {
   for (auto& e : model_.elements) e->commit();
-  u0_ = u1_;
-  v0_ = v1_;
-  a0_ = a1_;
+  copy(u1_, u0_);
+  copy(v1_, v0_);
+  copy(a1_, a0_);
   committed_products();
 }
 
 void NewmarkStepper::committed_products() {
   stiffness_rows_.multiply(u0_, k_u0_);
   mass_rows_.multiply(v0_, m_v0_);
-  damping_rows_.multiply(v0_, c_v0_);
+  c_v0_current_ = false;  // C v0 when asked (c_v())
 }
 
 void NewmarkStepper::reject() {
   for (auto& e : model_.elements) e->revert();
   delta_.setZero();
-  u1_ = u0_;
-  v1_ = v0_;
-  a1_ = a0_;
+  copy(u0_, u1_);
+  copy(v0_, v1_);
+  copy(a0_, a1_);
 }
 
 }  // namespace isopound

@@ -75,9 +75,17 @@ class NewmarkStepper {
   const Eigen::VectorXd& v() const { return v0_; }
   const Eigen::VectorXd& a() const { return a0_; }
   // K u, M v and C v at the committed state (each step needs them: the next load, energies).
+  // C v is formed when first asked after a step (a small model's step and a sweep reading no
+  // energy or shear never ask): the same product whenever it is formed.
   const Eigen::VectorXd& k_u() const { return k_u0_; }
   const Eigen::VectorXd& m_v() const { return m_v0_; }
-  const Eigen::VectorXd& c_v() const { return c_v0_; }
+  const Eigen::VectorXd& c_v() const {
+    if (!c_v0_current_) {
+      damping_rows_.multiply(v0_, c_v0_);
+      c_v0_current_ = true;
+    }
+    return c_v0_;
+  }
   // The model's elements by batches (the analysis records their outputs and energy through it).
   const ElementBatches& batches() const { return batches_; }
   const Eigen::VectorXd& trial_u() const { return u1_; }
@@ -120,7 +128,9 @@ class NewmarkStepper {
   NewtonSettings settings_;
   double force_ref_;
   Eigen::VectorXd u0_, v0_, a0_, u1_, v1_, a1_;
-  Eigen::VectorXd k_u0_, m_v0_, c_v0_;  // K u0, M v0 and C v0
+  Eigen::VectorXd k_u0_, m_v0_;   // K u0 and M v0
+  mutable Eigen::VectorXd c_v0_;  // C v0, when c_v0_current_ (see c_v())
+  mutable bool c_v0_current_ = false;
   void committed_products();
   Eigen::VectorXd p_hat_, r_, du_, work_;
   Eigen::MatrixXd m_iota_;  // M iota, n x 2
