@@ -113,6 +113,9 @@ class NewmarkStepper {
     bool blocks = false;  // the block terms are set (else: the full factorisation)
   };
   const EffectiveLinear& effective_linear(double h, bool cache);
+  // try_step for kSize DOFs (0: any number).
+  template <int kSize>
+  StepOutcome try_step_sized(double h, GroundAcceleration ag1, bool cache, bool freeze);
   void fill_effective_linear(double h, EffectiveLinear& e);
   // du_ = (K_hat + element tangent)^-1 r_ by block elimination (the tangent in k_elements_).
   void solve_blocks(const EffectiveLinear& e);
