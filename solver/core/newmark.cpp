@@ -20,11 +20,13 @@ namespace {
 // of the Eigen expressions they replace (a max is exact, whatever the order), without Eigen's
 // dispatch, which costs more than the arithmetic on a 2D building's four or six DOFs.
 // (A loop, not std::copy: a call to memcpy costs more than copying four doubles.)
-template <class Dense>
+// kCount > 0: the number of values, known at compile time (0: from's size).
+template <int kCount = 0, class Dense>
 void copy(const Dense& from, Dense& to) {
   const double* f = from.data();
   double* t = to.data();
-  for (Eigen::Index i = 0, size = from.size(); i < size; ++i) t[i] = f[i];
+  const Eigen::Index size = kCount > 0 ? kCount : from.size();
+  for (Eigen::Index i = 0; i < size; ++i) t[i] = f[i];
 }
 
 // max_i term(i) over i < n of terms >= 0; NaN if a term is NaN (the callers test for it).
@@ -261,11 +263,12 @@ void NewmarkStepper::solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::Mat
   SmallLu::solve(a, pivots_.data(), x);
 }
 
+template <int kSize>
 bool NewmarkStepper::solve_llt() {
   if (k_tangent_.rows() <= SmallLlt::kMaxSize) {
-    copy(k_tangent_, llt_factor_);  // the same size every time
+    copy<kSize * kSize>(k_tangent_, llt_factor_);  // the same size every time
     if (!SmallLlt::factor(llt_factor_)) return false;
-    copy(r_, du_);
+    copy<kSize>(r_, du_);
     SmallLlt::solve(llt_factor_, du_);
     return true;
   }
@@ -314,7 +317,7 @@ StepOutcome NewmarkStepper::try_step_sized(double h, GroundAcceleration ag1, boo
   //   R(du) = K_hat du + r0 + f_nl(u0 + du, v1),
   //   r0 = K u0 - M (4/h v0 + a0) - C v0 + M iota ag1.
   for (int i = 0; i < n; ++i) work_[i] = c2 * v0[i] + a0[i];
-  copy(k_u0_, p_hat_);
+  copy<kSize>(k_u0_, p_hat_);
   mass_rows_.subtract_product(work_, p_hat_);
   // Subtracting C v0 as one product or accumulating it differ in rounding: small models keep
   // their arithmetic (results unchanged since issue 8); the block-eliminated ones reuse C v0.
@@ -358,11 +361,11 @@ StepOutcome NewmarkStepper::try_step_sized(double h, GroundAcceleration ag1, boo
     if (linear.blocks) {
       solve_blocks(linear);
     } else {
-      copy(linear.k_hat, k_tangent_);
+      copy<kSize * kSize>(linear.k_hat, k_tangent_);
       batches_.add_tangents(k_tangent_, c_v);
       if (use_lu_) {
         solve_lu(k_tangent_, lu_, r_, du_);
-      } else if (!solve_llt()) {  // not positive definite: LDL^T
+      } else if (!solve_llt<kSize>()) {  // not positive definite: LDL^T
         ldlt_.compute(k_tangent_);
         du_ = ldlt_.solve(r_);
       }
@@ -374,8 +377,30 @@ StepOutcome NewmarkStepper::try_step_sized(double h, GroundAcceleration ag1, boo
 }
 
 double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
+  switch (u0_.size()) {  // as try_step
+    case 2:
+      return error_norm_sized<2>(force_scale);
+    case 3:
+      return error_norm_sized<3>(force_scale);
+    case 4:
+      return error_norm_sized<4>(force_scale);
+    case 5:
+      return error_norm_sized<5>(force_scale);
+    case 6:
+      return error_norm_sized<6>(force_scale);
+    case 7:
+      return error_norm_sized<7>(force_scale);
+    case 8:
+      return error_norm_sized<8>(force_scale);
+    default:
+      return error_norm_sized<0>(force_scale);
+  }
+}
+
+template <int kSize>
+double NewmarkStepper::error_norm_sized(const Eigen::VectorXd& force_scale) {
   // e = h^2/12 (a1 - a0); force error K_s e with K_s = K + element stiffness tangents.
-  const int n = static_cast<int>(work_.size());
+  const int n = kSize > 0 ? kSize : static_cast<int>(work_.size());
   const double scale = h_ * h_ / 12.0;
   for (int i = 0; i < n; ++i) work_[i] = scale * (a1_[i] - a0_[i]);
   if (stiffness_products_) {
@@ -384,7 +409,7 @@ double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
     batches_.add_stiffness_products(work_, du_);
     return max_of(n, [&](int i) { return std::abs(du_[i]) / force_scale[i]; });
   }
-  copy(model_.stiffness, k_tangent_);
+  copy<kSize * kSize>(model_.stiffness, k_tangent_);
   batches_.add_tangents(k_tangent_, 0.0);
   // max_i |(K_s e)_i| / force_scale_i, each row summed as Eigen's column-major product sums it
   // (from 0, in column order) without its dispatch: a small model's step is a few hundred flops.

@@ -125,7 +125,10 @@ class NewmarkStepper {
                 const Eigen::VectorXd& b, Eigen::VectorXd& x);
   // du_ = k_tangent_^-1 r_ by Cholesky: SmallLlt up to its size (Eigen's LLT to the bit, without
   // its set-up), llt_ beyond; false (k_tangent_ unchanged) when not positive definite.
+  template <int kSize>  // kSize > 0: the DOF count, known at compile time (0: any)
   bool solve_llt();
+  template <int kSize>
+  double error_norm_sized(const Eigen::VectorXd& force_scale);
 
   Model& model_;
   NewtonSettings settings_;
