@@ -42,11 +42,9 @@ class CompressedRows {
       wide_ = a;
       return;
     }
-    if (rows_ == cols_ && rows_ <= kMaxDense) {  // by rows, zeros included
+    if (rows_ == cols_ && rows_ <= kMaxDense) {  // whole, by columns
       dense_size_ = static_cast<int>(rows_);
-      dense_.resize(static_cast<std::size_t>(rows_ * cols_));
-      for (Eigen::Index i = 0; i < rows_; ++i)
-        for (Eigen::Index j = 0; j < cols_; ++j) dense_[i * cols_ + j] = a(i, j);
+      dense_.assign(a.data(), a.data() + rows_ * cols_);
       return;
     }
     for (Eigen::Index i = 0; i < rows_; ++i) {
@@ -89,14 +87,16 @@ class CompressedRows {
 
   static constexpr int kMaxDense = 8;
 
+  // Every row's sum at once, column after column (each row still sums in column order from +0):
+  // the rows go two by two through SSE2.
   template <int n, class Store>
   void dense_rows(const double* x, Store& store) const {
     const double* a = dense_.data();
-    for (int i = 0; i < n; ++i) {
-      double sum = 0.0;
-      for (int j = 0; j < n; ++j) sum += a[i * n + j] * x[j];
-      store(i, sum);
-    }
+    double sum[n];
+    for (int i = 0; i < n; ++i) sum[i] = 0.0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) sum[i] += a[j * n + i] * x[j];
+    for (int i = 0; i < n; ++i) store(i, sum[i]);
   }
 
   template <class Store>
@@ -134,7 +134,7 @@ class CompressedRows {
   std::vector<int> column_;
   std::vector<double> value_;
   Eigen::MatrixXd wide_;  // the matrix itself when it has more than kMaxColumns columns
-  int dense_size_ = 0;    // n > 0: the matrix is n x n, whole in dense_ (by rows)
+  int dense_size_ = 0;    // n > 0: the matrix is n x n, whole in dense_ (by columns)
   std::vector<double> dense_;
 };
 
