@@ -110,7 +110,8 @@ struct SmallLlt {
 
   // sum_m p[m] q[m] in the order of Eigen's redux (LinearVectorizedTraversal, packets of 2, two
   // packet accumulators, then the lanes added, then the scalar tail).
-  static double lane_sum(const double* p, const double* q, int size) {
+  // Inlined into each sized solve, where the sizes are constants.
+  [[gnu::always_inline]] static double lane_sum(const double* p, const double* q, int size) {
     if (size < 2) return p[0] * q[0];
     const int aligned2 = size / 4 * 4, aligned = size / 2 * 2;
     double r0 = p[0] * q[0], r1 = p[1] * q[1];
