@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -62,7 +63,13 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   for (const auto& e : model.elements)
     if (e->has_events()) eventful_.push_back(e.get());
   k_tangent_.setZero(n, n);
-  llt_factor_.setZero(n, n);
+  if (n <= SmallLlt::kMaxSize) {
+    factors_.resize(kRememberedFactors);
+    for (RememberedFactor& f : factors_) {
+      f.matrix.setZero(n, n);
+      f.factor.setZero(n, n);
+    }
+  }
   pivots_.resize(static_cast<std::size_t>(n));
   mass_rows_.assign(model.mass);
   stiffness_rows_.assign(model.stiffness);
@@ -266,10 +273,21 @@ void NewmarkStepper::solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::Mat
 template <int kSize>
 bool NewmarkStepper::solve_llt() {
   if (k_tangent_.rows() <= SmallLlt::kMaxSize) {
-    copy<kSize * kSize>(k_tangent_, llt_factor_);  // the same size every time
-    if (!SmallLlt::factor(llt_factor_)) return false;
+    const std::size_t bytes = static_cast<std::size_t>(k_tangent_.size()) * sizeof(double);
+    const RememberedFactor* known = nullptr;
+    for (const RememberedFactor& f : factors_)
+      if (f.set && std::memcmp(f.matrix.data(), k_tangent_.data(), bytes) == 0) known = &f;
+    if (!known) {
+      RememberedFactor& f = factors_[static_cast<std::size_t>(next_factor_)];
+      copy<kSize * kSize>(k_tangent_, f.factor);  // the same size every time
+      f.set = SmallLlt::factor(f.factor);
+      if (!f.set) return false;
+      copy<kSize * kSize>(k_tangent_, f.matrix);
+      next_factor_ = (next_factor_ + 1) % kRememberedFactors;
+      known = &f;
+    }
     copy<kSize>(r_, du_);
-    SmallLlt::solve(llt_factor_, du_);
+    SmallLlt::solve(known->factor, du_);
     return true;
   }
   llt_.compute(k_tangent_);

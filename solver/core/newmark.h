@@ -149,7 +149,16 @@ class NewmarkStepper {
   // Factorisations are only ever computed in place, never copied (an unused Eigen
   // factorisation holds uninitialised state).
   Eigen::LLT<Eigen::MatrixXd> llt_;
-  Eigen::MatrixXd llt_factor_;  // SmallLlt's factor (small models)
+  // Small models: the last kRememberedFactors matrices SmallLlt factored, with their factors. A
+  // tangent that comes back (a bilinear isolator's takes two values, at a few step sizes) is
+  // recognised bit for bit and its factor reused: the same matrix has the same factor.
+  struct RememberedFactor {
+    Eigen::MatrixXd matrix, factor;
+    bool set = false;
+  };
+  static constexpr int kRememberedFactors = 4;
+  std::vector<RememberedFactor> factors_;
+  int next_factor_ = 0;  // the entry the next new factor replaces
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // beyond SmallLu::kMaxSize
   Eigen::LLT<Eigen::MatrixXd> mass_llt_;
