@@ -248,13 +248,36 @@ void read_damping3d(const InputNode& node, bool isolated, Damping3DConfig& d) {
   }
 }
 
-// walls: {sides: all | [east, ...], gap: 20 cm | {east: .., west: ..}, thickness, height,
-// extension, mass_per_length, bumper}
+// walls: {follow: box | outline, sides: all | [east, ...], gap: 20 cm | {east: .., west: ..},
+// thickness, height, extension, mass_per_length, bumper}
 MoatWalls3DConfig read_walls3d(const InputNode& node) {
   using W = MoatWalls3DConfig;
-  node.expect_keys({"sides", "gap", "thickness", "height", "extension", "mass_per_length", "model",
-                    "E", "nu", "damping", "bumper", "level"});
+  node.expect_keys({"follow", "sides", "gap", "thickness", "height", "extension", "mass_per_length",
+                    "model", "E", "nu", "damping", "bumper", "level"});
   W w;
+  node.read_choice<bool>("follow", {{"box", false}, {"outline", true}}, w.follow_outline);
+  if (w.follow_outline) {
+    // One wall per straight run of the slab's outline (geometry/moat.h), each at the one gap.
+    const auto refuse = [&](const char* key, const char* why) {
+      if (node.find(key)) node.fail_at_key(key, std::string("with follow: outline ") + why);
+    };
+    refuse("sides",
+           "every straight run of the slab's outline has its wall (sides selects box walls: "
+           "follow: box)");
+    refuse("bumper", "the walls have no bumpers (bumpers line box walls: follow: box)");
+    if (const auto model = node.find("model"); model && model->string() != "rigid")
+      model->fail("with follow: outline the walls are rigid (flexible walls: follow: box)");
+    const InputNode gap = node.required("gap");
+    if (gap.is_map()) gap.fail("one gap for every wall of the outline (a length, e.g. 20 cm)");
+    const double g = gap.quantity(dim::kLength, Bound::kNonNegative);
+    w.gap = {g, g, g, g};
+    w.present = {true, true, true, true};
+    node.read_quantity("thickness", dim::kLength, Bound::kPositive, w.thickness);
+    node.read_quantity("height", dim::kLength, Bound::kPositive, w.height);
+    node.read_quantity("extension", dim::kLength, Bound::kNonNegative, w.extension);
+    node.read_quantity("mass_per_length", Dimension{-1, 1, 0}, Bound::kPositive, w.mass_per_length);
+    return w;
+  }
   if (const auto sides = node.find("sides")) {
     if (sides->is_sequence()) {
       if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, west]");
