@@ -2,6 +2,7 @@
 // storeys (short form or list), base slab, bearings, damping; record pairs at an angle.
 #include "solver/io/model_input3d.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -16,6 +17,7 @@
 #include "solver/io/model_input.h"
 #include "solver/io/struck_columns_input.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/pounding3d.h"
 #include "solver/structures/rayleigh_modes.h"
 
 namespace isopound {
@@ -261,9 +263,24 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
     const auto refuse = [&](const char* key, const char* why) {
       if (node.find(key)) node.fail_at_key(key, std::string("with follow: outline ") + why);
     };
-    refuse("sides",
-           "every straight run of the slab's outline has its wall (sides selects box walls: "
-           "follow: box)");
+    // sides: all, or the faces of a partial moat (checked against the outline with the plan,
+    // check_outline_sides).
+    if (const auto sides = node.find("sides")) {
+      if (sides->is_sequence()) {
+        if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, north-east]");
+        for (const InputNode& side : sides->elements()) {
+          const std::string face = side.string();
+          if (std::find(w.outline_sides.begin(), w.outline_sides.end(), face) !=
+              w.outline_sides.end())
+            side.fail("side listed twice");
+          w.outline_sides.push_back(face);
+        }
+      } else {
+        sides->choice<int>({{"all", 0}});
+      }
+    } else {
+      node.note_default("sides", "all");
+    }
     refuse("bumper", "the walls have no bumpers (bumpers line box walls: follow: box)");
     if (const auto model = node.find("model"); model && model->string() != "rigid")
       model->fail("with follow: outline the walls are rigid (flexible walls: follow: box)");
@@ -321,6 +338,19 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   }
   if (const auto bumper = node.find("bumper")) w.bumper = read_bumper3d(*bumper, w, read_side);
   return w;
+}
+
+// follow: outline with sides: [...]: each a face of the outline's walls (moat_faces).
+void check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
+  if (!b.walls.follow_outline || b.walls.outline_sides.empty()) return;
+  const std::vector<std::string> faces = moat_faces(b);
+  const auto sides = walls.find("sides");
+  for (const InputNode& side : sides->elements()) {
+    if (std::find(faces.begin(), faces.end(), side.string()) != faces.end()) continue;
+    std::string all;
+    for (const std::string& f : faces) all += (all.empty() ? "" : ", ") + f;
+    side.fail("no wall of the outline faces '" + side.string() + "': its walls face " + all);
+  }
 }
 
 Building3DConfig read_building3d(const InputNode& node) {
@@ -526,6 +556,7 @@ Building3DConfig read_building3d(const InputNode& node) {
                 std::to_string(b.isolation_level) + ")");
       b.walls_level = level;
     }
+    check_outline_sides(*w, b);
   }
   if (!b.isolated && b.damping.type == Damping3DConfig::Type::kNonClassical) {
     // Fixed base: the superstructure Rayleigh alone.

@@ -122,6 +122,9 @@ struct MoatWalls3DConfig {
   // slab's outline at `gap` (geometry/moat.h: convex corners extended, re-entrant ones mitred);
   // a rectangular slab's are the four box walls. Rigid only, no bumper (yet).
   bool follow_outline = false;
+  // follow: outline: the faces `sides` lists ("east", "north-east", "east 2": pounding3d.h,
+  // moat_faces), a partial moat; empty: a wall on every run.
+  std::vector<std::string> outline_sides;
   std::array<bool, 4> present{};                  // no side: no walls
   std::array<double, 4> gap{0.2, 0.2, 0.2, 0.2};  // m, clear distance at rest
   double thickness = 1.0;                         // m

@@ -62,7 +62,8 @@ struct WallShape {
   int side = -1;        // MoatWalls3DConfig::Side of a box wall, else -1
 };
 
-std::vector<WallShape> wall_shapes(const Building3DConfig& b) {
+// Every wall of the building, before `sides` selects among the outline's.
+std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
   static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   std::vector<WallShape> out;
   const MoatWalls3DConfig& w = b.walls;
@@ -116,7 +117,25 @@ std::vector<WallShape> wall_shapes(const Building3DConfig& b) {
   return out;
 }
 
+std::vector<WallShape> wall_shapes(const Building3DConfig& b) {
+  std::vector<WallShape> out = all_wall_shapes(b);
+  const std::vector<std::string>& sides = b.walls.outline_sides;
+  if (!b.walls.follow_outline || sides.empty()) return out;
+  std::erase_if(out, [&](const WallShape& s) {
+    return std::find(sides.begin(), sides.end(), s.face) == sides.end();
+  });
+  return out;
+}
+
 }  // namespace
+
+std::vector<std::string> moat_faces(const Building3DConfig& building) {
+  Building3DConfig b = building;
+  b.walls.follow_outline = true;
+  std::vector<std::string> faces;
+  for (const WallShape& s : all_wall_shapes(b)) faces.push_back(s.face);
+  return faces;
+}
 
 int find_dof(const Model& model, const std::string& label) {
   if (label.empty()) return -1;

@@ -41,6 +41,11 @@ struct SiteBody {
 // Every slab (base slabs and floors, bottom to top per structure) and every moat wall.
 std::vector<SiteBody> site_bodies(const ModelConfig& config);
 
+// The faces of a building's outline walls (walls: {follow: outline}), every run's whether or not
+// `sides` selects it, in the order they are listed: "east", "west", "north", "south", then the
+// others along the outline ("north-east", a second east face "east 2", ...).
+std::vector<std::string> moat_faces(const Building3DConfig& building);
+
 // A box wall's outline in the building frame (before the building's placement), around the plan
 // of the level it faces.
 std::vector<Vec2> moat_wall_outline(const Building3DConfig& building, int side);
