@@ -170,7 +170,7 @@ Site3D site_geometry(const ModelConfig& config) {
     site.bodies.push_back(std::move(w));
     const Building3DConfig& building = config.structures3d.at(static_cast<std::size_t>(b.building));
     const Bumper3DConfig& bumper = building.walls.bumper;
-    if (bumper.on[b.wall_side] && bumper.thickness > 0)
+    if (b.wall_side >= 0 && bumper.on[b.wall_side] && bumper.thickness > 0)
       add_strips(site, wall_body, b.label(), building, bumper,
                  bumper_strips(moat_wall_outline(building, b.wall_side), b.wall_side, bumper));
   }

@@ -602,7 +602,7 @@ const std::set<std::string>& not_numbers() {
       "grid", "plan", "adjacent", "materials", "pulse", "L", "T",
       // names, files, choices and switches
       "name", "label", "record", "model", "law", "type", "material", "xi_formula", "format", "unit",
-      "stepping", "max_step_rule", "side", "sides", "bottoming", "friction_hysteresis",
+      "stepping", "max_step_rule", "side", "sides", "follow", "bottoming", "friction_hysteresis",
       "bearing_stiffness", "column_coupling", "polar_moment_rule", "indentation", "overlap",
       "impact_count", "isolated", "p_delta", "friction", "keep_tension", "shear_check",
       "strength_is_yield_force", "locate_events", "histories", "floor_spectra",

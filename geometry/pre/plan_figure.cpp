@@ -323,10 +323,16 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
       f.lines.push_back({{{e.x - 6 * dy, e.y + 6 * dx}, {e.x + 6 * dy, e.y - 6 * dx}}, dim, 1.5});
     // The value on A's side of the gap (inside the slab: readable, clear of walls), written
     // along the slab's edge: vertical for a gap to the east or west, so that the values of two
-    // gaps across a narrow slab do not meet.
+    // gaps across a narrow slab do not meet; slanted along a slanted edge (a chamfer's wall).
     std::string label = length_text(c->measured);
     if (c->declared >= 0) label += " (declared " + length_text(c->declared) + ")";
-    if (std::abs(dx) >= std::abs(dy)) {
+    if (std::min(std::abs(dx), std::abs(dy)) > 0.2) {
+      double along = std::atan2(dy, dx) * 180.0 / std::numbers::pi + 90.0;  // the edge, degrees
+      while (along > 90.0) along -= 180.0;                                  // read left to right
+      while (along <= -90.0) along += 180.0;
+      const Point2 at{a.x - 22 * dx, a.y - 22 * dy};
+      f.texts.push_back({at, label, 12, dim, post::HAlign::kCentre, post::VAlign::kCentre, along});
+    } else if (std::abs(dx) >= std::abs(dy)) {
       const Point2 at{a.x - 14 * dx, a.y};
       f.texts.push_back({at, label, 12, dim, post::HAlign::kCentre,
                          dx > 0 ? post::VAlign::kBottom : post::VAlign::kTop, 90.0});

@@ -2,6 +2,7 @@
 // storeys (short form or list), base slab, bearings, damping; record pairs at an angle.
 #include "solver/io/model_input3d.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -16,6 +17,7 @@
 #include "solver/io/model_input.h"
 #include "solver/io/struck_columns_input.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/pounding3d.h"
 #include "solver/structures/rayleigh_modes.h"
 
 namespace isopound {
@@ -248,13 +250,51 @@ void read_damping3d(const InputNode& node, bool isolated, Damping3DConfig& d) {
   }
 }
 
-// walls: {sides: all | [east, ...], gap: 20 cm | {east: .., west: ..}, thickness, height,
-// extension, mass_per_length, bumper}
+// walls: {follow: box | outline, sides: all | [east, ...], gap: 20 cm | {east: .., west: ..},
+// thickness, height, extension, mass_per_length, bumper}
 MoatWalls3DConfig read_walls3d(const InputNode& node) {
   using W = MoatWalls3DConfig;
-  node.expect_keys({"sides", "gap", "thickness", "height", "extension", "mass_per_length", "model",
-                    "E", "nu", "damping", "bumper", "level"});
+  node.expect_keys({"follow", "sides", "gap", "thickness", "height", "extension", "mass_per_length",
+                    "model", "E", "nu", "damping", "bumper", "level"});
   W w;
+  node.read_choice<bool>("follow", {{"box", false}, {"outline", true}}, w.follow_outline);
+  if (w.follow_outline) {
+    // One wall per straight run of the slab's outline (geometry/moat.h), each at the one gap.
+    const auto refuse = [&](const char* key, const char* why) {
+      if (node.find(key)) node.fail_at_key(key, std::string("with follow: outline ") + why);
+    };
+    // sides: all, or the faces of a partial moat (checked against the outline with the plan,
+    // check_outline_sides).
+    if (const auto sides = node.find("sides")) {
+      if (sides->is_sequence()) {
+        if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, north-east]");
+        for (const InputNode& side : sides->elements()) {
+          const std::string face = side.string();
+          if (std::find(w.outline_sides.begin(), w.outline_sides.end(), face) !=
+              w.outline_sides.end())
+            side.fail("side listed twice");
+          w.outline_sides.push_back(face);
+        }
+      } else {
+        sides->choice<int>({{"all", 0}});
+      }
+    } else {
+      node.note_default("sides", "all");
+    }
+    refuse("bumper", "the walls have no bumpers (bumpers line box walls: follow: box)");
+    if (const auto model = node.find("model"); model && model->string() != "rigid")
+      model->fail("with follow: outline the walls are rigid (flexible walls: follow: box)");
+    const InputNode gap = node.required("gap");
+    if (gap.is_map()) gap.fail("one gap for every wall of the outline (a length, e.g. 20 cm)");
+    const double g = gap.quantity(dim::kLength, Bound::kNonNegative);
+    w.gap = {g, g, g, g};
+    w.present = {true, true, true, true};
+    node.read_quantity("thickness", dim::kLength, Bound::kPositive, w.thickness);
+    node.read_quantity("height", dim::kLength, Bound::kPositive, w.height);
+    node.read_quantity("extension", dim::kLength, Bound::kNonNegative, w.extension);
+    node.read_quantity("mass_per_length", Dimension{-1, 1, 0}, Bound::kPositive, w.mass_per_length);
+    return w;
+  }
   if (const auto sides = node.find("sides")) {
     if (sides->is_sequence()) {
       if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, west]");
@@ -298,6 +338,19 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   }
   if (const auto bumper = node.find("bumper")) w.bumper = read_bumper3d(*bumper, w, read_side);
   return w;
+}
+
+// follow: outline with sides: [...]: each a face of the outline's walls (moat_faces).
+void check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
+  if (!b.walls.follow_outline || b.walls.outline_sides.empty()) return;
+  const std::vector<std::string> faces = moat_faces(b);
+  const auto sides = walls.find("sides");
+  for (const InputNode& side : sides->elements()) {
+    if (std::find(faces.begin(), faces.end(), side.string()) != faces.end()) continue;
+    std::string all;
+    for (const std::string& f : faces) all += (all.empty() ? "" : ", ") + f;
+    side.fail("no wall of the outline faces '" + side.string() + "': its walls face " + all);
+  }
 }
 
 Building3DConfig read_building3d(const InputNode& node) {
@@ -503,6 +556,7 @@ Building3DConfig read_building3d(const InputNode& node) {
                 std::to_string(b.isolation_level) + ")");
       b.walls_level = level;
     }
+    check_outline_sides(*w, b);
   }
   if (!b.isolated && b.damping.type == Damping3DConfig::Type::kNonClassical) {
     // Fixed base: the superstructure Rayleigh alone.

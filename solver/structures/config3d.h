@@ -117,6 +117,14 @@ struct Bumper3DConfig {
 struct MoatWalls3DConfig {
   enum Side { kEast, kWest, kNorth, kSouth };  // +x, -x, +y, -y of the building frame
   static constexpr std::array<const char*, 4> kSideNames = {"east", "west", "north", "south"};
+  // `follow: box` (default): one straight wall per side of the slab's bounding box in the
+  // building frame (sides, gap per side). `follow: outline`: one wall per straight run of the
+  // slab's outline at `gap` (geometry/moat.h: convex corners extended, re-entrant ones mitred);
+  // a rectangular slab's are the four box walls. Rigid only, no bumper (yet).
+  bool follow_outline = false;
+  // follow: outline: the faces `sides` lists ("east", "north-east", "east 2": pounding3d.h,
+  // moat_faces), a partial moat; empty: a wall on every run.
+  std::vector<std::string> outline_sides;
   std::array<bool, 4> present{};                  // no side: no walls
   std::array<double, 4> gap{0.2, 0.2, 0.2, 0.2};  // m, clear distance at rest
   double thickness = 1.0;                         // m

@@ -3,10 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <map>
+#include <numbers>
 #include <stdexcept>
 
+#include "geometry/moat.h"
 #include "geometry/overlap.h"
+#include "geometry/simple_polygon.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/bumper_layer3d.h"
@@ -26,15 +31,111 @@ std::vector<Vec2> placed(const Building3DConfig& b, const std::vector<Vec2>& pla
   return w;
 }
 
-// Outward normal of a wall side in plan: the building frame's axis turned by its rotation.
+// A direction of the building frame in plan: turned by the building's rotation.
+Vec2 direction_W(const Building3DConfig& b, Vec2 d_B) {
+  const double c = std::cos(b.rotation), s = std::sin(b.rotation);
+  return {c * d_B.x - s * d_B.y, s * d_B.x + c * d_B.y};
+}
+
+// Outward normal of a box wall side in plan: the building frame's axis turned by its rotation.
 Vec2 wall_normal_W(const Building3DConfig& b, int side) {
   static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  const Vec2 a = kAxis[side];
-  const double c = std::cos(b.rotation), s = std::sin(b.rotation);
-  return {c * a.x - s * a.y, s * a.x + c * a.y};
+  return direction_W(b, kAxis[side]);
+}
+
+// The face a wall with outward normal n_B (building frame) faces, by the nearest of eight compass
+// points (east = +x, north = +y).
+std::string compass_face(Vec2 n_B) {
+  static constexpr const char* kNames[8] = {"east", "north-east", "north", "north-west",
+                                            "west", "south-west", "south", "south-east"};
+  const long k = std::lround(std::atan2(n_B.y, n_B.x) / (std::numbers::pi / 4));
+  return kNames[(k % 8 + 8) % 8];
+}
+
+// One moat wall of a building before its placement (building frame).
+struct WallShape {
+  std::vector<Vec2> outline_B;
+  Vec2 n_B;             // unit normal from the slab's face into the wall
+  double gap = 0.0;     // m, declared
+  double length = 0.0;  // m, along the face (its mass is mass_per_length x length)
+  std::string face;     // "east", ...; a second face of the same name "east 2", ...
+  int side = -1;        // MoatWalls3DConfig::Side of a box wall, else -1
+};
+
+// Every wall of the building, before `sides` selects among the outline's.
+std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
+  static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  std::vector<WallShape> out;
+  const MoatWalls3DConfig& w = b.walls;
+  if (!w.follow_outline) {
+    for (int side = 0; side < 4; ++side) {
+      if (!w.present[side]) continue;
+      std::vector<Vec2> outline = moat_wall_outline(b, side);
+      const double length = side <= MoatWalls3DConfig::kWest ? outline[2].y - outline[0].y
+                                                             : outline[1].x - outline[0].x;
+      out.push_back({std::move(outline), kAxis[side], w.gap[side], length,
+                     MoatWalls3DConfig::kSideNames[side], side});
+    }
+    return out;
+  }
+  const std::vector<Level3D> levels = levels3d(b);
+  const std::vector<Vec2>& plan =
+      levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan;
+  const SimplePolygon slab{std::span<const Vec2>(plan)};
+  std::map<std::string, int> faces;  // how many walls face each compass point so far
+  for (const MoatWall& m : following_moat(slab, w.gap[0], w.thickness, w.extension)) {
+    const Vec2 run = m.p_WE - m.p_WS;
+    const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run, n{d.y, -d.x};
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Vec2& p : m.outline.vertices()) {
+      lo = std::min(lo, dot(p, d));
+      hi = std::max(hi, dot(p, d));
+    }
+    std::string face = compass_face(n);
+    if (const int k = ++faces[face]; k > 1) {
+      char numbered[32];  // "east 2" (snprintf: GCC 12 misreads a string += as overlapping)
+      std::snprintf(numbered, sizeof numbered, "%s %d", face.c_str(), k);
+      face = numbered;
+    }
+    // From the vertex of least y (then x), as a box wall's outline starts.
+    const std::span<const Vec2> v = m.outline.vertices();
+    const auto first = std::min_element(
+        v.begin(), v.end(), [](Vec2 p, Vec2 q) { return p.y < q.y || (p.y == q.y && p.x < q.x); });
+    std::vector<Vec2> outline(first, v.end());
+    outline.insert(outline.end(), v.begin(), first);
+    out.push_back({std::move(outline), n, w.gap[0], hi - lo, face, -1});
+  }
+  // In the order of box walls (east, west, north, south), then the other faces along the
+  // outline: a rectangle's following moat is its box walls, element for element.
+  const auto rank = [](const WallShape& s) {
+    for (int side = 0; side < 4; ++side)
+      if (s.face == MoatWalls3DConfig::kSideNames[side]) return side;
+    return 4;
+  };
+  std::stable_sort(out.begin(), out.end(),
+                   [&](const WallShape& p, const WallShape& q) { return rank(p) < rank(q); });
+  return out;
+}
+
+std::vector<WallShape> wall_shapes(const Building3DConfig& b) {
+  std::vector<WallShape> out = all_wall_shapes(b);
+  const std::vector<std::string>& sides = b.walls.outline_sides;
+  if (!b.walls.follow_outline || sides.empty()) return out;
+  std::erase_if(out, [&](const WallShape& s) {
+    return std::find(sides.begin(), sides.end(), s.face) == sides.end();
+  });
+  return out;
 }
 
 }  // namespace
+
+std::vector<std::string> moat_faces(const Building3DConfig& building) {
+  Building3DConfig b = building;
+  b.walls.follow_outline = true;
+  std::vector<std::string> faces;
+  for (const WallShape& s : all_wall_shapes(b)) faces.push_back(s.face);
+  return faces;
+}
 
 int find_dof(const Model& model, const std::string& label) {
   if (label.empty()) return -1;
@@ -116,31 +217,33 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
                              .dof_label_theta = prefix + " (theta)",
                              .mass = d.mass,
                              .building = static_cast<int>(i),
-                             .wall_side = -1});
+                             .wall_side = -1,
+                             .wall_normal_W = {},
+                             .wall_gap = 0.0,
+                             .wall_face = ""});
     };
     const std::vector<Level3D> levels = levels3d(b);
     for (const Level3D& level : levels) add_slab(level.name, level.elevation, *level.diaphragm);
     if (!b.isolated) continue;
     // The walls stand at the level they face (the base slab unless walls.level says otherwise).
     const double wall_elevation = levels.at(static_cast<std::size_t>(walls_level3d(b))).elevation;
-    for (int side = 0; side < 4; ++side) {
-      if (!b.walls.present[side]) continue;
-      const std::vector<Vec2> outline = moat_wall_outline(b, side);
-      const double length = side <= MoatWalls3DConfig::kWest ? outline[2].y - outline[0].y
-                                                             : outline[1].x - outline[0].x;
-      SiteBody w{.structure = std::string("wall ") + MoatWalls3DConfig::kSideNames[side],
+    for (WallShape& shape : wall_shapes(b)) {
+      SiteBody w{.structure = "wall " + shape.face,
                  .level = "wall",
                  .role = "wall",
                  .elevation = wall_elevation,
                  .height = b.walls.height,
-                 .plan_W = polygon_of(placed(b, outline)),
+                 .plan_W = polygon_of(placed(b, shape.outline_B)),
                  .p_WO = {0.0, 0.0},
                  .dof_label_u = "",
                  .dof_label_v = "",
                  .dof_label_theta = "",
-                 .mass = b.walls.mass_per_length * length,
+                 .mass = b.walls.mass_per_length * shape.length,
                  .building = static_cast<int>(i),
-                 .wall_side = side};
+                 .wall_side = shape.side,
+                 .wall_normal_W = direction_W(b, shape.n_B),
+                 .wall_gap = shape.gap,
+                 .wall_face = shape.face};
       // Named by side alone unless several buildings have walls.
       int walled = 0;
       for (const Building3DConfig& other : config.structures3d) walled += other.walls.any() ? 1 : 0;
@@ -198,6 +301,8 @@ std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
 void add_flexible_walls(Model& model, const ModelConfig& config) {
   for (const SiteBody& w : site_bodies(config)) {
     if (w.role != "wall" || w.dof_label_u.empty()) continue;
+    if (w.wall_side < 0)
+      throw std::logic_error("3D pounding: a flexible wall that is not a box wall");
     const Building3DConfig& b = config.structures3d[w.building];
     const MoatWalls3DConfig& c = b.walls;
     const std::vector<Vec2> outline = moat_wall_outline(b, w.wall_side);
@@ -279,7 +384,7 @@ void add_wall_bumper(Model& model, const ModelConfig& config, const SiteBody& sl
   if (wall.role != "wall") return;
   const Building3DConfig& b = config.structures3d[wall.building];
   const Bumper3DConfig& bumper = b.walls.bumper;
-  if (!bumper.on[wall.wall_side] || !(bumper.thickness > 0)) return;
+  if (wall.wall_side < 0 || !bumper.on[wall.wall_side] || !(bumper.thickness > 0)) return;
   const BumperStrips strips =
       bumper_strips(moat_wall_outline(b, wall.wall_side), wall.wall_side, bumper);
   add_strip_contacts(model, config, slab, wall, wall.label(), placed(b, strips.rubber),
@@ -351,13 +456,12 @@ std::vector<WallClosing> wall_closings(const ModelConfig& config) {
     const SiteBody& slab = bodies[pair.a];
     const SiteBody& wall = bodies[pair.b];
     if (wall.role != "wall") continue;
-    const Building3DConfig& b = config.structures3d[wall.building];
-    const Vec2 n = wall_normal_W(b, wall.wall_side);
+    const Vec2 n = wall.wall_normal_W;
     double face = -std::numeric_limits<double>::infinity();
     for (const Vec2& p : slab.plan_W.vertices()) face = std::max(face, dot(n, p));
     WallClosing w;
     w.label = pair.label;
-    w.gap = b.walls.gap[wall.wall_side];
+    w.gap = wall.wall_gap;
     w.dof_labels = {slab.dof_label_u, slab.dof_label_v, slab.dof_label_theta};
     for (const Vec2& p : slab.plan_W.vertices()) {
       w.offset.push_back(dot(n, p) - face);

@@ -29,15 +29,25 @@ struct SiteBody {
   std::string dof_label_u, dof_label_v, dof_label_theta;
   double mass = 0.0;   // kg: the floor's mass, or the wall's (enters m_eff only)
   int building = -1;   // index into ModelConfig::structures3d (a wall: the one it surrounds)
-  int wall_side = -1;  // MoatWalls3DConfig::Side of a wall, else -1
+  int wall_side = -1;  // MoatWalls3DConfig::Side of a box wall, else -1 (an outline wall too)
+  // A wall: the unit normal from the slab's face it faces into the wall (plan frame W), its
+  // declared gap (m) and the face's name ("east", "north-east 2", ...: building frame).
+  Vec2 wall_normal_W;
+  double wall_gap = 0.0;
+  std::string wall_face;
   std::string label() const { return role == "wall" ? structure : structure + "/" + level; }
 };
 
 // Every slab (base slabs and floors, bottom to top per structure) and every moat wall.
 std::vector<SiteBody> site_bodies(const ModelConfig& config);
 
-// A wall's outline in the building frame (before the building's placement), around the plan of
-// the level it faces.
+// The faces of a building's outline walls (walls: {follow: outline}), every run's whether or not
+// `sides` selects it, in the order they are listed: "east", "west", "north", "south", then the
+// others along the outline ("north-east", a second east face "east 2", ...).
+std::vector<std::string> moat_faces(const Building3DConfig& building);
+
+// A box wall's outline in the building frame (before the building's placement), around the plan
+// of the level it faces.
 std::vector<Vec2> moat_wall_outline(const Building3DConfig& building, int side);
 // The level (levels3d.h index) the building's moat walls face: walls.level, else the base slab.
 int walls_level3d(const Building3DConfig& building);

@@ -95,14 +95,14 @@ Site site_plan(const ModelConfig& config) {
     if (body.role != "wall") continue;
     PlanWall w;
     w.name = body.structure;  // "wall east"
-    w.side = MoatWalls3DConfig::kSideNames.at(static_cast<std::size_t>(body.wall_side));
+    w.side = body.wall_face;
     w.height = body.height;
     w.elevation = body.elevation;
     w.building = body.building;
     for (Vec2 p : body.plan_W.vertices()) w.plan_W.push_back(p);
     const Building3DConfig& b = config.structures3d.at(static_cast<std::size_t>(w.building));
     w.structure = b.name;
-    w.declared_gap = b.walls.gap.at(static_cast<std::size_t>(body.wall_side));
+    w.declared_gap = body.wall_gap;
     site.walls.push_back(w);
   }
   return site;
