@@ -18,6 +18,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "solver/core/sized_dispatch.h"
+
 namespace isopound {
 
 class CompressedRows {
@@ -101,26 +103,15 @@ class CompressedRows {
 
   template <class Store>
   void each_row(const Eigen::VectorXd& x, Store&& store) const {
-    switch (dense_size_) {
-      case 1:
-        return dense_rows<1>(x.data(), store);
-      case 2:
-        return dense_rows<2>(x.data(), store);
-      case 3:
-        return dense_rows<3>(x.data(), store);
-      case 4:
-        return dense_rows<4>(x.data(), store);
-      case 5:
-        return dense_rows<5>(x.data(), store);
-      case 6:
-        return dense_rows<6>(x.data(), store);
-      case 7:
-        return dense_rows<7>(x.data(), store);
-      case 8:
-        return dense_rows<8>(x.data(), store);
-      default:
-        break;
-    }
+    const bool sized = dispatch_size(dense_size_, [&]<int kN>() {
+      if constexpr (kN == 0)
+        return false;
+      else {
+        dense_rows<kN>(x.data(), store);
+        return true;
+      }
+    });
+    if (sized) return;
     int k = 0;
     for (Eigen::Index i = 0; i < rows_; ++i) {
       double sum = 0.0;

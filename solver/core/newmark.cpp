@@ -10,6 +10,7 @@
 #include <string>
 
 #include "solver/core/constants.h"
+#include "solver/core/sized_dispatch.h"
 #include "solver/core/small_llt.h"
 #include "solver/core/small_lu.h"
 
@@ -299,24 +300,9 @@ bool NewmarkStepper::solve_llt() {
 StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cache, bool freeze) {
   // A small model's DOF count as a template argument: the loops unroll, without the vectoriser's
   // alias and remainder tests, which cost more than four or six elements. The same operations.
-  switch (u0_.size()) {
-    case 2:
-      return try_step_sized<2>(h, ag1, cache, freeze);
-    case 3:
-      return try_step_sized<3>(h, ag1, cache, freeze);
-    case 4:
-      return try_step_sized<4>(h, ag1, cache, freeze);
-    case 5:
-      return try_step_sized<5>(h, ag1, cache, freeze);
-    case 6:
-      return try_step_sized<6>(h, ag1, cache, freeze);
-    case 7:
-      return try_step_sized<7>(h, ag1, cache, freeze);
-    case 8:
-      return try_step_sized<8>(h, ag1, cache, freeze);
-    default:
-      return try_step_sized<0>(h, ag1, cache, freeze);
-  }
+  return dispatch_size(u0_.size(), [&]<int kN>() {
+    return try_step_sized < kN == 1 ? 0 : kN > (h, ag1, cache, freeze);
+  });
 }
 
 template <int kSize>
@@ -395,24 +381,9 @@ StepOutcome NewmarkStepper::try_step_sized(double h, GroundAcceleration ag1, boo
 }
 
 double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
-  switch (u0_.size()) {  // as try_step
-    case 2:
-      return error_norm_sized<2>(force_scale);
-    case 3:
-      return error_norm_sized<3>(force_scale);
-    case 4:
-      return error_norm_sized<4>(force_scale);
-    case 5:
-      return error_norm_sized<5>(force_scale);
-    case 6:
-      return error_norm_sized<6>(force_scale);
-    case 7:
-      return error_norm_sized<7>(force_scale);
-    case 8:
-      return error_norm_sized<8>(force_scale);
-    default:
-      return error_norm_sized<0>(force_scale);
-  }
+  return dispatch_size(u0_.size(), [&]<int kN>() {  // as try_step
+    return error_norm_sized < kN == 1 ? 0 : kN > (force_scale);
+  });
 }
 
 template <int kSize>

@@ -8,6 +8,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "solver/core/sized_dispatch.h"
+
 namespace isopound {
 
 struct SmallLlt {
@@ -86,26 +88,13 @@ struct SmallLlt {
 
   template <typename Op, typename Matrix>
   static bool dispatch(Eigen::Index n, Matrix* a, double* b) {
-    switch (n) {
-      case 1:
-        return Op::template run<1>(a, b);
-      case 2:
-        return Op::template run<2>(a, b);
-      case 3:
-        return Op::template run<3>(a, b);
-      case 4:
-        return Op::template run<4>(a, b);
-      case 5:
-        return Op::template run<5>(a, b);
-      case 6:
-        return Op::template run<6>(a, b);
-      case 7:
-        return Op::template run<7>(a, b);
-      case 8:
-        return Op::template run<8>(a, b);
-      default:
-        return true;  // n = 0: nothing to do (callers keep Eigen beyond kMaxSize)
-    }
+    // n = 0: nothing to do (callers keep Eigen beyond kMaxSize)
+    return dispatch_size(n, [&]<int kN>() {
+      if constexpr (kN == 0)
+        return true;
+      else
+        return Op::template run<kN>(a, b);
+    });
   }
 
   // sum_m p[m] q[m] in the order of Eigen's redux (LinearVectorizedTraversal, packets of 2, two
