@@ -138,10 +138,10 @@ TEST(FollowingMoat3D, ChamferedSlabGetsAWallAlongEveryRunAtTheGap) {
     EXPECT_NEAR(s.n_AB.x, w.wall_normal_W.x, 1e-12) << w.label();
     EXPECT_NEAR(s.n_AB.y, w.wall_normal_W.y, 1e-12) << w.label();
     EXPECT_EQ(w.wall_gap, 0.20);
-    // 5 t/m (the default) times the wall's length along its run: the run (15.5 m, or 2.5 m x √2
-    // for a chamfer) plus 1 m beyond each convex corner and the offset's widening (2 (g + t)
-    // tan(22.5°) for the 45° corners of an octagon would be a mitre; here the ends are extended).
-    EXPECT_GT(w.mass, 5000.0 * 2.0) << w.label();
+    // 5 t/m (the default) times the wall's length along its run: the run (15.5 m, a chamfer
+    // 2.5 m x sqrt 2) and the 1 m extension beyond each of its two convex corners.
+    const double run = w.wall_face.find('-') == std::string::npos ? 15.5 : 2.5 * std::sqrt(2.0);
+    EXPECT_NEAR(w.mass, 5000.0 * (run + 2 * 1.0), 1e-6) << w.label();
   }
   EXPECT_EQ(faces, (std::vector<std::string>{"east", "west", "north", "south", "north-east",
                                              "north-west", "south-west", "south-east"}));
@@ -149,7 +149,7 @@ TEST(FollowingMoat3D, ChamferedSlabGetsAWallAlongEveryRunAtTheGap) {
 }
 
 // The pulse at 45° drives the slab into its north-east chamfer: that wall is struck (with box
-// walls the chamfer's corner would be 1.97 m from the walls, far beyond this pulse's reach), every
+// walls no wall faces the chamfer: the box's corner is 2.05 m beyond it), every
 // episode of every wall does net work <= 0 on the building, and the energy balance closes as the
 // step tolerance tightens.
 TEST(FollowingMoat3D, DiagonalPulseStrikesTheChamferWallPassively) {
