@@ -301,7 +301,8 @@ StepOutcome NewmarkStepper::try_step(double h, GroundAcceleration ag1, bool cach
   // A small model's DOF count as a template argument: the loops unroll, without the vectoriser's
   // alias and remainder tests, which cost more than four or six elements. The same operations.
   return dispatch_size(u0_.size(), [&]<int kN>() {
-    return try_step_sized < kN == 1 ? 0 : kN > (h, ag1, cache, freeze);
+    constexpr int kSize = kN == 1 ? 0 : kN;  // one DOF: the run-time path, as before
+    return try_step_sized<kSize>(h, ag1, cache, freeze);
   });
 }
 
@@ -381,8 +382,9 @@ StepOutcome NewmarkStepper::try_step_sized(double h, GroundAcceleration ag1, boo
 }
 
 double NewmarkStepper::error_norm(const Eigen::VectorXd& force_scale) {
-  return dispatch_size(u0_.size(), [&]<int kN>() {  // as try_step
-    return error_norm_sized < kN == 1 ? 0 : kN > (force_scale);
+  return dispatch_size(u0_.size(), [&]<int kN>() {
+    constexpr int kSize = kN == 1 ? 0 : kN;  // as try_step
+    return error_norm_sized<kSize>(force_scale);
   });
 }
 

@@ -259,10 +259,8 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   W w;
   node.read_choice<bool>("follow", {{"box", false}, {"outline", true}}, w.follow_outline);
   if (w.follow_outline) {
-    // One wall per straight run of the slab's outline (geometry/moat.h), each at the one gap.
-    const auto refuse = [&](const char* key, const char* why) {
-      if (node.find(key)) node.fail_at_key(key, std::string("with follow: outline ") + why);
-    };
+    // One wall per straight run of the slab's outline (geometry/moat.h), each at the one gap,
+    // rigid and bare: the keys below that would make it otherwise are box walls' options.
     // sides: all, or the faces of a partial moat (checked against the outline with the plan,
     // check_outline_sides).
     if (const auto sides = node.find("sides")) {
@@ -281,7 +279,10 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
     } else {
       node.note_default("sides", "all");
     }
-    refuse("bumper", "the walls have no bumpers (bumpers line box walls: follow: box)");
+    if (node.find("bumper"))
+      node.fail_at_key("bumper",
+                       "with follow: outline the walls have no bumpers (bumpers line "
+                       "box walls: follow: box)");
     if (const auto model = node.find("model"); model && model->string() != "rigid")
       model->fail("with follow: outline the walls are rigid (flexible walls: follow: box)");
     const InputNode gap = node.required("gap");
@@ -289,41 +290,38 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
     const double g = gap.quantity(dim::kLength, Bound::kNonNegative);
     w.gap = {g, g, g, g};
     w.present = {true, true, true, true};
-    node.read_quantity("thickness", dim::kLength, Bound::kPositive, w.thickness);
-    node.read_quantity("height", dim::kLength, Bound::kPositive, w.height);
-    node.read_quantity("extension", dim::kLength, Bound::kNonNegative, w.extension);
-    node.read_quantity("mass_per_length", Dimension{-1, 1, 0}, Bound::kPositive, w.mass_per_length);
-    return w;
-  }
-  if (const auto sides = node.find("sides")) {
-    if (sides->is_sequence()) {
-      if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, west]");
-      for (const InputNode& s : sides->elements()) {
-        const int k = read_side(s);
-        if (w.present[k]) s.fail("side listed twice");
-        w.present[k] = true;
+  } else {
+    if (const auto sides = node.find("sides")) {
+      if (sides->is_sequence()) {
+        if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, west]");
+        for (const InputNode& s : sides->elements()) {
+          const int k = read_side(s);
+          if (w.present[k]) s.fail("side listed twice");
+          w.present[k] = true;
+        }
+      } else {
+        sides->choice<int>({{"all", 0}});
+        w.present = {true, true, true, true};
       }
     } else {
-      sides->choice<int>({{"all", 0}});
+      node.note_default("sides", "all");
       w.present = {true, true, true, true};
     }
-  } else {
-    node.note_default("sides", "all");
-    w.present = {true, true, true, true};
-  }
-  const InputNode gap = node.required("gap");
-  if (gap.is_map()) {
-    gap.expect_keys({"east", "west", "north", "south"});
-    for (int k = 0; k < 4; ++k) {
-      const auto g = gap.find(W::kSideNames[k]);
-      if (w.present[k] && !g) gap.fail(std::string("no gap for the ") + W::kSideNames[k] + " wall");
-      if (g && !w.present[k])
-        g->fail(std::string("there is no ") + W::kSideNames[k] + " wall (see sides)");
-      if (g) w.gap[k] = g->quantity(dim::kLength, Bound::kNonNegative);
+    const InputNode gap = node.required("gap");
+    if (gap.is_map()) {
+      gap.expect_keys({"east", "west", "north", "south"});
+      for (int k = 0; k < 4; ++k) {
+        const auto g = gap.find(W::kSideNames[k]);
+        if (w.present[k] && !g)
+          gap.fail(std::string("no gap for the ") + W::kSideNames[k] + " wall");
+        if (g && !w.present[k])
+          g->fail(std::string("there is no ") + W::kSideNames[k] + " wall (see sides)");
+        if (g) w.gap[k] = g->quantity(dim::kLength, Bound::kNonNegative);
+      }
+    } else {
+      const double g = gap.quantity(dim::kLength, Bound::kNonNegative);
+      w.gap = {g, g, g, g};
     }
-  } else {
-    const double g = gap.quantity(dim::kLength, Bound::kNonNegative);
-    w.gap = {g, g, g, g};
   }
   node.read_quantity("thickness", dim::kLength, Bound::kPositive, w.thickness);
   node.read_quantity("height", dim::kLength, Bound::kPositive, w.height);

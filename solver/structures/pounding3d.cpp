@@ -37,12 +37,6 @@ Vec2 direction_W(const Building3DConfig& b, Vec2 d_B) {
   return {c * d_B.x - s * d_B.y, s * d_B.x + c * d_B.y};
 }
 
-// Outward normal of a box wall side in plan: the building frame's axis turned by its rotation.
-Vec2 wall_normal_W(const Building3DConfig& b, int side) {
-  static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  return direction_W(b, kAxis[side]);
-}
-
 // The face a wall with outward normal n_B (building frame) faces, by the nearest of eight compass
 // points (east = +x, north = +y).
 std::string compass_face(Vec2 n_B) {
@@ -64,7 +58,7 @@ struct WallShape {
 
 // Every wall of the building, before `sides` selects among the outline's.
 std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
-  static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};  // box sides' normals
   std::vector<WallShape> out;
   const MoatWalls3DConfig& w = b.walls;
   if (!w.follow_outline) {
@@ -317,7 +311,7 @@ void add_flexible_walls(Model& model, const ModelConfig& config) {
         1.0 / (h * h * h / (3.0 * E * t * L * L * L / 12.0) + h / (5.0 / 6.0 * G * t * L));
     const double k_theta = k_n * L * L / 12.0 + G * (L * t * t * t / 3.0) / h;
     // Normal and tangent of the wall in plan (their signs do not enter n nᵀ and t tᵀ).
-    const Vec2 n = wall_normal_W(b, w.wall_side), tan{-n.y, n.x};
+    const Vec2 n = w.wall_normal_W, tan{-n.y, n.x};
     const AreaProperties area = area_properties(w.plan_W);
     const Vec2 p = area.p_WC;
     Eigen::Matrix3d T = Eigen::Matrix3d::Identity();  // a point p moves by T q (DOFs at origin)
