@@ -235,6 +235,7 @@ void plan_overlap(const SimplePolygon& a, const SimplePolygon& b, PlanOverlap& o
     o = overlap_of(a.pieces()[0], b.pieces()[0], method);
     out.touching = o.kind == OverlapCase::kTouching;
     out.count = o.area > 0.0 ? 1 : 0;
+    out.piece_pairs[0] = 1;
     return;
   }
   thread_local Workspace w;
@@ -271,6 +272,11 @@ void plan_overlap(const SimplePolygon& a, const SimplePolygon& b, PlanOverlap& o
       ++out.dropped;
       continue;
     }
+    std::uint64_t pairs = 0;
+    for (int m = 0; m < n; ++m)
+      if (root_of(w.pieces, m) == k)
+        pairs |= piece_pair_bit(w.pieces[m].a_piece, w.pieces[m].b_piece, int(pb.size()));
+    out.piece_pairs[out.count] = pairs;
     finish_component(a, b, w, k, tolerance, out.components[out.count++]);
   }
   if (out.count > 0) out.touching = false;
@@ -283,10 +289,16 @@ PlanOverlap plan_overlap(const SimplePolygon& a, const SimplePolygon& b, Overlap
 }
 
 Separation plan_separation(const SimplePolygon& a, const SimplePolygon& b) {
+  return plan_separation(a, b, 0);
+}
+
+Separation plan_separation(const SimplePolygon& a, const SimplePolygon& b, std::uint64_t excluded) {
   Separation best{std::numeric_limits<double>::infinity(), {}};
-  for (const ConvexPolygon& p : a.pieces())
-    for (const ConvexPolygon& q : b.pieces()) {
-      const Separation s = separation_of(p, q);
+  const int nb = int(b.pieces().size());
+  for (int i = 0; i < int(a.pieces().size()); ++i)
+    for (int j = 0; j < nb; ++j) {
+      if (excluded & piece_pair_bit(i, j, nb)) continue;
+      const Separation s = separation_of(a.pieces()[i], b.pieces()[j]);
       if (s.distance < best.distance) best = s;
     }
   return best;

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "geometry/overlap.h"
@@ -29,6 +30,10 @@ struct PlanOverlap {
   // their first piece pair (A's pieces, then B's), which is stable while they persist.
   int count = 0;
   std::array<Overlap, kMaxOverlapComponents> components;
+  // Which piece pairs (i of A, j of B) each component is made of: bit (i · B's pieces + j) mod 64
+  // (two convex plans: bit 0). What lets a caller follow a component from one placement to the
+  // next and tell which piece pairs another component already takes.
+  std::array<std::uint64_t, kMaxOverlapComponents> piece_pairs{};
   // Components beyond kMaxOverlapComponents (never seen in a building's plans; counted so that a
   // caller can report them).
   int dropped = 0;
@@ -46,6 +51,13 @@ PlanOverlap plan_overlap(const SimplePolygon& a, const SimplePolygon& b,
 // Signed separation of A and B: the least over piece pairs (the distance of the plans when
 // apart, continuous, ≤ 0 exactly when they touch or overlap).
 Separation plan_separation(const SimplePolygon& a, const SimplePolygon& b);
+// The same, over the piece pairs whose bit (as PlanOverlap::piece_pairs) is not in `excluded`
+// (distance +inf when none is left).
+Separation plan_separation(const SimplePolygon& a, const SimplePolygon& b, std::uint64_t excluded);
+// The bit of piece pair (i of A, j of B) in PlanOverlap::piece_pairs.
+inline std::uint64_t piece_pair_bit(int i, int j, int b_pieces) {
+  return std::uint64_t{1} << ((i * b_pieces + j) % 64);
+}
 
 // The reference: the components of A ∩ B from CGAL's Boolean set operations on the outlines in
 // exact arithmetic (an algorithm independent of the pieces), each with its area (m²) and

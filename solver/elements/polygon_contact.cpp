@@ -97,6 +97,35 @@ PolygonContact::PolygonContact(std::string label, PolygonBody a, PolygonBody b,
   trial_ = committed_;
 }
 
+PolygonContact::PolygonContact(std::string label, PolygonBody a, PolygonBody b,
+                               const PolygonContactConfig& cfg, std::shared_ptr<PlanPair> pair,
+                               int slot)
+    : PolygonContact(std::move(label), std::move(a), std::move(b), cfg) {
+  if (!pair || slot < 0 || slot >= pair->slots())
+    throw std::invalid_argument("polygon contact '" + label_ + "': no such plan-pair slot");
+  plan_pair_ = std::move(pair);
+  slot_ = slot;
+  evaluate(committed_.q, committed_.qdot, true, committed_);
+  compute_witness(committed_);
+  trial_ = committed_;
+  report_committed();
+}
+
+Separation PolygonContact::separation_at(const Vec6& q) const {
+  if (plan_pair_) return plan_pair_->separation(slot_, q);
+  return separation_of(place(a_, q[0], q[1], q[2]), place(b_, q[3], q[4], q[5]));
+}
+
+Overlap PolygonContact::overlap_at(const ConvexPolygon& pa, const Vec6& q, Vec2 shift_B) const {
+  if (plan_pair_) {
+    Vec6 shifted = q;
+    shifted[3] += shift_B.x;
+    shifted[4] += shift_B.y;
+    return plan_pair_->overlap(slot_, shifted);
+  }
+  return overlap_of(pa, placed(b_, q[3] + shift_B.x, q[4] + shift_B.y, q[5]), cfg_.overlap);
+}
+
 ConvexPolygon PolygonContact::place(const PolygonBody& body, double u, double v,
                                     double theta) const {
   // A fixed body (no DOF) stays where it is: no trigonometry.
@@ -155,7 +184,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   };
   // Boxes apart (overlap_of's own first test): no overlap, open unless frozen closed.
   if (out.box_gap > 0.0 && !(freeze && C.closed)) return open();
-  Overlap ov = overlap_of(pa, pb, cfg_.overlap);
+  Overlap ov = plan_pair_ ? plan_pair_->overlap(slot_, q) : overlap_of(pa, pb, cfg_.overlap);
   const bool overlapping = ov.area > 0.0;
   out.closed = freeze ? C.closed : overlapping;
   out.started = !freeze && !C.closed && overlapping;
@@ -173,9 +202,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // (continuous_force: a sliver as deep as the overlap is short of it, so that the shape is
     // continuous where the overlap reaches the sliver's depth too.)
     const double deeper_by = cfg_.continuous_force ? sliver - ov.area / overlap_width : sliver;
-    const ConvexPolygon deeper =
-        placed(b_, q[3] - deeper_by * ov.n_AB.x, q[4] - deeper_by * ov.n_AB.y, q[5]);
-    const Overlap shape = overlap_of(pa, deeper, cfg_.overlap);
+    const Overlap shape = overlap_at(pa, q, -deeper_by * ov.n_AB);
     if (shape.area > 0.0) ov = shape;
   }
   if (!overlapping) {
@@ -183,7 +210,8 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // within round-off of A_c = 0, on either side): take the limit A_c → 0+, whose damping
     // force c_N δ̇_N is the Kelvin–Voigt jump. Its shape (w, n, C) is that of a sliver
     // kSurfaceSliver of the body size deep; its area counts as 0.
-    if (separation_of(pa, pb).distance > 1e-9 * length_scale_) return;  // apart: no force
+    if ((plan_pair_ ? separation_at(q) : separation_of(pa, pb)).distance > 1e-9 * length_scale_)
+      return;  // apart: no force
     ov = surface_overlap(pa, pb, q, sliver);
     if (!(ov.area > 0.0)) return;
     at_surface = true;
@@ -274,7 +302,7 @@ void PolygonContact::compute_witness(State& s) const {
   const auto separation = [&](double tau) {
     Vec6 q;
     for (int k = 0; k < kDofs; ++k) q[k] = s.q[k] + tau * s.qdot[k];
-    return separation_of(place(a_, q[0], q[1], q[2]), place(b_, q[3], q[4], q[5])).distance;
+    return separation_at(q).distance;
   };
   s.witness = -separation(0.0);
   // Rate by a central difference along the motion, the points moving ~1e-7 m.
@@ -292,11 +320,9 @@ void PolygonContact::compute_witness(State& s) const {
 
 Overlap PolygonContact::surface_overlap(const ConvexPolygon& pa, const ConvexPolygon& pb,
                                         const Vec6& q, double sliver) const {
-  const Separation sep = separation_of(pa, pb);
+  const Separation sep = plan_pair_ ? separation_at(q) : separation_of(pa, pb);
   const double shift = std::max(sep.distance, 0.0) + sliver;
-  const ConvexPolygon deeper =
-      placed(b_, q[3] - shift * sep.n_AB.x, q[4] - shift * sep.n_AB.y, q[5]);
-  return overlap_of(pa, deeper, cfg_.overlap);
+  return overlap_at(pa, q, -shift * sep.n_AB);
 }
 
 double PolygonContact::secant_width_of(const Overlap& ov) const {
@@ -331,7 +357,7 @@ double PolygonContact::trial_witness() const {
 
 double PolygonContact::trial_depth() const {
   const Vec6& q = trial_.q;
-  return -separation_of(place(a_, q[0], q[1], q[2]), place(b_, q[3], q[4], q[5])).distance;
+  return -separation_at(q).distance;
 }
 
 void PolygonContact::set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
@@ -460,6 +486,7 @@ void PolygonContact::commit() {
   friction_dissipated_ = trial_.friction_dissipated;
   committed_ = trial_;
   approach_cached_ = false;
+  report_committed();
 }
 
 void PolygonContact::count_impact(double approach_rate) {
@@ -608,6 +635,7 @@ bool PolygonContact::settle_event() {
   friction_dissipated_ = C.friction_dissipated;
   trial_ = C;
   approach_cached_ = false;
+  report_committed();
   return true;
 }
 

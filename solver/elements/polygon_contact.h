@@ -12,6 +12,7 @@
 
 #include "geometry/overlap.h"
 #include "solver/core/element.h"
+#include "solver/elements/plan_pair.h"
 #include "solver/materials/impact_law.h"
 
 namespace isopound {
@@ -99,6 +100,11 @@ struct ContactSnapshot {
 class PolygonContact final : public Element {
  public:
   PolygonContact(std::string label, PolygonBody a, PolygonBody b, const PolygonContactConfig& cfg);
+  // One slot of a pair of plans of any outline (plan_pair.h): the overlap component `slot` of
+  // `pair` is this contact's. a.shape and b.shape are the outlines' convex hulls (the bodies'
+  // size and bounding boxes); the DOFs and p_WO as the pair's.
+  PolygonContact(std::string label, PolygonBody a, PolygonBody b, const PolygonContactConfig& cfg,
+                 std::shared_ptr<PlanPair> pair, int slot);
 
   void begin_step(double h, bool freeze_status) override {
     h_ = h;
@@ -229,6 +235,14 @@ class PolygonContact final : public Element {
   // last placement at the same θ (a trial's evaluations and most of its tangent's share one).
   ConvexPolygon placed(const PolygonBody& body, double u, double v, double theta) const;
   void compute_witness(State& s) const;
+  // The signed separation of the pair at q: of the convex shapes, or of this slot (plan pair).
+  Separation separation_at(const Vec6& q) const;
+  // The overlap at q with B moved by shift_B: of the convex shapes, or this slot's (plan pair).
+  Overlap overlap_at(const ConvexPolygon& pa, const Vec6& q, Vec2 shift_B) const;
+  // Tells the plan pair this slot's committed status (no-op for a convex pair).
+  void report_committed() {
+    if (plan_pair_) plan_pair_->set_committed(slot_, committed_.closed, committed_.q);
+  }
   // The overlap of A and B moved together along their separation direction until B is a sliver
   // `sliver` deep inside A: the shape of a contact at A_c → 0+ (empty if they are far apart).
   Overlap surface_overlap(const ConvexPolygon& pa, const ConvexPolygon& pb, const Vec6& q,
@@ -261,6 +275,8 @@ class PolygonContact final : public Element {
 
   std::string label_;
   PolygonBody a_, b_;
+  std::shared_ptr<PlanPair> plan_pair_;  // null: the convex shapes' own overlap
+  int slot_ = 0;
   PolygonContactConfig cfg_;
   const ImpactLaw* law_ = nullptr;  // normal_law or length_law; null: the area law
   std::array<int, kDofs> dof_{};

@@ -1,0 +1,151 @@
+// Shared overlap geometry of the contact slots of one pair of plans (plan_pair.h).
+#include "solver/elements/plan_pair.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace isopound {
+
+PlanPair::PlanPair(PlanPairBody a, PlanPairBody b, int slots, OverlapMethod method)
+    : a_(std::move(a)), b_(std::move(b)), method_(method) {
+  if (slots < 1 || slots > kMaxOverlapComponents)
+    throw std::invalid_argument("plan pair: between 1 and " +
+                                std::to_string(kMaxOverlapComponents) + " contact slots");
+  committed_.resize(slots);
+  for (const SimplePolygon* p : {&a_.outline_W, &b_.outline_W})
+    size_ = std::max(size_,
+                     std::hypot(p->box_max().x - p->box_min().x, p->box_max().y - p->box_min().y));
+  for (Entry& e : cache_) {
+    e.placed_a = a_.outline_W;
+    e.placed_b = b_.outline_W;
+    e.component.assign(slots, -1);
+  }
+}
+
+const PlanPair::Entry& PlanPair::at(const Placement6& q) const {
+  for (const Entry& e : cache_)
+    if (e.valid && e.generation == generation_ && std::memcmp(e.q.data(), q.data(), sizeof q) == 0)
+      return e;
+  Entry& e = cache_[next_];
+  next_ = (next_ + 1) % kCached;
+  e.q = q;
+  e.generation = generation_;
+  e.valid = true;
+  if (a_.moves) a_.outline_W.placed_into({q[0], q[1], q[2]}, a_.p_WO, e.placed_a);
+  if (b_.moves) b_.outline_W.placed_into({q[3], q[4], q[5]}, b_.p_WO, e.placed_b);
+  plan_overlap(e.placed_a, e.placed_b, e.overlap, method_);
+  most_components_ = std::max(most_components_, e.overlap.count + e.overlap.dropped);
+  assign(e);
+  return e;
+}
+
+void PlanPair::assign(Entry& e) const {
+  const PlanOverlap& ov = e.overlap;
+  e.owner.fill(-1);
+  std::fill(e.component.begin(), e.component.end(), -1);
+  // Closed slots follow their component: sharing a piece pair, nearest centroid.
+  for (int s = 0; s < slots(); ++s) {
+    const Committed& c = committed_[s];
+    if (!c.closed) continue;
+    int best = -1;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < ov.count; ++k) {
+      if (e.owner[k] >= 0) continue;
+      if (c.piece_pairs != 0 && (ov.piece_pairs[k] & c.piece_pairs) == 0) continue;
+      const Vec2 d = ov.components[k].p_WC - c.p_WC;
+      const double d2 = dot(d, d);
+      if (d2 < best_d2) best_d2 = d2, best = k;
+    }
+    if (best >= 0) e.owner[best] = s, e.component[s] = best;
+  }
+  // The others go to the open slots in order.
+  int s = 0;
+  for (int k = 0; k < ov.count; ++k) {
+    if (e.owner[k] >= 0) continue;
+    while (s < slots() && (committed_[s].closed || e.component[s] >= 0)) ++s;
+    if (s == slots()) break;
+    e.owner[k] = s;
+    e.component[s] = k;
+  }
+}
+
+const Overlap& PlanPair::overlap(int slot, const Placement6& q) const {
+  const Entry& e = at(q);
+  const int k = e.component[slot];
+  return k >= 0 ? e.overlap.components[k] : none_;
+}
+
+Separation PlanPair::least_separation(const Entry& e, std::uint64_t pairs) const {
+  Separation best{std::numeric_limits<double>::infinity(), {1.0, 0.0}};
+  const auto& pa = e.placed_a.pieces();
+  const auto& pb = e.placed_b.pieces();
+  const int nb = int(pb.size());
+  for (int i = 0; i < int(pa.size()); ++i)
+    for (int j = 0; j < nb; ++j) {
+      if (!(pairs & piece_pair_bit(i, j, nb))) continue;
+      const Separation s = separation_of(pa[i], pb[j]);
+      if (s.distance < best.distance) best = s;
+    }
+  if (!std::isfinite(best.distance)) best.distance = size_;  // nothing left: far
+  return best;
+}
+
+int PlanPair::first_open_slot() const {
+  for (int s = 0; s < slots(); ++s)
+    if (!committed_[s].closed) return s;
+  return -1;
+}
+
+Separation PlanPair::separation(int slot, const Placement6& q) const {
+  const Entry& e = at(q);
+  const int k = e.component[slot];
+  if (k >= 0) return least_separation(e, e.overlap.piece_pairs[k]);
+  std::uint64_t others = 0;  // what other slots' components are made of
+  for (int j = 0; j < e.overlap.count; ++j)
+    if (e.owner[j] >= 0 && e.owner[j] != slot) others |= e.overlap.piece_pairs[j];
+  const Committed& c = committed_[slot];
+  if (c.closed) {  // separating: its own pairs
+    const std::uint64_t own = c.piece_pairs & ~others;
+    return least_separation(e, own != 0 ? own : c.piece_pairs);
+  }
+  for (int s = 0; s < slots(); ++s)
+    if (s != slot && committed_[s].closed) others |= committed_[s].piece_pairs;
+  Separation sep = least_separation(e, ~others);
+  sep.distance = std::max(sep.distance, 0.0);
+  if (slot != first_open_slot()) sep.distance += size_;
+  return sep;
+}
+
+void PlanPair::set_committed(int slot, bool closed, const Placement6& q) {
+  Committed next;
+  next.closed = closed;
+  if (closed) {
+    const Entry& e = at(q);
+    int k = e.component[slot];
+    const Entry* in = &e;
+    const Separation sep = k < 0 ? separation(slot, q) : Separation{};
+    if (k < 0 && sep.distance < 1e-6 * size_) {  // at touch: the component a sliver deeper
+      const double shift = std::max(sep.distance, 0.0) + kSurfaceSliverFraction * size_;
+      Placement6 deeper = q;
+      deeper[3] -= shift * sep.n_AB.x;
+      deeper[4] -= shift * sep.n_AB.y;
+      in = &at(deeper);
+      k = in->component[slot];
+    }
+    if (k >= 0) {
+      next.p_WC = in->overlap.components[k].p_WC;
+      next.piece_pairs = in->overlap.piece_pairs[k];
+    }
+  }
+  Committed& c = committed_[slot];
+  if (c.closed == next.closed && c.piece_pairs == next.piece_pairs && c.p_WC.x == next.p_WC.x &&
+      c.p_WC.y == next.p_WC.y)
+    return;
+  c = next;
+  ++generation_;
+}
+
+}  // namespace isopound
