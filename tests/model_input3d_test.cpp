@@ -66,6 +66,11 @@ TEST(ModelInput3D, BadInputsNameLineAndKey) {
             "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {polygon: [[-6, -3], "
             "[6, 3], [6, -3], [-6, 3]]}"),
        4, "structures[0].plan.polygon", "convex"},  // self-intersecting (a bow tie)
+      // An L: refused at its re-entrant vertex (models take convex plans in this version).
+      {with("grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}",
+            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {polygon: [[-6, -3], "
+            "[6, -3], [6, 0], [0, 0], [0, 3], [-6, 3]]}"),
+       4, "structures[0].plan.polygon[3]", "re-entrant"},
       {with(
            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}",
            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {rectangle: [10 m, 5.5 m]}"),
@@ -101,6 +106,27 @@ TEST(ModelInput3D, BadInputsNameLineAndKey) {
       EXPECT_EQ(e.key(), c.key) << e.what();
       EXPECT_NE(std::string(e.what()).find(c.what), std::string::npos) << e.what();
     }
+  }
+}
+
+// Collinear vertices, as drawings have them (a vertex in the middle of a side; an L whose notch
+// has no size), are not corners: the plan is the rectangle's, the same numbers.
+TEST(ModelInput3D, CollinearPlanVerticesAreDropped) {
+  const std::string base = kBuilding;
+  const auto with_plan = [&](const std::string& plan) {
+    std::string text = base;
+    const std::string grid = "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}";
+    return text.replace(text.find(grid), grid.size(), grid + "\n    plan: " + plan);
+  };
+  const ModelConfig rect = load_text(with_plan("{rectangle: [12 m, 6 m]}"));
+  const ModelConfig drawn = load_text(
+      with_plan("{polygon: [[-6, -3], [0, -3], [6, -3], [6, 0], [6, 3], [0, 3], [-6, 3]]}"));
+  const Building3DConfig& r = rect.structures3d[0];
+  const Building3DConfig& d = drawn.structures3d[0];
+  ASSERT_EQ(d.storeys[0].floor.plan.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(d.storeys[0].floor.plan[k].x, r.storeys[0].floor.plan[k].x) << k;
+    EXPECT_EQ(d.storeys[0].floor.plan[k].y, r.storeys[0].floor.plan[k].y) << k;
   }
 }
 

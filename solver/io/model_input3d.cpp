@@ -11,6 +11,7 @@
 
 #include <limits>
 
+#include "geometry/simple_polygon.h"
 #include "solver/io/bumper_input.h"
 #include "solver/io/hysteresis_input.h"
 #include "solver/io/isolator_input.h"
@@ -59,14 +60,38 @@ std::vector<Vec2> read_plan(const InputNode& node) {
   if (!poly->is_sequence()) poly->fail("expected a list of vertices [[x, y], ...]");
   std::vector<Vec2> v;
   for (const InputNode& p : poly->elements()) v.push_back(read_point(p));
+  const std::vector<InputNode> points = poly->elements();
+  std::optional<SimplePolygon> outline;
   try {
-    const ConvexPolygon check(std::span<const Vec2>(v.data(), v.size()));
+    outline.emplace(std::span<const Vec2>(v.data(), v.size()));
   } catch (const InvalidPolygon& e) {
     if (e.vertex() >= 0 && e.vertex() < static_cast<int>(v.size()))
-      poly->elements()[e.vertex()].fail(std::string("not a convex polygon: ") + e.what());
+      points[e.vertex()].fail(std::string("not a convex polygon: ") + e.what());
     poly->fail(std::string("not a convex polygon: ") + e.what());
   }
-  return v;
+  if (!outline->convex()) {
+    // The first re-entrant vertex, in the list's own order and orientation.
+    const double turn_sign = outline->was_reversed() ? -1.0 : 1.0;
+    const std::size_t n = v.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 in = v[i] - v[(i + n - 1) % n], out = v[(i + 1) % n] - v[i];
+      if (turn_sign * cross(in, out) < 0)
+        points[i].fail("not a convex polygon: vertex " + std::to_string(i) +
+                       " is re-entrant (a building's plan is convex in this version; `isopound "
+                       "geometry overlap` takes L, T and U plans)");
+    }
+    poly->fail("not a convex polygon");
+  }
+  // Collinear vertices, as drawings have them, are not corners: dropped, the others kept in the
+  // list's order (a list without them is returned as given).
+  const std::span<const Vec2> corners = outline->pieces()[0].vertices();
+  if (corners.size() == v.size()) return v;
+  std::vector<Vec2> kept;
+  for (const Vec2& p : v)
+    if (std::find_if(corners.begin(), corners.end(),
+                     [&](const Vec2& c) { return c.x == p.x && c.y == p.y; }) != corners.end())
+      kept.push_back(p);
+  return kept;
 }
 
 // Column section and material: defaults from the building's `columns:` map, overridden per item.
