@@ -349,7 +349,7 @@ double PolygonContact::area_contact_step(double secant_width) const {
 }
 
 double PolygonContact::trial_witness() const {
-  if (trial_.witness_valid) return trial_.witness;
+  if (trial_.witness_valid && !plan_pair_) return trial_.witness;
   State copy = trial_;
   compute_witness(copy);
   return copy.witness;
@@ -522,6 +522,8 @@ double PolygonContact::event_fraction() {
   State& T = trial_;
   double theta = 1.0;
   pending_ = Event::kNone;
+  // A plan-pair slot's witness depends on the other slots' status too: never kept across calls.
+  if (plan_pair_) C.witness_valid = T.witness_valid = false;
   // Far apart at both ends of the step: no onset inside it. The Hermite witness between the
   // ends lies below max(w_0, w_1) + 0.15 h (|ẇ_0| + |ẇ_1|) (the cubic's first-derivative
   // basis peaks at 4/27), and |ẇ| is at most the bodies' speed bound; so a box gap larger than
@@ -582,6 +584,7 @@ double PolygonContact::event_indicator(bool committed) const {
 bool PolygonContact::settle_event() {
   State& C = committed_;
   const Event event = pending_;
+  if (plan_pair_) C.witness_valid = false;
   pending_ = Event::kNone;
   switch (event) {
     case Event::kOnset: {
@@ -665,14 +668,14 @@ double PolygonContact::step_limit() const {
 // speed bound (≥ the witness rate). When even that exceeds twice the longest step tried, no
 // step can reach it and the witness is not needed: the steps are the same as with it.
 double PolygonContact::approach_limit() const {
-  if (approach_cached_) return approach_limit_;
+  if (approach_cached_ && !plan_pair_) return approach_limit_;
   const State& C = committed_;
   const double acceleration_bound = 2.0 * rate_change_;
   const TimeOfImpact far = time_of_impact(C.box_gap, speed_of(C), acceleration_bound);
   approach_cached_ = true;
   if (far.time >= 2.0 * longest_step_) return approach_limit_ = far.time;
   State s = C;
-  if (!s.witness_valid) compute_witness(s);
+  if (!s.witness_valid || plan_pair_) compute_witness(s);
   const TimeOfImpact toi = time_of_impact(-s.witness, s.witness_rate, acceleration_bound);
   if (toi.time >= 1e300) return approach_limit_ = 1e300;
   double floor = 0.0;
