@@ -23,6 +23,7 @@ bool is_convex_list(std::span<const Vec2> v) {
 ConvexPolygon convex_hull(std::span<const Vec2> v) {
   if (is_convex_list(v)) return ConvexPolygon(v);
   std::vector<Vec2> p(v.begin(), v.end());
+  if (p.size() < 3) return ConvexPolygon(std::span<const Vec2>(p.data(), p.size()));  // refuses
   std::sort(p.begin(), p.end(),
             [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   std::vector<Vec2> hull(2 * p.size());

@@ -67,8 +67,8 @@ std::vector<Vec2> read_plan(const InputNode& node) {
     outline.emplace(std::span<const Vec2>(v.data(), v.size()));
   } catch (const InvalidPolygon& e) {
     if (e.vertex() >= 0 && e.vertex() < static_cast<int>(v.size()))
-      points[e.vertex()].fail(std::string("not a convex polygon: ") + e.what());
-    poly->fail(std::string("not a convex polygon: ") + e.what());
+      points[e.vertex()].fail(std::string("not a simple polygon: ") + e.what());
+    poly->fail(std::string("not a simple polygon: ") + e.what());
   }
   // Non-convex plans (L, T, U) are taken as written (collinear vertices kept: the outline's
   // pieces drop them).
@@ -679,10 +679,10 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
       if (out[k].name == out.back().name)
         item.fail_at_key("name", "two structures are named '" + out.back().name + "'");
     if (const auto adj = item.find("adjacent")) place_adjacent(*adj, item, out);
+    refuse_with_non_convex_plans(item, out.back());
     // Rubber on the slabs' faces: after the placement, whose side it defaults to.
     if (const auto bumper = item.find("bumper"))
       out.back().bumper = read_slab_bumper3d(*bumper, out.back(), read_side);
-    refuse_with_non_convex_plans(item, out.back());
   }
   // Struck columns are struck by other structures' slabs: none of them may be non-convex.
   if (std::any_of(out.begin(), out.end(), has_non_convex_plan))
