@@ -5,12 +5,14 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <span>
 #include <tuple>
 
 #include "geometry/overlap.h"
+#include "geometry/plan_overlap.h"
 
 namespace isopound::post {
 namespace {
@@ -222,6 +224,7 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
     // A: the slab; B: the other slab or wall, or a struck column's section at its node.
     int ia = -1;
     std::optional<ConvexPolygon> pb;
+    std::optional<SimplePolygon> pb_outline;  // B's outline when it is not convex
     if (const PlanColumn* c = run.site.struck(pair)) {
       ia = c->struck.striker;
       const NodeState n = node_state(run, *c, states, t);
@@ -236,6 +239,8 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
       if (ib < 0) continue;
       const BodyState& B = states[ib];
       pb = run.site.bodies[ib].polygon().placed({B.u, B.v, B.theta});
+      if (!run.site.bodies[ib].convex())
+        pb_outline = run.site.bodies[ib].outline().placed({B.u, B.v, B.theta});
     }
     if (ia < 0) continue;
     const BodyState& A = states[ia];
@@ -259,8 +264,22 @@ FrameMesh animation_frame3d(const RunData& run, double t, const AnimationOptions
       return f.point({q.x + (S - 1.0) * d.x, q.y + (S - 1.0) * d.y, z}, {d.x, d.y, 0.0},
                      {acc.x, acc.y, 0.0}, {along_n * n.x, along_n * n.y, 0.0}, A.gap);
     };
-    const ConvexPolygon pa = run.site.bodies[ia].polygon().placed({A.u, A.v, A.theta});
-    const Overlap ov = overlap_of(pa, *pb);
+    const PlanBody& body_a = run.site.bodies[ia];
+    Overlap ov;
+    if (body_a.convex() && !pb_outline) {
+      ov = overlap_of(body_a.polygon().placed({A.u, A.v, A.theta}), *pb);
+    } else {
+      // A non-convex plan (plan_overlap.h): the part of the overlap this contact is, the one
+      // nearest its logged centroid.
+      const PlanOverlap parts =
+          plan_overlap(body_a.outline().placed({A.u, A.v, A.theta}),
+                       pb_outline ? *pb_outline : SimplePolygon(pb->vertices()));
+      double nearest = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < parts.count; ++k) {
+        const Vec2 d = parts.components[k].p_WC - Vec2{e->x_C, e->y_C};
+        if (dot(d, d) < nearest) nearest = dot(d, d), ov = parts.components[k];
+      }
+    }
     if (ov.area > 0.0 && ov.vertex_count >= 3) {
       std::vector<int> ids;
       for (int k = 0; k < ov.vertex_count; ++k) ids.push_back(on_a(ov.vertices[k], true));

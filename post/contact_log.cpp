@@ -32,6 +32,12 @@ bool split_pair(const std::string& pair, std::string& a, std::string& b) {
   if (bar == std::string::npos) return false;
   a = pair.substr(0, bar);
   b = pair.substr(bar + 1);
+  // A second or third contact of the same two bodies (a non-convex plan: one per part of the
+  // overlap) is labelled "A|B #2": the same bodies.
+  if (const auto hash = b.rfind(" #");
+      hash != std::string::npos &&
+      b.find_first_not_of("0123456789", hash + 2) == std::string::npos && hash + 2 < b.size())
+    b.erase(hash);
   return true;
 }
 

@@ -360,7 +360,6 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
               true};
   orbit.equal_axes = true;
   orbit.legend_at = Panel::LegendAt::kBest;
-  const ConvexPolygon slab_polygon = base_body.polygon();
   bool wall_legend = true;
   double reach = 0.0, gap_min = 0.0;  // cm: the largest displacement, the smallest wall gap
   std::size_t reach_corner = 0;
@@ -374,7 +373,7 @@ std::vector<NamedFigure> run_figures3d(const RunData& run) {
     Series ws{"", {}, {}, Rgb{150, 60, 40}, 2.0};
     outline(w.plan_W, ws.x, ws.y);
     plan.series.push_back(ws);
-    const Separation sep = separation_of(slab_polygon, w.polygon());
+    const Separation sep = plan_separation(base_body.plan_W, w.plan_W);
     const double gap = 100 * sep.distance;  // cm
     gap_min = wall_legend ? gap : std::min(gap_min, gap);
     const Vec2 n = sep.n_AB, tangent{-n.y, n.x};

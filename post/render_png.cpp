@@ -1,6 +1,8 @@
 // Figure -> PNG through vtkContextView (off-screen render window on the X display).
 #include "post/render_png.h"
 
+#include "geometry/plan_shape.h"
+
 #include <vtkBrush.h>
 #include <vtkContext2D.h>
 #include <vtkContextItem.h>
@@ -35,14 +37,38 @@ class FigureItem : public vtkContextItem {
     std::vector<float> xy;
     for (const FilledPolygon& poly : f.polygons) {
       if (poly.points.size() < 3) continue;
-      xy.clear();
-      for (const Point2& p : poly.points) {
-        xy.push_back(static_cast<float>(p.x));
-        xy.push_back(static_cast<float>(p.y));
-      }
       painter->GetBrush()->SetColor(poly.colour.r, poly.colour.g, poly.colour.b, 255);
       painter->GetPen()->SetLineType(vtkPen::NO_PEN);
-      painter->DrawPolygon(xy.data(), static_cast<int>(poly.points.size()));
+      // The context fills a polygon as a fan from its first vertex: a non-convex one (an L plan)
+      // is filled piece by piece (its convex pieces, simple_polygon.h).
+      std::vector<Vec2> outline;
+      for (const Point2& p : poly.points) outline.push_back({p.x, p.y});
+      std::vector<std::vector<Vec2>> pieces;
+      bool left = false, right = false;  // turns both ways: not convex
+      for (std::size_t i = 0, n = outline.size(); i < n; ++i) {
+        const double turn =
+            cross(outline[(i + 1) % n] - outline[i], outline[(i + 2) % n] - outline[(i + 1) % n]);
+        left = left || turn > 0;
+        right = right || turn < 0;
+      }
+      if (left && right) {
+        try {
+          const SimplePolygon split(outline);
+          for (const ConvexPolygon& c : split.pieces())
+            pieces.emplace_back(c.vertices().begin(), c.vertices().end());
+        } catch (const InvalidPolygon&) {
+          pieces.clear();
+        }
+      }
+      if (pieces.empty()) pieces.push_back(outline);
+      for (const std::vector<Vec2>& piece : pieces) {
+        xy.clear();
+        for (const Vec2& p : piece) {
+          xy.push_back(static_cast<float>(p.x));
+          xy.push_back(static_cast<float>(p.y));
+        }
+        painter->DrawPolygon(xy.data(), static_cast<int>(piece.size()));
+      }
     }
     painter->GetPen()->SetLineType(vtkPen::SOLID_LINE);
     for (const Polyline& line : f.lines) {

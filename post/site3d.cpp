@@ -25,6 +25,10 @@ std::vector<Vec2> outline_in_plan(const Building3DConfig& b, const std::vector<V
   std::vector<Vec2> w;
   for (Vec2 p : plan_B) w.push_back(to_plan(b, p));
   // Validated and counter-clockwise.
+  if (!is_convex_list(w)) {
+    const SimplePolygon outline{std::span<const Vec2>(w.data(), w.size())};
+    return {outline.vertices().begin(), outline.vertices().end()};
+  }
   const ConvexPolygon polygon{std::span<const Vec2>(w.data(), w.size())};
   return {polygon.vertices().begin(), polygon.vertices().end()};
 }
@@ -45,7 +49,7 @@ void add_strips(Site3D& site, int owner, const std::string& face, const Building
     r.elevation = elevation;
     r.height = bumper.height;
     r.plan_W = outline_in_plan(b, *outline);
-    r.p_WCM = area_properties(r.polygon()).p_WC;
+    r.p_WCM = plan_area_properties(r.plan_W).p_WC;
     r.follows = owner;  // moves with it (no DOFs of its own: dof_label stays empty)
     site.bodies.push_back(std::move(r));
   }
@@ -86,7 +90,7 @@ void set_rest_gaps(std::vector<PlanBody>& bodies) {
     if (a.role != "slab" || a.structure != first) continue;
     for (const PlanBody& b : bodies) {
       if (b.structure == first || b.role == "rubber") continue;
-      const Separation sep = separation_of(a.polygon(), b.polygon());
+      const Separation sep = plan_separation(a.plan_W, b.plan_W);
       auto [it, fresh] = separation.try_emplace(b.structure, sep.distance, sep.n_AB);
       if (!fresh && sep.distance < it->second.first) it->second = {sep.distance, sep.n_AB};
     }
@@ -109,8 +113,7 @@ Site3D site_geometry(const ModelConfig& config) {
       body.role = "slab";
       body.elevation = z;
       body.plan_W = outline_in_plan(b, d.plan);
-      const ConvexPolygon polygon = body.polygon();
-      body.p_WCM = area_properties(polygon).p_WC + rotate(b.rotation, d.eccentricity);
+      body.p_WCM = plan_area_properties(body.plan_W).p_WC + rotate(b.rotation, d.eccentricity);
       body.dof_label = b.name + "/" + level;
       site.bodies.push_back(std::move(body));
       return static_cast<int>(site.bodies.size()) - 1;
@@ -153,7 +156,8 @@ Site3D site_geometry(const ModelConfig& config) {
       // The solver's slab: the same outline and level as the one drawn.
       const int i = site.find(b.label());
       if (i < 0 || std::abs(site.bodies[i].elevation - b.elevation) > 1e-9 ||
-          site.bodies[i].plan_W.size() != b.plan_W.vertices().size())
+          site.bodies[i].plan_W.size() !=
+              static_cast<std::size_t>(b.convex() ? b.plan_W.size() : b.outline_W.size()))
         throw std::invalid_argument("post: slab '" + b.label() +
                                     "' of the solver's site differs from the drawn one");
       continue;

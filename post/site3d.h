@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/convex_polygon.h"
+#include "geometry/plan_shape.h"
 #include "solver/structures/config.h"
 
 namespace isopound::post {
@@ -18,7 +19,7 @@ struct PlanBody {
   std::string role;          // "slab" | "wall" | "rubber"
   double elevation = 0.0;    // m: a slab's level (levels3d.h); a wall's or strip's top
   double height = 0.0;       // m: a wall's height, a strip's rubber height; a slab 0
-  std::vector<Vec2> plan_W;  // outline, counter-clockwise (validated as a ConvexPolygon)
+  std::vector<Vec2> plan_W;  // outline, counter-clockwise (validated; L, T, U shapes allowed)
   Vec2 p_WCM;                // centre of mass at rest (slabs; walls and strips: centroid)
   std::string dof_label;     // history label of its DOFs ("building/floor 1"), "" when fixed
   // A rubber strip (issue 27, bumper_layer3d.h): the body it is glued to, whose motion it
@@ -31,7 +32,10 @@ struct PlanBody {
   // The name contact labels use: "<structure>/<level>" for slabs, "<structure>" for walls and
   // strips ("wall east bumper", "east-neighbour/floor 1 west bumper bottomed").
   std::string key() const { return role == "slab" ? structure + "/" + level : structure; }
-  ConvexPolygon polygon() const { return ConvexPolygon(plan_W); }
+  // The outline's convex hull (the outline itself when convex), and the outline of any shape.
+  ConvexPolygon polygon() const { return convex_hull(plan_W); }
+  SimplePolygon outline() const { return SimplePolygon(plan_W); }
+  bool convex() const { return is_convex_list(plan_W); }
 };
 
 // A column a slab strikes between its floors (issue 26, struck_columns3d.h).

@@ -60,17 +60,12 @@ TEST(ModelInput3D, BadInputsNameLineAndKey) {
   const Bad cases[] = {
       {with("grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}",
             "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {polygon: [[-6, -3], "
-            "[6, -3], [0, 0], [6, 3], [-6, 3]]}"),
-       4, "structures[0].plan.polygon[2]", "convex"},
+            "[6, -3], [-1, 0], [6, 3], [-6, 3]]}"),
+       6, "structures[0].storeys", "outside"},  // an arrow whose notch holds columns C1, C2
       {with("grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}",
             "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {polygon: [[-6, -3], "
             "[6, 3], [6, -3], [-6, 3]]}"),
-       4, "structures[0].plan.polygon", "convex"},  // self-intersecting (a bow tie)
-      // An L: refused at its re-entrant vertex (models take convex plans in this version).
-      {with("grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}",
-            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {polygon: [[-6, -3], "
-            "[6, -3], [6, 0], [0, 0], [0, 3], [-6, 3]]}"),
-       4, "structures[0].plan.polygon[3]", "re-entrant"},
+       4, "structures[0].plan.polygon", "simple polygon"},  // self-intersecting (a bow tie)
       {with(
            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}",
            "grid: {bays_x: [5.5 m, 5.5 m], bays_y: [5.5 m]}\n    plan: {rectangle: [10 m, 5.5 m]}"),

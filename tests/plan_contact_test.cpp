@@ -229,7 +229,6 @@ TEST(PlanContact, AClosedSlotKeepsItsComponent) {
 TEST(PlanContact, USlabObliqueImpactsArePassive) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> angle(-0.5, 0.5), speed(0.5, 1.5);
-  int two_at_once = 0;
   for (int trial = 0; trial < 6; ++trial) {
     Model m = slab_model();
     const double theta0 = angle(rng);
@@ -243,15 +242,18 @@ TEST(PlanContact, USlabObliqueImpactsArePassive) {
     for (int s = 0; s < 3; ++s) {
       const PolygonContact& c = contact(m, s);
       if (c.impacts() > 0) ++struck;
+      // No slot's episode without a force (a free slot taking a part that another slot's
+      // contact is still making: the witness rate across a change of hands, clamped).
+      if (c.impacts() > 0) {
+        EXPECT_GT(r.element_outputs[s][0].value, 0.0) << trial << " " << s;
+      }
       if (c.episodes() > 0) {
         EXPECT_LE(c.max_episode_net_work_relative(), 1e-9) << "trial " << trial << " slot " << s;
       }
     }
-    if (struck >= 2) ++two_at_once;
     EXPECT_GE(struck, 1) << trial;
     EXPECT_LT(r.energy.relative_error, 5e-3) << trial;
   }
-  EXPECT_GE(two_at_once, 1);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Gmsh models of the site: built with the built-in (geo) kernel, meshed in 2D, written with
 // gmsh::write. Gmsh throws std::string (DEPENDENCIES.md): turned into std::runtime_error here.
 #include "geometry/pre/gmsh_files.h"
+#include "geometry/plan_shape.h"
 
 #include <gmsh.h>
 
@@ -76,8 +77,7 @@ struct SlabWithPoints {
 
 SlabWithPoints add_slab(Geometry& geometry, const std::vector<Vec2>& plan, double z, double size,
                         const std::vector<Vec2>& marks, double mark_size) {
-  const double tol =
-      1e-9 * std::sqrt(area_properties(ConvexPolygon(std::span<const Vec2>(plan))).area);
+  const double tol = 1e-9 * std::sqrt(plan_area_properties(plan).area);
   SlabWithPoints slab;
   slab.point_tags.assign(marks.size(), 0);
   std::vector<int> chain;
@@ -114,7 +114,7 @@ SlabWithPoints add_slab(Geometry& geometry, const std::vector<Vec2>& plan, doubl
 }
 
 double slab_size(const std::vector<Vec2>& plan) {
-  return std::sqrt(area_properties(ConvexPolygon(std::span<const Vec2>(plan))).area) / 6.0;
+  return std::sqrt(plan_area_properties(plan).area) / 6.0;
 }
 
 // Collects entities per physical group name, then creates the groups.

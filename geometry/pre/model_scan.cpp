@@ -2,6 +2,7 @@
 // solver/io/model_input3d.cpp, a non-convex polygon reported as the reader does and replaced (in
 // the YAML) by its hull so that the reader gets through and the site checks run too.
 #include "geometry/pre/model_scan.h"
+#include "geometry/plan_shape.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -33,30 +34,11 @@ Vec2 read_point(const InputNode& node) {
   return {e[0].quantity(dim::kLength), e[1].quantity(dim::kLength)};
 }
 
-// Andrew's monotone chain, counter-clockwise, collinear points dropped.
-std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
-  std::sort(p.begin(), p.end(),
-            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  if (p.size() < 3) return p;
-  std::vector<Vec2> h(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
-    h[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
-    h[k++] = p[i];
-  }
-  h.resize(k - 1);
-  return h;
-}
-
 struct Scanner {
   ProblemList& problems;
 
-  // plan: {rectangle} or {polygon}; a polygon that is not convex is reported as the reader
-  // does and replaced (in the YAML) by its convex hull.
+  // plan: {rectangle} or {polygon}; a polygon that is not a simple outline is reported as the
+  // reader does and replaced (in the YAML) by its convex hull.
   std::optional<std::vector<Vec2>> plan(const InputNode& node) {
     return attempt([&]() -> std::optional<std::vector<Vec2>> {
              if (const auto rect = node.find("rectangle")) {
@@ -72,18 +54,20 @@ struct Scanner {
              std::vector<Vec2> v;
              for (const InputNode& p : poly->elements()) v.push_back(read_point(p));
              try {
-               const ConvexPolygon check(std::span<const Vec2>(v.data(), v.size()));
+               // Any simple outline (L, T, U plans: issue 40), as the solver reads it.
+               const SimplePolygon check(std::span<const Vec2>(v.data(), v.size()));
                return v;
              } catch (const InvalidPolygon& e) {
-               const std::string what = std::string("not a convex polygon: ") + e.what();
+               const std::string what = std::string("not a simple polygon: ") + e.what();
                if (e.vertex() >= 0 && e.vertex() < static_cast<int>(v.size()))
                  problems.error_at(poly->elements()[e.vertex()], "", what);
                else
                  problems.error_at(*poly, "", what);
              }
-             std::vector<Vec2> hull = convex_hull(v);
+             std::vector<Vec2> hull;
              try {
-               const ConvexPolygon check(std::span<const Vec2>(hull.data(), hull.size()));
+               const ConvexPolygon h = convex_hull(v);
+               hull.assign(h.vertices().begin(), h.vertices().end());
              } catch (const InvalidPolygon&) {
                return std::nullopt;  // degenerate: nothing to go on with
              }

@@ -1,6 +1,7 @@
 // The plan figure: layout (equal scale in x and y, legend at the right, scale bar below), then
 // shapes in drawing order (walls, slabs, bearings, columns, markers), dimension lines and text.
 #include "geometry/pre/plan_figure.h"
+#include "geometry/plan_shape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -291,7 +292,7 @@ post::Figure plan_figure(const Site& site, const std::vector<StructureProperties
     if (name_at.count(s.structure)) continue;  // slabs are listed bottom-up per structure
     double top = -1e300, bottom = 1e300;
     for (Vec2 p : s.plan_W) top = std::max(top, p.y), bottom = std::min(bottom, p.y);
-    const AreaProperties a = area_properties(ConvexPolygon(std::span<const Vec2>(s.plan_W)));
+    const AreaProperties a = plan_area_properties(s.plan_W);
     name_at[s.structure] = {a.p_WC.x, top - (top - bottom) / 6};
   }
   for (const auto& [i, p] : name_at) {

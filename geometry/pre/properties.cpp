@@ -2,6 +2,7 @@
 // diaphragm_mass() of building3d.h, linear_model3d() for the bearings, so what is printed is what
 // the analysis uses.
 #include "geometry/pre/properties.h"
+#include "geometry/plan_shape.h"
 
 #include <cmath>
 #include <cstdio>
@@ -78,7 +79,7 @@ std::vector<StructureProperties> structure_properties(const ModelConfig& config)
       d.level = levels_B[l].name;
       d.elevation = levels_B[l].elevation;
       d.mass = levels[l].mass;
-      d.exact = area_properties(ConvexPolygon(std::span<const Vec2>(levels[l].plan)));
+      d.exact = plan_area_properties(levels[l].plan);
       d.radius_of_gyration = std::sqrt(d.exact.radius_of_gyration_sq());
       masses.push_back(diaphragm_mass(levels[l], b.polar_moment_rule));
       mass_centre(masses.back(), d.p_WM, d.mass_radius_of_gyration);

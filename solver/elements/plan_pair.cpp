@@ -37,9 +37,49 @@ const PlanPair::Entry& PlanPair::at(const Placement6& q) const {
   if (a_.moves) a_.outline_W.placed_into({q[0], q[1], q[2]}, a_.p_WO, e.placed_a);
   if (b_.moves) b_.outline_W.placed_into({q[3], q[4], q[5]}, b_.p_WO, e.placed_b);
   plan_overlap(e.placed_a, e.placed_b, e.overlap, method_);
+  merge_slivers(e.overlap);
   most_components_ = std::max(most_components_, e.overlap.count + e.overlap.dropped);
   assign(e);
   return e;
+}
+
+// Two parts closer than kNearFraction of the size are one contact: slivers along one face that a
+// diagonal of the plan splits (their common stretch of the diagonal is shorter than the overlap's
+// gluing tolerance) would otherwise be two contacts trading one episode at every touch. The
+// larger part's shape (chord, normal) with the sum of the areas and their centroid.
+void PlanPair::merge_slivers(PlanOverlap& o) const {
+  const double near = kNearFraction * size_;
+  const auto close = [&](const Overlap& p, const Overlap& q) {
+    for (int i = 0; i < p.vertex_count; ++i)
+      for (int j = 0; j < q.vertex_count; ++j) {
+        const Vec2 d = p.vertices[i] - q.vertices[j];
+        if (dot(d, d) <= near * near) return true;
+      }
+    return false;
+  };
+  for (int k = 0; k < o.count; ++k)
+    for (int m = k + 1; m < o.count;) {
+      if (!close(o.components[k], o.components[m])) {
+        ++m;
+        continue;
+      }
+      Overlap& p = o.components[k];
+      const Overlap& q = o.components[m];
+      const double area = p.area + q.area;
+      const Vec2 p_WC = (1.0 / area) * (p.area * p.p_WC + q.area * q.p_WC);
+      if (q.area > p.area) p = q;
+      const double scale = p.area > 0 ? area / p.area : 1.0;
+      p.mean_depth *= scale;
+      p.indentation *= scale;
+      p.area = area;
+      p.p_WC = p_WC;
+      o.piece_pairs[k] |= o.piece_pairs[m];
+      for (int r = m; r + 1 < o.count; ++r) {
+        o.components[r] = o.components[r + 1];
+        o.piece_pairs[r] = o.piece_pairs[r + 1];
+      }
+      --o.count;
+    }
 }
 
 void PlanPair::assign(Entry& e) const {

@@ -19,6 +19,10 @@
 // open slots' distance is that plus the bodies' size: they never reach an onset by the witness,
 // only by a component appearing in a step (two at once), as an unlocated onset.
 //
+// Parts closer than 1e-6 of the bodies' size are one contact: slivers along one face split by a
+// diagonal of the plan (plan_overlap glues parts only along a common stretch longer than 1e-9 of
+// the size) keep one slot, the larger part's shape with the sum of their areas.
+//
 // Two convex plans are one slot whose overlap is overlap_of's (the contact element keeps its own
 // convex path for them; this is for tests).
 #pragma once
@@ -44,6 +48,8 @@ class PlanPair {
  public:
   // How much deeper than touch a slot closed at touch looks for its component (of size()).
   static constexpr double kSurfaceSliverFraction = 1e-8;
+  // Parts of the overlap closer than this (of size()) are one contact (merge_slivers).
+  static constexpr double kNearFraction = 1e-6;
 
   using Placement6 = std::array<double, 6>;  // (u, v, θ) of A, then of B
 
@@ -85,6 +91,7 @@ class PlanPair {
   // The entry for placement q under the current committed statuses (computed if not cached).
   const Entry& at(const Placement6& q) const;
   void assign(Entry& e) const;
+  void merge_slivers(PlanOverlap& o) const;
   // The least separation of the piece pairs of `pairs` (bit set: taken), distance kFar if none.
   Separation least_separation(const Entry& e, std::uint64_t pairs) const;
   int first_open_slot() const;

@@ -312,6 +312,10 @@ void PolygonContact::compute_witness(State& s) const {
   if (speed > 0) {
     const double tau = 1e-7 / speed;
     s.witness_rate = -(separation(tau) - separation(-tau)) / (2 * tau);
+    // A slot's witness jumps where a part of the overlap changes hands (plan_pair.h): a
+    // difference across such a jump is no rate; no point of the bodies moves faster than the
+    // speed bound.
+    if (plan_pair_) s.witness_rate = std::clamp(s.witness_rate, -speed_of(s), speed_of(s));
   } else {
     s.witness_rate = 0.0;
   }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geometry/overlap.h"
+#include "geometry/plan_shape.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/bumper_layer3d.h"
 #include "solver/structures/levels3d.h"
@@ -203,8 +204,7 @@ void check_slab_bumpers(const ModelConfig& config, const std::vector<StructureMa
           if (other.structure == static_cast<int>(i) ||
               std::abs(other.elevation - level.elevation) > level_tolerance)
             continue;
-          const ConvexPolygon slab(std::span<const Vec2>(other.plan_W.data(), other.plan_W.size()));
-          if (separation_of(rubber, slab).distance > 0) continue;
+          if (plan_separation(rubber.vertices(), other.plan_W).distance > 0) continue;
           char what[240];
           std::snprintf(what, sizeof what,
                         "the rubber on the %s face of '%s/%s' (%g cm) touches or enters '%s/%s' "

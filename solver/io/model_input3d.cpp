@@ -11,6 +11,7 @@
 
 #include <limits>
 
+#include "geometry/plan_shape.h"
 #include "geometry/simple_polygon.h"
 #include "solver/io/bumper_input.h"
 #include "solver/io/hysteresis_input.h"
@@ -66,22 +67,12 @@ std::vector<Vec2> read_plan(const InputNode& node) {
     outline.emplace(std::span<const Vec2>(v.data(), v.size()));
   } catch (const InvalidPolygon& e) {
     if (e.vertex() >= 0 && e.vertex() < static_cast<int>(v.size()))
-      points[e.vertex()].fail(std::string("not a convex polygon: ") + e.what());
-    poly->fail(std::string("not a convex polygon: ") + e.what());
+      points[e.vertex()].fail(std::string("not a simple polygon: ") + e.what());
+    poly->fail(std::string("not a simple polygon: ") + e.what());
   }
-  if (!outline->convex()) {
-    // The first re-entrant vertex, in the list's own order and orientation.
-    const double turn_sign = outline->was_reversed() ? -1.0 : 1.0;
-    const std::size_t n = v.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 in = v[i] - v[(i + n - 1) % n], out = v[(i + 1) % n] - v[i];
-      if (turn_sign * cross(in, out) < 0)
-        points[i].fail("not a convex polygon: vertex " + std::to_string(i) +
-                       " is re-entrant (a building's plan is convex in this version; `isopound "
-                       "geometry overlap` takes L, T and U plans)");
-    }
-    poly->fail("not a convex polygon");
-  }
+  // Non-convex plans (L, T, U) are taken as written (collinear vertices kept: the outline's
+  // pieces drop them).
+  if (!outline->convex()) return v;
   // Collinear vertices, as drawings have them, are not corners: dropped, the others kept in the
   // list's order (a list without them is returned as given).
   const std::span<const Vec2> corners = outline->pieces()[0].vertices();
@@ -92,6 +83,29 @@ std::vector<Vec2> read_plan(const InputNode& node) {
                      [&](const Vec2& c) { return c.x == p.x && c.y == p.y; }) != corners.end())
       kept.push_back(p);
   return kept;
+}
+
+// What a non-convex plan (L, T, U) does not work with yet: rubber bumpers (on a box side) and
+// slabs striking columns (their overlap with the slab's plan); refused at the key.
+bool has_non_convex_plan(const Building3DConfig& b) {
+  const auto non_convex = [](const std::vector<Vec2>& plan) {
+    return !plan.empty() && !is_convex_list(plan);
+  };
+  return non_convex(b.base.plan) ||
+         std::any_of(b.storeys.begin(), b.storeys.end(),
+                     [&](const Storey3DConfig& s) { return non_convex(s.floor.plan); });
+}
+
+void refuse_with_non_convex_plans(const InputNode& item, const Building3DConfig& b) {
+  if (!has_non_convex_plan(b)) return;
+  // (struck_columns: refused for every structure beside a non-convex one, below.)
+  const char* why =
+      " is not available with a non-convex plan in this version (its L, T or U "
+      "outline): use convex plans or remove it";
+  for (const char* key : {"bumper"})
+    if (item.find(key)) item.fail_at_key(key, std::string(key) + why);
+  if (const auto w = item.find("walls"); w && w->find("bumper"))
+    w->fail_at_key("bumper", std::string("bumper") + why);
 }
 
 // Column section and material: defaults from the building's `columns:` map, overridden per item.
@@ -665,10 +679,18 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
       if (out[k].name == out.back().name)
         item.fail_at_key("name", "two structures are named '" + out.back().name + "'");
     if (const auto adj = item.find("adjacent")) place_adjacent(*adj, item, out);
+    refuse_with_non_convex_plans(item, out.back());
     // Rubber on the slabs' faces: after the placement, whose side it defaults to.
     if (const auto bumper = item.find("bumper"))
       out.back().bumper = read_slab_bumper3d(*bumper, out.back(), read_side);
   }
+  // Struck columns are struck by other structures' slabs: none of them may be non-convex.
+  if (std::any_of(out.begin(), out.end(), has_non_convex_plan))
+    for (std::size_t k = 0; k < out.size(); ++k)
+      if (const auto s = node.elements()[k].find("struck_columns"))
+        s->fail(
+            "struck columns are not available beside a structure with a non-convex plan in "
+            "this version (its L, T or U outline)");
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "geometry/overlap.h"
+#include "geometry/plan_shape.h"
 #include "solver/io/bumper_input.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/levels3d.h"
@@ -33,8 +34,10 @@ ConvexPolygon polygon(const std::vector<Vec2>& v) {
   return ConvexPolygon(std::span<const Vec2>(v.data(), v.size()));
 }
 
-// Inside or on the boundary of a convex plan, within 1e-9 sqrt(area).
+// Inside or on the boundary of a plan, within 1e-9 sqrt(area).
 bool inside(const std::vector<Vec2>& plan, Vec2 p) {
+  if (!is_convex_list(plan))
+    return plan_contains(plan, p, 1e-9 * std::sqrt(plan_area_properties(plan).area));
   const ConvexPolygon poly = polygon(plan);
   const double tol = 1e-9 * std::sqrt(area_properties(poly).area);
   for (int i = 0; i < poly.size(); ++i) {
@@ -129,7 +132,7 @@ void check_centres_of_mass(const Building3DConfig& b, const StructureMarks& m,
   std::vector<std::string> blamed;
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const Diaphragm3DConfig& d = *levels[i].first;
-    const Vec2 centroid = area_properties(polygon(d.plan)).p_WC;
+    const Vec2 centroid = plan_area_properties(d.plan).p_WC;
     const Vec2 p_M = centroid + d.eccentricity;
     if (inside(d.plan, p_M)) continue;
     std::optional<InputNode> where =
@@ -232,7 +235,7 @@ void check_columns(const ModelConfig& config, const std::vector<StructureMarks>&
           if (std::min(a.z_top, b.z_top) - std::max(a.z_bottom, b.z_bottom) <=
               limits.level_tolerance)
             continue;
-          const double area = overlap_of(polygon(a.outline_W), polygon(b.outline_W)).area;
+          const double area = plan_overlap_area(a.outline_W, b.outline_W);
           if (area <= kNoArea) continue;
           if (columns++ == 0)
             first_columns = a.label + " and " + b.label + " share " + fmt("%.4f m2", area);
@@ -241,7 +244,7 @@ void check_columns(const ModelConfig& config, const std::vector<StructureMarks>&
           if (s.structure != other || s.elevation < a.z_bottom - limits.level_tolerance ||
               s.elevation > a.z_top + limits.level_tolerance)
             continue;
-          const double area = overlap_of(polygon(a.outline_W), polygon(s.plan_W)).area;
+          const double area = plan_overlap_area(a.outline_W, s.plan_W);
           if (area <= kNoArea) continue;
           if (slabs++ == 0)
             first_slab = a.label + " stands in " + s.level + " of '" + s.name + "' (" +
@@ -368,7 +371,7 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
       const PlanSlab& a = site.slabs[i];
       const PlanSlab& b = site.slabs[j];
       if (a.structure == b.structure) continue;
-      const Separation sep = separation_of(polygon(a.plan_W), polygon(b.plan_W));
+      const Separation sep = plan_separation(a.plan_W, b.plan_W);
       double& near = nearest[a.structure][b.structure];
       near = std::min(near, sep.distance);
       nearest[b.structure][a.structure] = near;
@@ -401,7 +404,7 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
       for (const PlanSlab& a : site.slabs)
         for (const PlanSlab& b : site.slabs) {
           if (a.structure != static_cast<int>(i) || b.structure != static_cast<int>(j)) continue;
-          const Separation sep = separation_of(polygon(a.plan_W), polygon(b.plan_W));
+          const Separation sep = plan_separation(a.plan_W, b.plan_W);
           if (sep.distance < best.distance) best = sep, best_a = &a, best_b = &b;
         }
       if (!best_a) continue;
@@ -428,11 +431,10 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
       for (const PlanSlab& a : site.slabs)
         for (const PlanSlab& b : site.slabs) {
           if (a.structure != static_cast<int>(i) || b.structure != static_cast<int>(j)) continue;
-          const ConvexPolygon pa = polygon(a.plan_W), pb = polygon(b.plan_W);
-          const Overlap o = overlap_of(pa, pb);
-          if (o.area > area) {
-            area = o.area;
-            depth = -separation_of(pa, pb).distance;
+          const double shared = plan_overlap_area(a.plan_W, b.plan_W);
+          if (shared > area) {
+            area = shared;
+            depth = -plan_separation(a.plan_W, b.plan_W).distance;
             where = a.level + " of '" + a.name + "' and " + b.level + " of '" + b.name + "'";
           }
         }
@@ -457,7 +459,7 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
     const int faced = walls_level3d(config.structures3d.at(static_cast<std::size_t>(w.building)));
     for (const PlanSlab& s : site.slabs) {
       if (s.structure == w.building && s.level_index == faced) {
-        const Separation sep = separation_of(polygon(s.plan_W), polygon(w.plan_W));
+        const Separation sep = plan_separation(s.plan_W, w.plan_W);
         Clearance c;
         c.a = s.name + "/" + s.level;
         c.b = w.name;
@@ -475,11 +477,11 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
                   " (measured), not at " + "the declared gap of " + metres(w.declared_gap));
       } else if (s.structure != w.building && s.elevation >= w.elevation - limits.level_tolerance &&
                  s.elevation <= w.elevation + w.height + limits.level_tolerance) {
-        const Overlap o = overlap_of(polygon(s.plan_W), polygon(w.plan_W));
-        if (o.area > kNoArea)
+        const double shared = plan_overlap_area(s.plan_W, w.plan_W);
+        if (shared > kNoArea)
           problems.error_at(where, "",
                             "the " + w.side + " wall of '" + w.structure + "' overlaps " + s.level +
-                                " of '" + s.name + "' at rest (" + fmt("%.3f m2", o.area) + ")");
+                                " of '" + s.name + "' at rest (" + fmt("%.3f m2", shared) + ")");
       }
     }
     // A wall raised to a level above the ground (isolated above a storey): no column whose
@@ -488,7 +490,7 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
       for (const ColumnSpan& c : spans)
         if (c.z_top > w.elevation - w.height + limits.level_tolerance &&
             c.z_bottom < w.elevation - limits.level_tolerance &&
-            overlap_of(polygon(c.outline_W), polygon(w.plan_W)).area > 0)
+            plan_overlap_area(c.outline_W, w.plan_W) > 0)
           problems.error_at(where, "",
                             "the " + w.side + " wall of '" + w.structure + "' cuts " + c.label);
     for (std::size_t k = 0; k < site.ground_columns.size() && w.elevation <= limits.level_tolerance;

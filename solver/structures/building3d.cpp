@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "geometry/plan_shape.h"
 #include "solver/core/modes.h"
 #include "solver/elements/column_line.h"
 #include "solver/structures/bearing_element.h"
@@ -92,8 +93,9 @@ Assembly assemble(const Building3DConfig& b) {
     const Storey3DConfig& storey = b.storeys[s];
     if (!(storey.height > 0))
       throw std::invalid_argument("storey " + std::to_string(s + 1) + ": height must be > 0");
-    const StoreyStiffness k = storey_stiffness_split(
-        columns_in_plan(b, storey.columns), storey.height, b.column_coupling, b.struck_columns.given);
+    const StoreyStiffness k =
+        storey_stiffness_split(columns_in_plan(b, storey.columns), storey.height, b.column_coupling,
+                               b.struck_columns.given);
     const int storey_number = static_cast<int>(s) + 1;
     const int upper = 3 * floor_level3d(b, storey_number);
     const int lower = 3 * storey_lower_level3d(b, storey_number);  // < 0: the ground
@@ -141,7 +143,11 @@ ColumnLineSpec hinged_column_line(const StruckColumns3DConfig& sc, const Column3
   const double I[2] = {c.I22, c.I11};
   for (std::size_t i = 0; i < 2; ++i) {
     ColumnLineSpec::Direction& d = spec.directions[i];
-    d.column = {c.E, I[i], height, 0.5 * height, sc.yield_moment[i],
+    d.column = {c.E,
+                I[i],
+                height,
+                0.5 * height,
+                sc.yield_moment[i],
                 sc.hardening_ratio * 6.0 * c.E * I[i] / height};
     // The point p's displacement (u - p_y theta, v + p_x theta) along the axis.
     const double ct = -c.position.y * axis[i].x + c.position.x * axis[i].y;
@@ -218,8 +224,7 @@ std::vector<Column3DConfig> columns_in_plan(const Building3DConfig& b,
 }
 
 Vec2 centre_of_mass(const Diaphragm3DConfig& d) {
-  const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
-  return area_properties(plan).p_WC + d.eccentricity;
+  return plan_area_properties(d.plan).p_WC + d.eccentricity;
 }
 
 Eigen::Matrix3d storey_stiffness(const std::vector<Column3DConfig>& columns, double h,
@@ -270,14 +275,13 @@ double polar_moment_about_cm(const Diaphragm3DConfig& d, const AreaProperties& a
 }  // namespace
 
 double polar_moment_about_cm(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
-  const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
-  return polar_moment_about_cm(d, area_properties(plan), dot(d.eccentricity, d.eccentricity), rule);
+  return polar_moment_about_cm(d, plan_area_properties(d.plan), dot(d.eccentricity, d.eccentricity),
+                               rule);
 }
 
 Eigen::Matrix3d diaphragm_mass(const Diaphragm3DConfig& d, EccentricPolarMoment rule) {
   if (!(d.mass > 0)) throw std::invalid_argument("diaphragm mass must be > 0");
-  const ConvexPolygon plan(std::span<const Vec2>(d.plan.data(), d.plan.size()));
-  const AreaProperties area = area_properties(plan);
+  const AreaProperties area = plan_area_properties(d.plan);
   const Vec2 cm = area.p_WC + d.eccentricity;
   const double e2 = dot(d.eccentricity, d.eccentricity);
   const double j_cm = polar_moment_about_cm(d, area, e2, rule);
@@ -389,8 +393,9 @@ void add_building3d(Model& model, const Building3DConfig& b) {
         // Every column with the hinges of struck_columns: (column_line.h), struck or not.
         if (c.hysteresis.yields())
           throw std::invalid_argument(
-              label + ": with struck_columns: a column yields through its hinges (M_y); give it "
-                      "no hysteresis:, or drop struck_columns:");
+              label +
+              ": with struck_columns: a column yields through its hinges (M_y); give it "
+              "no hysteresis:, or drop struck_columns:");
         model.elements.push_back(std::make_unique<ColumnLine>(
             label, hinged_column_line(b.struck_columns, c, b.storeys[s].height, upper, lower)));
         continue;

@@ -11,7 +11,9 @@
 
 #include "geometry/moat.h"
 #include "geometry/overlap.h"
+#include "geometry/plan_shape.h"
 #include "geometry/simple_polygon.h"
+#include "solver/elements/plan_pair.h"
 #include "solver/elements/polygon_contact.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/bumper_layer3d.h"
@@ -23,6 +25,12 @@ namespace {
 
 ConvexPolygon polygon_of(const std::vector<Vec2>& v) {
   return ConvexPolygon(std::span<const Vec2>(v.data(), v.size()));
+}
+
+// A non-convex plan as a simple polygon; empty for a convex one (it takes the convex path).
+SimplePolygon outline_if_not_convex(const std::vector<Vec2>& plan_W) {
+  if (is_convex_list(plan_W)) return {};
+  return SimplePolygon(std::span<const Vec2>(plan_W.data(), plan_W.size()));
 }
 
 std::vector<Vec2> placed(const Building3DConfig& b, const std::vector<Vec2>& plan_B) {
@@ -172,7 +180,7 @@ std::vector<Vec2> moat_wall_outline(const Building3DConfig& b, int side) {
   const MoatWalls3DConfig& w = b.walls;
   const std::vector<Level3D> levels = levels3d(b);
   const ConvexPolygon slab =
-      polygon_of(levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan);
+      convex_hull(levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan);
   const Vec2 lo = slab.box_min(), hi = slab.box_max();
   const double g = w.gap[side], t = w.thickness, e = w.extension;
   double x0, x1, y0, y1;
@@ -204,7 +212,8 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
                              .role = "slab",
                              .elevation = z,
                              .height = 0.0,
-                             .plan_W = polygon_of(placed(b, d.plan)),
+                             .plan_W = convex_hull(placed(b, d.plan)),
+                             .outline_W = outline_if_not_convex(placed(b, d.plan)),
                              .p_WO = {0.0, 0.0},
                              .dof_label_u = prefix + " (x)",
                              .dof_label_v = prefix + " (y)",
@@ -228,6 +237,7 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
                  .elevation = wall_elevation,
                  .height = b.walls.height,
                  .plan_W = polygon_of(placed(b, shape.outline_B)),
+                 .outline_W = {},
                  .p_WO = {0.0, 0.0},
                  .dof_label_u = "",
                  .dof_label_v = "",
@@ -278,7 +288,8 @@ std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
       const Vec2 bmin = b.plan_W.box_min(), bmax = b.plan_W.box_max();
       if (amin.x - bmax.x > d || bmin.x - amax.x > d || amin.y - bmax.y > d || bmin.y - amax.y > d)
         continue;
-      const Separation sep = separation_of(a.plan_W, b.plan_W);
+      const Separation sep = a.convex() && b.convex() ? separation_of(a.plan_W, b.plan_W)
+                                                      : plan_separation(a.outline(), b.outline());
       if (sep.distance > d) continue;
       // The slab is body A (walls always B), so n_AB points from the building into the wall.
       ContactPair3D p;
@@ -428,7 +439,19 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
     const SiteBody& b = bodies[pair.b];
     const PolygonContactConfig law = pair_law(config, a.mass, b.mass);
     const int first = static_cast<int>(model.elements.size());
-    model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(a), body(b), law));
+    if (a.convex() && b.convex()) {
+      model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(a), body(b), law));
+    } else {
+      // One contact per part of the overlap (plan_pair.h): slots "A|B", "A|B #2", ...
+      const auto moves = [](const SiteBody& s) { return !s.dof_label_u.empty(); };
+      auto plans = std::make_shared<PlanPair>(PlanPairBody{a.outline(), a.p_WO, moves(a)},
+                                              PlanPairBody{b.outline(), b.p_WO, moves(b)},
+                                              kPlanContactSlots, law.overlap);
+      for (int slot = 0; slot < kPlanContactSlots; ++slot)
+        model.elements.push_back(std::make_unique<PolygonContact>(
+            slot == 0 ? pair.label : pair.label + " #" + std::to_string(slot + 1), body(a), body(b),
+            law, plans, slot));
+    }
     add_wall_bumper(model, config, a, b, body, law);
     add_slab_bumper(model, config, a, b, body, law);
     add_slab_bumper(model, config, b, a, body, law);
@@ -452,12 +475,29 @@ std::vector<WallClosing> wall_closings(const ModelConfig& config) {
     if (wall.role != "wall") continue;
     const Vec2 n = wall.wall_normal_W;
     double face = -std::numeric_limits<double>::infinity();
-    for (const Vec2& p : slab.plan_W.vertices()) face = std::max(face, dot(n, p));
+    std::vector<Vec2> corners(slab.plan_W.vertices().begin(), slab.plan_W.vertices().end());
+    if (!slab.convex()) {
+      // A non-convex slab: the corners in front of the wall (within its length), the face its
+      // gap before the wall.
+      const Vec2 t{-n.y, n.x};
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo, wall_face = lo;
+      for (const Vec2& p : wall.plan_W.vertices()) {
+        lo = std::min(lo, dot(t, p));
+        hi = std::max(hi, dot(t, p));
+        wall_face = std::min(wall_face, dot(n, p));
+      }
+      corners.clear();
+      for (const Vec2& p : slab.outline_W.vertices())
+        if (dot(t, p) >= lo && dot(t, p) <= hi && dot(n, p) <= wall_face) corners.push_back(p);
+      face = wall_face - wall.wall_gap;
+    } else {
+      for (const Vec2& p : corners) face = std::max(face, dot(n, p));
+    }
     WallClosing w;
     w.label = pair.label;
     w.gap = wall.wall_gap;
     w.dof_labels = {slab.dof_label_u, slab.dof_label_v, slab.dof_label_theta};
-    for (const Vec2& p : slab.plan_W.vertices()) {
+    for (const Vec2& p : corners) {
       w.offset.push_back(dot(n, p) - face);
       // n · (u − yθ, v + xθ) = n_x u + n_y v + (x n_y − y n_x) θ
       w.coefficients.push_back({n.x, n.y, p.x * n.y - p.y * n.x});

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/convex_polygon.h"
+#include "geometry/simple_polygon.h"
 #include "solver/core/model.h"
 #include "solver/structures/config.h"
 #include "solver/structures/config3d.h"
@@ -23,8 +24,10 @@ struct SiteBody {
   // m: a slab's level above the ground (levels3d.h); a wall's top, flush with the level it faces
   double elevation = 0.0;
   double height = 0.0;   // m: a wall's height; a slab 0
-  ConvexPolygon plan_W;  // outline at rest
-  Vec2 p_WO;             // DOF origin at rest (every 3D DOF sits at the plan origin)
+  ConvexPolygon plan_W;  // outline at rest (a non-convex slab: its convex hull)
+  // A non-convex slab's outline at rest (L, T, U: issue 40); empty (size 0) for a convex body.
+  SimplePolygon outline_W;
+  Vec2 p_WO;  // DOF origin at rest (every 3D DOF sits at the plan origin)
   // Prefixes of the DOF labels and history columns, "building/floor 1 (x)"; "" for a fixed body.
   std::string dof_label_u, dof_label_v, dof_label_theta;
   double mass = 0.0;   // kg: the floor's mass, or the wall's (enters m_eff only)
@@ -36,6 +39,9 @@ struct SiteBody {
   double wall_gap = 0.0;
   std::string wall_face;
   std::string label() const { return role == "wall" ? structure : structure + "/" + level; }
+  bool convex() const { return outline_W.size() == 0; }
+  // The outline as a simple polygon, convex or not.
+  SimplePolygon outline() const { return convex() ? SimplePolygon(plan_W.vertices()) : outline_W; }
 };
 
 // Every slab (base slabs and floors, bottom to top per structure) and every moat wall.
@@ -51,6 +57,11 @@ std::vector<std::string> moat_faces(const Building3DConfig& building);
 std::vector<Vec2> moat_wall_outline(const Building3DConfig& building, int side);
 // The level (levels3d.h index) the building's moat walls face: walls.level, else the base slab.
 int walls_level3d(const Building3DConfig& building);
+
+// Contacts of a pair with a non-convex plan: one per part of the overlap, this many at most
+// (solver/elements/plan_pair.h; a slab across both wings of a U meets its neighbour twice; more
+// parts at once get no force and are counted in most_components).
+inline constexpr int kPlanContactSlots = 3;
 
 // A pair of bodies that may meet: indices into site_bodies(); label "A|B".
 struct ContactPair3D {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 
+#include "geometry/plan_shape.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/levels3d.h"
@@ -48,7 +49,7 @@ PlanSlab plan_slab(int index, const Building3DConfig& b, const Diaphragm3DConfig
   s.elevation = elevation;
   for (Vec2 p : d.plan) s.plan_W.push_back(to_plan(b, p));
   s.mass = d.mass;
-  const AreaProperties a = area_properties(ConvexPolygon(std::span<const Vec2>(d.plan)));
+  const AreaProperties a = plan_area_properties(d.plan);
   s.p_WM = to_plan(b, a.p_WC + d.eccentricity);
   return s;
 }
