@@ -3,8 +3,10 @@
 #include "solver/core/analysis.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "solver/core/compressed_rows.h"
@@ -55,11 +57,19 @@ class MemoryHistory : public HistorySink {
 struct GroundSampler {
   const GroundMotion& motion;
   int per_sample;  // analysis intervals per record interval
+  // per_sample = 2^shift (else shift = -1): a step's sample then takes no division, the
+  // fraction multiplied by 2^-shift (exact: x / 2^k and x 2^-k are the same real number, rounded
+  // the same way), the interval split by shifts (intervals are >= 0).
+  int shift = std::has_single_bit(static_cast<unsigned>(per_sample))
+                  ? std::countr_zero(static_cast<unsigned>(per_sample))
+                  : -1;
+  double exact_inverse = shift >= 0 ? 1.0 / per_sample : 0.0;
 
   GroundAcceleration operator()(long interval, double frac_of_interval) const {
-    long k = interval / per_sample;
-    const long j = interval % per_sample;
-    double frac = (static_cast<double>(j) + frac_of_interval) / per_sample;
+    long k = shift >= 0 ? interval >> shift : interval / per_sample;
+    const long j = shift >= 0 ? interval & (per_sample - 1) : interval % per_sample;
+    const double within = static_cast<double>(j) + frac_of_interval;
+    double frac = exact_inverse > 0 ? within * exact_inverse : within / per_sample;
     if (frac >= 1.0) {
       ++k;
       frac = 0.0;
@@ -418,6 +428,12 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     for (std::size_t s = 0; s < res.stories.size(); ++s) {
       const Story& st = res.stories[s];
       const double drift = u[st.upper] - (st.lower >= 0 ? u[st.lower] : 0.0);
+      // The ratio's peaks are the drift's divided by the height (x / h rounds monotonically in x
+      // for a finite h > 0): a drift inside its peaks' band leaves the ratio's alone, undivided.
+      const Peak& peak = res.drift[s];
+      if (drift <= peak.positive && drift >= peak.negative && st.height > 0 &&
+          st.height < std::numeric_limits<double>::infinity())
+        continue;
       update_peak(res.drift[s], drift, t);
       update_peak(res.drift_ratio[s], drift / st.height, t);
     }

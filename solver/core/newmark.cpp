@@ -3,7 +3,9 @@
 #include "solver/core/newmark.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -29,6 +31,20 @@ void copy(const Dense& from, Dense& to) {
   double* t = to.data();
   const Eigen::Index size = kCount > 0 ? kCount : from.size();
   for (Eigen::Index i = 0; i < size; ++i) t[i] = f[i];
+}
+
+// from[0..count) and to[0..count) equal bit for bit (as memcmp: -0 and +0 differ), word by word
+// with an early exit when the count is known at compile time (kCount > 0): a call to memcmp costs
+// more than finding that a new tangent differs in its first words.
+template <int kCount>
+bool same_bits(const double* a, const double* b, Eigen::Index count) {
+  if constexpr (kCount == 0) {
+    return std::memcmp(a, b, static_cast<std::size_t>(count) * sizeof(double)) == 0;
+  } else {
+    for (int i = 0; i < kCount; ++i)
+      if (std::bit_cast<std::uint64_t>(a[i]) != std::bit_cast<std::uint64_t>(b[i])) return false;
+    return true;
+  }
 }
 
 // max_i term(i) over i < n of terms >= 0; NaN if a term is NaN (the callers test for it).
@@ -274,10 +290,10 @@ void NewmarkStepper::solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::Mat
 template <int kSize>
 bool NewmarkStepper::solve_llt() {
   if (k_tangent_.rows() <= SmallLlt::kMaxSize) {
-    const std::size_t bytes = static_cast<std::size_t>(k_tangent_.size()) * sizeof(double);
     const RememberedFactor* known = nullptr;
     for (const RememberedFactor& f : factors_)
-      if (f.set && std::memcmp(f.matrix.data(), k_tangent_.data(), bytes) == 0) known = &f;
+      if (f.set && same_bits<kSize * kSize>(f.matrix.data(), k_tangent_.data(), k_tangent_.size()))
+        known = &f;
     if (!known) {
       RememberedFactor& f = factors_[static_cast<std::size_t>(next_factor_)];
       copy<kSize * kSize>(k_tangent_, f.factor);  // the same size every time

@@ -34,6 +34,7 @@ struct SmallLlt {
     template <int n>
     static bool run(double* a, double*) {
       const auto at = [a](int i, int j) -> double& { return a[i + j * n]; };
+#pragma GCC unroll 8
       for (int k = 0; k < n; ++k) {
         // Eigen: x = a_kk - |row k left of the diagonal|^2, summed in order (a strided row).
         double x = at(k, k);
@@ -69,7 +70,9 @@ struct SmallLlt {
     template <int n>
     static bool run(const double* l, double* b) {
       const auto at = [l](int i, int j) { return l[i + j * n]; };
-      // L y = b, forward by columns.
+      // L y = b, forward by columns. (Both loops unrolled whole: lane_sum's counts become
+      // constants; GCC keeps the backward loop otherwise.)
+#pragma GCC unroll 8
       for (int i = 0; i < n; ++i) {
         if (b[i] == 0.0) continue;
         b[i] /= at(i, i);
@@ -77,6 +80,7 @@ struct SmallLlt {
       }
       // L^T x = y, backward by rows of L^T (columns of L): each row's sum as Eigen's vectorised
       // reduction of the contiguous products, two lanes.
+#pragma GCC unroll 8
       for (int i = n - 1; i >= 0; --i) {
         const int count = n - 1 - i;
         if (count > 0) b[i] -= lane_sum(&l[(i + 1) + i * n], &b[i + 1], count);

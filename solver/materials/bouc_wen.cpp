@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace isopound {
@@ -24,6 +25,11 @@ BoucWenMaterial::BoucWenMaterial(const BoucWenParameters& p) : p_(p) {
   z_saturation_pow_n_ = p.A / (p.beta + p.gamma);
   const double rounded = std::round(p.n);
   integer_n_ = (rounded == p.n && rounded >= 1 && rounded <= 16) ? static_cast<int>(rounded) : 0;
+  // The branches' sub-increments within saturation, as subincrement() computes them.
+  for (Branch* b : {&loading_, &unloading_}) {
+    b->c = b == &loading_ ? p.beta + p.gamma : p.beta - p.gamma;
+    b->h_sub = subincrement_size(std::abs(b->c) * p.n * z_saturation_pow_n_ / z_saturation_);
+  }
   dz_dx_ = p.A;
   dz_dx_commit_ = p.A;
 }
@@ -71,6 +77,16 @@ void BoucWenMaterial::revert() {
   dz_dx_ = dz_dx_commit_;
 }
 
+inline double BoucWenMaterial::dphi(double z, double c) const {
+  const double a = std::abs(z);
+  if (a == 0.0) return p_.n == 1.0 ? -c * std::copysign(1.0, z) : 0.0;
+  const double sign = z > 0 ? 1.0 : -1.0;
+  // n = 1 and c in {0, +-1} (beta = gamma = 1/2): -c |z| is exact, so -c |z| / |z| is -c to the
+  // bit (and its zero's sign): the division need not be made.
+  if (integer_n_ == 1 && (c == 0.0 || std::abs(c) == 1.0) && std::isfinite(a)) return -c * sign;
+  return -c * p_.n * abs_pow_n(z) / a * sign;
+}
+
 // Pseudocode of integrate(z0, dx):
 //   if dx unloads (dx z0 < 0): x* = distance from |z0| to 0 on the unloading branch
 //     if |dx| <= x*: integrate the unloading branch (c = beta - gamma) over dx, done
@@ -99,22 +115,23 @@ BoucWenMaterial::ZUpdate BoucWenMaterial::integrate(double z0, double dx) const 
 //   Newton safeguarded by bisection); dz/dL comes from the remainder step alone.
 BoucWenMaterial::ZUpdate BoucWenMaterial::integrate_branch(double z_start, double length,
                                                            double c) const {
-  const double n = p_.n;
   const auto phi = [&](double z) { return p_.A - c * abs_pow_n(z); };
-  // dPhi/dz = -c n |z|^(n-1) sgn z
-  const auto dphi = [&](double z) {
-    const double a = std::abs(z);
-    if (a == 0.0) return n == 1.0 ? -c * std::copysign(1.0, z) : 0.0;
-    return -c * n * abs_pow_n(z) / a * (z > 0 ? 1.0 : -1.0);
-  };
 
   // Sub-increment from the largest |dPhi/dz| on the path (|z| <= max(|z_start|, z_sat)).
   double bound_pow_n;
   const double total = std::abs(length);
-  const double h_sub = std::max(subincrement(z_start, c, bound_pow_n), total / kMaxSubincrements);
+  const double h_path = subincrement(z_start, c, bound_pow_n);
+  // An increment shorter than a finite sub-increment (most are) is its own remainder: the
+  // quotients would give h_path, no full sub-increment and the whole length (total / h_path < 1
+  // rounds below 1), so they are not formed.
+  double h_sub = h_path, remainder = total;
+  long full = 0;
+  if (!(total < h_path && h_path < std::numeric_limits<double>::infinity())) {
+    h_sub = std::max(h_path, total / kMaxSubincrements);
+    full = h_sub > 0 ? static_cast<long>(std::floor(total / h_sub)) : 0;
+    remainder = total - static_cast<double>(full) * h_sub;
+  }
   const double sign = length >= 0 ? 1.0 : -1.0;
-  const long full = h_sub > 0 ? static_cast<long>(std::floor(total / h_sub)) : 0;
-  const double remainder = total - static_cast<double>(full) * h_sub;
 
   const auto step = [&](double z, double phi_z, double h) {
     return trapezoid_step(z, phi_z, h, c, bound_pow_n);
@@ -131,18 +148,13 @@ BoucWenMaterial::ZUpdate BoucWenMaterial::integrate_branch(double z_start, doubl
   const double z1 = step(z, phi_z, h);
   const double phi1 = phi(z1);
   // d z1 / d h of the trapezoidal map; h grows with L one for one.
-  const double dz_dl = 0.5 * (phi_z + phi1) / (1.0 - 0.5 * h * dphi(z1));
+  const double dz_dl = 0.5 * (phi_z + phi1) / (1.0 - 0.5 * h * dphi(z1, c));
   return {z1, dz_dl};
 }
 
 double BoucWenMaterial::trapezoid_step(double z, double phi_z, double h, double c,
                                        double bound_pow_n) const {
   const auto phi = [&](double x) { return p_.A - c * abs_pow_n(x); };
-  const auto dphi = [&](double x) {
-    const double a = std::abs(x);
-    if (a == 0.0) return p_.n == 1.0 ? -c * std::copysign(1.0, x) : 0.0;
-    return -c * p_.n * abs_pow_n(x) / a * (x > 0 ? 1.0 : -1.0);
-  };
   const double base = z + 0.5 * h * phi_z;
   double z1 = z + h * phi_z;  // explicit predictor
   // n = 2: phi = A - c z^2, so the trapezoidal equation is the quadratic
@@ -161,7 +173,7 @@ double BoucWenMaterial::trapezoid_step(double z, double phi_z, double h, double 
       hi = z1;
     else
       lo = z1;
-    const double dr = 1.0 - 0.5 * h * dphi(z1);
+    const double dr = 1.0 - 0.5 * h * dphi(z1, c);
     double next = z1 - r / dr;
     // Safeguard: bisect when Newton leaves the bracket (a converged iterate may sit on it).
     if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
@@ -176,7 +188,13 @@ double BoucWenMaterial::subincrement(double z_start, double c, double& bound_pow
   const bool beyond = std::abs(z_start) > z_saturation_;
   const double z_bound = beyond ? std::abs(z_start) : z_saturation_;
   bound_pow_n = beyond ? abs_pow_n(z_bound) : z_saturation_pow_n_;
-  const double max_slope = std::abs(c) * p_.n * bound_pow_n / z_bound;
+  // Within saturation the size depends on the branch alone: the two branches' sizes are kept.
+  if (!beyond && c == loading_.c) return loading_.h_sub;
+  if (!beyond && c == unloading_.c) return unloading_.h_sub;
+  return subincrement_size(std::abs(c) * p_.n * bound_pow_n / z_bound);
+}
+
+double BoucWenMaterial::subincrement_size(double max_slope) {
   return max_slope > 0 ? kMaxSubincrementStiffness / max_slope : 1e300;
 }
 

@@ -53,11 +53,18 @@ class BoucWenMaterial final : public UniaxialMaterial {
   double trapezoid_step(double z, double phi_z, double h, double c, double bound_pow_n) const;
   // Sub-increment size on branch c from z_start; sets the bound |z|^n on the path.
   double subincrement(double z_start, double c, double& bound_pow_n) const;
+  static double subincrement_size(double max_slope);  // for the largest |dPhi/dz|
+  double dphi(double z, double c) const;              // dPhi/dz = -c n |z|^(n-1) sgn z
 
   BoucWenParameters p_;
   double z_saturation_;        // (A / (beta + gamma))^(1/n)
   double z_saturation_pow_n_;  // z_saturation_^n = A / (beta + gamma)
   int integer_n_;              // n if n is a small integer, else 0
+  struct Branch {
+    double c = 0.0;      // beta + gamma (loading) or beta - gamma (unloading)
+    double h_sub = 0.0;  // sub-increment within saturation
+  };
+  Branch loading_, unloading_;
   double d_ = 0.0, z_ = 0.0, dz_dx_;
   double d_commit_ = 0.0, z_commit_ = 0.0, dz_dx_commit_;
 };

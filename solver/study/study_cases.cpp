@@ -186,6 +186,9 @@ ValidatedStudy validate_study(const Study& study, int threads) {
   for (const OutputSpec& o : study.outputs) selectors.push_back(parse_output_selector(o.selector));
 
   std::vector<std::pair<std::uint64_t, std::uint64_t>> identities(static_cast<std::size_t>(count));
+  const bool keep_inputs = count <= ValidatedStudy::kKeptInputs;
+  std::vector<std::shared_ptr<const CaseInput>> inputs(keep_inputs ? static_cast<std::size_t>(count)
+                                                                   : 0);
   // Element peaks may be absent from some cases (walls removed in a variant): an error only when
   // no case has them.
   std::vector<std::atomic<bool>> found_somewhere(selectors.size());
@@ -206,7 +209,8 @@ ValidatedStudy validate_study(const Study& study, int threads) {
       const std::int64_t c = next.fetch_add(1);
       if (c >= count || c > first_error.load()) return;
       try {
-        const CaseInput input = builder.input_of(c);
+        auto kept = std::make_shared<CaseInput>(builder.input_of(c));
+        const CaseInput& input = *kept;
         const auto in_case = [&] {
           return " (case " + std::to_string(c) + ": " + builder.describe(c) + ")";
         };
@@ -236,6 +240,7 @@ ValidatedStudy validate_study(const Study& study, int threads) {
         const std::string identity = builder.identity(c);
         identities[static_cast<std::size_t>(c)] = {fnv1a64(identity),
                                                    std::hash<std::string>{}(identity)};
+        if (keep_inputs) inputs[static_cast<std::size_t>(c)] = std::move(kept);
       } catch (...) {
         if (c < mine.error_case) {
           mine.error_case = c;
@@ -267,6 +272,7 @@ ValidatedStudy validate_study(const Study& study, int threads) {
   }
 
   ValidatedStudy out;
+  out.inputs = std::move(inputs);
   std::map<std::string, std::int64_t> motions;
   for (const Found& f : found)
     for (const auto& [key, c] : f.motions) {

@@ -241,7 +241,13 @@ RunRecord CaseRunner::run(std::int64_t case_id) const {
   record.case_id = case_id;
   const Clock::time_point start = Clock::now();
   try {
-    const CaseInput input = builder_.input_of(case_id);
+    // The input validation read, else (a large study) read again.
+    const auto c = static_cast<std::size_t>(case_id);
+    const std::shared_ptr<const CaseInput> input_kept =
+        c < validated_.inputs.size() && validated_.inputs[c]
+            ? validated_.inputs[c]
+            : std::make_shared<const CaseInput>(builder_.input_of(case_id));
+    const CaseInput& input = *input_kept;
     const PreparedMotion& motion = *validated_.motions.at(input.motion_key);
     if (ensemble_ >= 2) {  // study_ensemble.h
       long steps = 0;
