@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry/outline_rules.h"
+
 namespace isopound {
 
 bool is_convex_list(std::span<const Vec2> v) {
@@ -62,22 +64,12 @@ Separation plan_separation(std::span<const Vec2> a, std::span<const Vec2> b) {
 }
 
 bool plan_contains(std::span<const Vec2> plan, Vec2 p, double tolerance) {
+  // On the outline within the tolerance, else inside by the winding number (contains()).
   const std::size_t n = plan.size();
-  // On the outline within the tolerance, or inside by the winding number.
-  int winding = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 a = plan[i], b = plan[(i + 1) % n], d = b - a;
-    const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
-    const Vec2 c = a + t * d;
-    if (std::hypot(p.x - c.x, p.y - c.y) <= tolerance) return true;
-    const double side = cross(d, p - a);
-    if (a.y <= p.y) {
-      if (b.y > p.y && side > 0) ++winding;
-    } else if (b.y <= p.y && side < 0) {
-      --winding;
-    }
-  }
-  return winding != 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (detail::point_segment_distance_sq(p, plan[i], plan[(i + 1) % n]) <= tolerance * tolerance)
+      return true;
+  return contains(SimplePolygon(plan), p);
 }
 
 }  // namespace isopound
