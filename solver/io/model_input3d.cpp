@@ -377,10 +377,19 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   return w;
 }
 
-// follow: outline with sides: [...]: each a face of the outline's walls (moat_faces).
+// follow: outline: walls the outline can have at this gap and thickness (a run too short for the
+// mitres of its re-entrant corners is refused at the walls' thickness); with sides: [...], each a
+// face of the outline's walls (moat_faces).
 void check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
-  if (!b.walls.follow_outline || b.walls.outline_sides.empty()) return;
-  const std::vector<std::string> faces = moat_faces(b);
+  if (!b.walls.follow_outline) return;
+  std::vector<std::string> faces;
+  try {
+    faces = moat_faces(b);
+  } catch (const InvalidPolygon& e) {
+    const auto t = walls.find("thickness");
+    (t ? *t : walls).fail(std::string("no moat can follow this outline: ") + e.what());
+  }
+  if (b.walls.outline_sides.empty()) return;
   const auto sides = walls.find("sides");
   for (const InputNode& side : sides->elements()) {
     if (std::find(faces.begin(), faces.end(), side.string()) != faces.end()) continue;
