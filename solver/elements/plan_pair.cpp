@@ -119,17 +119,8 @@ const Overlap& PlanPair::overlap(int slot, const Placement6& q) const {
 }
 
 Separation PlanPair::least_separation(const Entry& e, std::uint64_t pairs) const {
-  Separation best{std::numeric_limits<double>::infinity(), {1.0, 0.0}};
-  const auto& pa = e.placed_a.pieces();
-  const auto& pb = e.placed_b.pieces();
-  const int nb = int(pb.size());
-  for (int i = 0; i < int(pa.size()); ++i)
-    for (int j = 0; j < nb; ++j) {
-      if (!(pairs & piece_pair_bit(i, j, nb))) continue;
-      const Separation s = separation_of(pa[i], pb[j]);
-      if (s.distance < best.distance) best = s;
-    }
-  if (!std::isfinite(best.distance)) best.distance = size_;  // nothing left: far
+  Separation best = plan_separation(e.placed_a, e.placed_b, ~pairs);
+  if (!std::isfinite(best.distance)) best = {size_, {1.0, 0.0}};  // nothing left: far
   return best;
 }
 
