@@ -83,13 +83,14 @@ std::vector<double> resolved_periods(const std::vector<double>& asked, bool give
   return kept;
 }
 
-// x, y and RotD spectra of one plan point's acceleration pair.
+// x, y and RotD spectra of one plan point's acceleration pair (one SDOF history each).
 template <class Motion>
-void pair_spectra(PlaceSpectra& p, const Motion& x, const Motion& y,
-                  const std::vector<double>& periods, const SpectrumOptions& o) {
-  p.x = response_spectrum(x, periods, o);
-  p.y = response_spectrum(y, periods, o);
-  p.rotd = rotd_spectrum(x, y, periods, o);
+void place_spectra(PlaceSpectra& p, const Motion& x, const Motion& y,
+                   const std::vector<double>& periods, const SpectrumOptions& o) {
+  PairSpectra s = pair_spectra(x, y, periods, o);
+  p.x = std::move(s.first);
+  p.y = std::move(s.second);
+  p.rotd = std::move(s.rotd);
 }
 
 std::string level_of(const std::string& label) {
@@ -148,7 +149,7 @@ void spectra_3d(const RunData& run, const MotionOf& motion, const std::vector<do
         place.level = level_of(l.label);
         place.elevation = l.elevation;
         place.p_W = p_W;
-        pair_spectra(place, px, py, periods, o);
+        place_spectra(place, px, py, periods, o);
         out.places.push_back(std::move(place));
       }
     }
@@ -175,7 +176,7 @@ void all_spectra(const RunData& run, const MotionOf& motion, const SpectrumOptio
       out.notes.push_back("no ground_acceleration_y column: the ground moves along x only");
     }
     out.ground.p_W = Vec2{0.0, 0.0};
-    pair_spectra(out.ground, ground_x, ground_y, out.periods, o);
+    place_spectra(out.ground, ground_x, ground_y, out.periods, o);
     spectra_3d(run, motion, out.periods, o, out);
   } else {
     out.ground.x = response_spectrum(ground_x, out.periods, o);

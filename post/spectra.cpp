@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -60,9 +61,18 @@ void runge_kutta_step(double w, double xi, double h, double p0, double p1, doubl
 }
 
 // Per-angle peaks of a plan point's two SDOF histories, u_θ = u_1 cos θ + u_2 sin θ at θ = 0°, 1°,
-// ..., 179° (peaks sorted on return). A sample no longer than the smallest peak so far,
-// |u| <= min_θ peak(θ), cannot raise any (|u_θ| <= |u|): it is skipped, which leaves the result
-// unchanged and makes the cost about one comparison per sample once the peaks have grown.
+// ..., 179° (peaks sorted on return): each the largest computed |u_1[k] c_θ + u_2[k] s_θ| over
+// the samples k, bit for bit, with that product evaluated only where it can be the largest.
+// - A sample no longer than the smallest peak so far, |u| <= min_θ peak(θ), cannot raise any
+//   (|u_θ| <= |u|): skipped (about one comparison per sample once the peaks have grown).
+// - The sample k* where |u_θ| is largest (the first, if several) is a local extreme of u_θ in time:
+//   a·e_θ >= 0 >= b·e_θ for a maximum (−: a minimum), a = u_k − u_{k−1}, b = u_{k+1} − u_k, up
+//   to the products' rounding, δ = 3ε(|u_k| + |u_{k±1}|). Those θ (mod 180°) are the arc between
+//   the normals of a and b, as wide as the orbit turns in one sample (~6° at 60 samples per
+//   period), widened by 1° plus asin(δ/|a|) + asin(δ/|b|). So each sample updates only the angles
+//   of its arc; the first and last sample, a turn above 90° or a step |a|, |b| < 1000 δ update all.
+// The previous loop over all 180 angles for every sample above the smallest peak cost 9 of the
+// demo's 15 s of floor spectra (an elongated orbit keeps the smallest peak small).
 void rotd_peaks(const std::vector<double>& u1, const std::vector<double>& u2,
                 std::vector<double>& peaks) {
   static const auto [c, s] = [] {
@@ -73,20 +83,68 @@ void rotd_peaks(const std::vector<double>& u1, const std::vector<double>& u2,
     }
     return std::pair{cs, sn};
   }();
+  constexpr double kDegree = std::numbers::pi / 180.0;
+  constexpr double kRounding = 3.0 * std::numeric_limits<double>::epsilon();
   peaks.assign(180, 0.0);
   double smallest = 0.0;
-  for (std::size_t k = 0; k < u1.size(); ++k) {
-    if (u1[k] * u1[k] + u2[k] * u2[k] <= smallest * smallest) continue;
-    for (int d = 0; d < 180; ++d)
-      peaks[d] = std::max(peaks[d], std::abs(u1[k] * c[d] + u2[k] * s[d]));
-    smallest = *std::min_element(peaks.begin(), peaks.end());
+  const std::size_t n = u1.size();
+  double beta = 0.0;  // the direction of u_{k+1} − u_k, computed at sample beta_of
+  std::size_t beta_of = n;
+  const auto update = [&](std::size_t k, int d) {
+    const double p = std::abs(u1[k] * c[d] + u2[k] * s[d]);
+    if (p > peaks[d]) peaks[d] = p;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    const double r2 = u1[k] * u1[k] + u2[k] * u2[k];
+    if (r2 <= smallest * smallest) continue;
+    int first = 0, count = 180;  // the angles d = first, first + 1, ... (mod 180)
+    if (k > 0 && k + 1 < n) {
+      const double ax = u1[k] - u1[k - 1], ay = u2[k] - u2[k - 1];
+      const double bx = u1[k + 1] - u1[k], by = u2[k + 1] - u2[k];
+      // |x| + |y| >= the norm: δ only larger (the arc only wider).
+      const double norm1 = std::abs(u1[k]) + std::abs(u2[k]);
+      const double da = kRounding * (norm1 + std::abs(u1[k - 1]) + std::abs(u2[k - 1]));
+      const double db = kRounding * (norm1 + std::abs(u1[k + 1]) + std::abs(u2[k + 1]));
+      const double la = std::sqrt(ax * ax + ay * ay), lb = std::sqrt(bx * bx + by * by);
+      if (la > 1000.0 * da && lb > 1000.0 * db) {
+        // b of sample k is a of sample k + 1: its direction is kept for the next sample.
+        const double alpha = beta_of == k - 1 ? beta : std::atan2(ay, ax);
+        beta = std::atan2(by, bx);
+        beta_of = k;
+        double turn = beta - alpha;
+        if (turn > std::numbers::pi) turn -= 2.0 * std::numbers::pi;
+        if (turn <= -std::numbers::pi) turn += 2.0 * std::numbers::pi;
+        if (std::abs(turn) < 0.5 * std::numbers::pi) {
+          // The arc from the normal of a (α − 90°) to that of b (α + turn − 90°), in degrees; the
+          // asin of a ratio below 1e-3 is that ratio to 2e-7 of itself (within the 1° added).
+          const double widen = 1.0 + (1.01 * (da / la + db / lb)) / kDegree;
+          const double from =
+              (alpha - 0.5 * std::numbers::pi) / kDegree + std::min(0.0, turn / kDegree);
+          const double lo = std::floor(from - widen);
+          const double hi = std::ceil(from + std::abs(turn) / kDegree + widen);
+          first = static_cast<int>(lo - 180.0 * std::floor(lo / 180.0));  // in [0, 180)
+          count = std::min(180, static_cast<int>(hi - lo) + 1);
+        }
+      }
+    }
+    bool min_may_grow = false;
+    for (int j = 0, d = first; j < count; ++j, d = d == 179 ? 0 : d + 1) {
+      min_may_grow |= peaks[d] == smallest;
+      update(k, d);
+    }
+    if (min_may_grow) smallest = *std::min_element(peaks.begin(), peaks.end());
   }
   std::sort(peaks.begin(), peaks.end());
 }
 
+// The RotD spectrum of the pair `responses` gives at each period; with `first`, `second` also
+// each component's own spectrum from the same histories, as spectrum_of computes it (sd = the
+// peak |u|, psa = w² sd; T = 0: sd 0 and psa = the peak |a|): one SDOF history per component and
+// period where three spectra would compute each twice.
 RotDSpectrum rotd_of(
     std::string name, const std::vector<double>& periods,
-    const std::function<void(double, std::vector<double>&, std::vector<double>&)>& responses) {
+    const std::function<void(double, std::vector<double>&, std::vector<double>&)>& responses,
+    Spectrum* first = nullptr, Spectrum* second = nullptr) {
   RotDSpectrum s;
   s.name = std::move(name);
   std::vector<double> peaks, u1, u2;
@@ -94,6 +152,15 @@ RotDSpectrum rotd_of(
     s.period.push_back(t);
     responses(t, u1, u2);  // T = 0: the accelerations themselves
     rotd_peaks(u1, u2, peaks);
+    for (auto [component, u] : {std::pair{first, &u1}, std::pair{second, &u2}}) {
+      if (!component) continue;
+      double peak = 0.0;
+      for (double x : *u) peak = std::max(peak, std::abs(x));
+      const double w = 2.0 * std::numbers::pi / t;
+      component->period.push_back(t);
+      component->sd.push_back(t == 0.0 ? 0.0 : peak);
+      component->psa.push_back(t == 0.0 ? peak : w * w * peak);
+    }
     const double p50 = 0.5 * (peaks[89] + peaks[90]), p100 = peaks[179];
     if (t == 0.0) {
       s.sd50.push_back(0.0);
@@ -275,14 +342,51 @@ Spectrum response_spectrum(const Accelerogram& g, const std::vector<double>& per
 
 RotDSpectrum rotd_spectrum(const Accelerogram& first, const Accelerogram& second,
                            const std::vector<double>& periods, const SpectrumOptions& options) {
+  return pair_spectra(first, second, periods, options, false).rotd;
+}
+
+PairSpectra pair_spectra(const Accelerogram& first, const Accelerogram& second,
+                         const std::vector<double>& periods, const SpectrumOptions& options,
+                         bool components) {
   if (first.time != second.time)
     throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
                                 ": the two histories are not at the same times");
-  return rotd_of(first.name + "+" + second.name, periods,
-                 [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
-                   u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
-                   u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
-                 });
+  PairSpectra p;
+  if (components) p.first.name = first.name, p.second.name = second.name;
+  p.rotd = rotd_of(first.name + "+" + second.name, periods,
+                   [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
+                     u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
+                     u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
+                   },
+                   components ? &p.first : nullptr, components ? &p.second : nullptr);
+  return p;
+}
+
+PairSpectra pair_spectra(const GroundMotion& first, const GroundMotion& second,
+                         const std::vector<double>& periods, const SpectrumOptions& options) {
+  PairSpectra p;
+  if (first.acceleration.size() != second.acceleration.size()) {
+    // RotD pads the shorter record with zeros, which its own spectrum does not see.
+    p.first = response_spectrum(first, periods, options);
+    p.second = response_spectrum(second, periods, options);
+    p.rotd = rotd_spectrum(first, second, periods, options);
+    return p;
+  }
+  if (std::abs(first.dt - second.dt) > 1e-9 * first.dt)
+    throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
+                                ": the records have different time steps");
+  for (const GroundMotion* g : {&first, &second})
+    for (double t : periods)
+      if (t != 0.0) check(*g, t, options);  // as response_spectrum, before any work
+  p.first.name = first.name;
+  p.second.name = second.name;
+  p.rotd = rotd_of(first.name + "+" + second.name, periods,
+                   [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
+                     u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
+                     u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
+                   },
+                   &p.first, &p.second);
+  return p;
 }
 
 }  // namespace isopound::post

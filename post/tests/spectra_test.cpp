@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -161,6 +162,56 @@ TEST(PostSpectra, RotD100IsTheMaximumOver180AnglesAndAtLeastRotD50) {
     EXPECT_LE(std::max(s1.sd[0], s2.sd[0]), r.sd100[k] * (1 + 1e-12));
   }
   std::filesystem::remove_all(dir);
+}
+
+// The per-angle peaks skip samples and angles that cannot hold a peak (spectra.cpp, rotd_peaks):
+// at T = 0 the RotD ordinates are the peaks of the accelerations themselves, so they must equal,
+// bit for bit, a plain loop over every sample and every angle with the same products. Orbits
+// that stress the skipping: an ellipse growing and shrinking (many samples raise peaks), one
+// almost a line (the smallest peak tiny), sharp reversals and corners (turns near and above
+// 90°), repeated samples and steps of a few ulps (the arc's rounding margin), noise, and
+// samples at every ±0 and tiny magnitude.
+TEST(PostSpectra, RotDPeaksEqualEveryAngleOfEverySampleBitForBit) {
+  std::uint64_t state = 12345;
+  const auto uniform = [&] {  // in [0, 1): a fixed generator, the same on every platform
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  for (int orbit = 0; orbit < 60; ++orbit) {
+    SCOPED_TRACE("orbit " + std::to_string(orbit));
+    const int kind = orbit % 6;
+    const int n = 200 + static_cast<int>(3000 * uniform());
+    const double aspect = std::pow(10.0, -6.0 * uniform()), tilt = kPi * uniform();
+    const double per_period = 4.0 + 80.0 * uniform();
+    Accelerogram x{"x", {}, {}}, y{"y", {}, {}};
+    for (int k = 0; k < n; ++k) {
+      const double t = 2.0 * kPi * k / per_period;
+      double a = std::cos(t), b = aspect * std::sin(t);
+      const double grow = 0.2 + std::sin(kPi * k / n);  // up, then down
+      a *= grow, b *= grow;
+      if (kind == 1) a = std::copysign(std::pow(std::abs(a), 0.2), a), b *= 1e-9;  // near a line
+      if (kind == 2) a = (k / 7) % 2 ? 1.0 - uniform() * 1e-15 : -1.0, b = uniform() * 1e-3;
+      if (kind == 3 && k % 5 != 0) a = x.acceleration.empty() ? a : x.acceleration.back(),
+                                   b = y.acceleration.empty() ? b : y.acceleration.back();
+      if (kind == 3 && k % 11 == 0) a = std::nextafter(a, 2.0);
+      if (kind == 4) a += 0.3 * (uniform() - 0.5), b += 0.3 * (uniform() - 0.5);
+      if (kind == 5) a = k % 3 ? 0.0 : (k % 2 ? -0.0 : 1e-300 * uniform()), b = k % 4 ? b : -0.0;
+      x.time.push_back(0.01 * k);
+      y.time.push_back(0.01 * k);
+      x.acceleration.push_back(std::cos(tilt) * a - std::sin(tilt) * b);
+      y.acceleration.push_back(std::sin(tilt) * a + std::cos(tilt) * b);
+    }
+    std::vector<double> peaks(180, 0.0);
+    for (int d = 0; d < 180; ++d) {
+      const double c = std::cos(d * kPi / 180.0), s = std::sin(d * kPi / 180.0);
+      for (int k = 0; k < n; ++k)
+        peaks[d] = std::max(peaks[d], std::abs(x.acceleration[k] * c + y.acceleration[k] * s));
+    }
+    std::sort(peaks.begin(), peaks.end());
+    const RotDSpectrum r = rotd_spectrum(x, y, {0.0});
+    EXPECT_EQ(r.psa100[0], peaks[179]);
+    EXPECT_EQ(r.psa50[0], 0.5 * (peaks[89] + peaks[90]));
+  }
 }
 
 // An accelerogram at irregular times (a run's analysis steps) drawing the same straight lines as
