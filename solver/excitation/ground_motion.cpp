@@ -373,8 +373,9 @@ double acceleration_unit_si(std::string unit) {
   unit = std::move(seconds);
   for (const std::string_view square : {"/S**2", "/S^2", "/S2"}) {  // CM/S**2 -> CM/S/S
     if (!unit.ends_with(square)) continue;
-    unit.resize(unit.size() - square.size());
-    unit.append("/S/S");  // appended: GCC 12 warns a false -Wrestrict on '+' at -O3
+    // Replaced in place: GCC 12 at -O3 warns falsely on '+' (-Wrestrict) and, depending on
+    // inlining, on resize() (-Wstringop-overflow).
+    unit.replace(unit.size() - square.size(), square.size(), "/S/S");
   }
   if (unit == "G" || unit == "GS") return kGravity;
   if (unit == "GAL" || unit == "GALS" || unit == "CM/S/S") return 0.01;
