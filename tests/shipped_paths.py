@@ -595,6 +595,12 @@ def readme_section(args, slug):
             if study in text:
                 shorten_study(os.path.join(tree, study), args.until)
                 note += f"; {study} with every run stopped at {args.until:g} s (README: long)"
+        if (args.readme_until is not None and re.match(r"isopound run\b", text)
+                and "--until" not in text and not re.search(r"[|;&<>]", text)):
+            # The sanitizer tree: the line's own options, a shorter analysis (ensembles of whole
+            # records took 30-40 s each there; the Release tree runs the line as written).
+            text += f" --until {args.readme_until:g}"
+            note += f"; stopped at {args.readme_until:g} s (--readme-until: sanitizer tree)"
         if (re.search(r"isopound demo\b", text) and "--2d" not in text
                 and "--no-pictures" not in text
                 and not os.path.exists(os.path.join(args.bin, "isopound-post"))):
@@ -712,6 +718,8 @@ def main():
     parser.add_argument("--scratch", default=os.path.join(ROOT, "out", "shipped-paths"))
     parser.add_argument("--until", type=float, default=5.0, help="run --until T (s)")
     parser.add_argument("--timeout", type=float, default=300.0, help="per command (s)")
+    parser.add_argument("--readme-until", type=float, default=None,
+                        help="README lines `isopound run ...` stopped at T (s); default: as written")
     args = parser.parse_args()
     if args.what == "list":
         for kind, target in test_names():
