@@ -353,12 +353,13 @@ PairSpectra pair_spectra(const Accelerogram& first, const Accelerogram& second,
                                 ": the two histories are not at the same times");
   PairSpectra p;
   if (components) p.first.name = first.name, p.second.name = second.name;
-  p.rotd = rotd_of(first.name + "+" + second.name, periods,
-                   [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
-                     u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
-                     u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
-                   },
-                   components ? &p.first : nullptr, components ? &p.second : nullptr);
+  p.rotd = rotd_of(
+      first.name + "+" + second.name, periods,
+      [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
+        u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
+        u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
+      },
+      components ? &p.first : nullptr, components ? &p.second : nullptr);
   return p;
 }
 
@@ -380,12 +381,13 @@ PairSpectra pair_spectra(const GroundMotion& first, const GroundMotion& second,
       if (t != 0.0) check(*g, t, options);  // as response_spectrum, before any work
   p.first.name = first.name;
   p.second.name = second.name;
-  p.rotd = rotd_of(first.name + "+" + second.name, periods,
-                   [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
-                     u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
-                     u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
-                   },
-                   &p.first, &p.second);
+  p.rotd = rotd_of(
+      first.name + "+" + second.name, periods,
+      [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
+        u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
+        u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
+      },
+      &p.first, &p.second);
   return p;
 }
 

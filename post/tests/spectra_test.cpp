@@ -191,8 +191,9 @@ TEST(PostSpectra, RotDPeaksEqualEveryAngleOfEverySampleBitForBit) {
       a *= grow, b *= grow;
       if (kind == 1) a = std::copysign(std::pow(std::abs(a), 0.2), a), b *= 1e-9;  // near a line
       if (kind == 2) a = (k / 7) % 2 ? 1.0 - uniform() * 1e-15 : -1.0, b = uniform() * 1e-3;
-      if (kind == 3 && k % 5 != 0) a = x.acceleration.empty() ? a : x.acceleration.back(),
-                                   b = y.acceleration.empty() ? b : y.acceleration.back();
+      if (kind == 3 && k % 5 != 0)
+        a = x.acceleration.empty() ? a : x.acceleration.back(),
+        b = y.acceleration.empty() ? b : y.acceleration.back();
       if (kind == 3 && k % 11 == 0) a = std::nextafter(a, 2.0);
       if (kind == 4) a += 0.3 * (uniform() - 0.5), b += 0.3 * (uniform() - 0.5);
       if (kind == 5) a = k % 3 ? 0.0 : (k % 2 ? -0.0 : 1e-300 * uniform()), b = k % 4 ? b : -0.0;
