@@ -137,10 +137,25 @@ void rotd_peaks(const std::vector<double>& u1, const std::vector<double>& u2,
   std::sort(peaks.begin(), peaks.end());
 }
 
+// One ordinate of a component's spectrum from its samples u at period t: sd = the peak |u|,
+// psa = w² sd; T = 0 (u: the accelerations themselves): sd 0 and psa = the peak |a|.
+void add_ordinate(Spectrum& s, double t, const std::vector<double>& u) {
+  double peak = 0.0;
+  for (double x : u) peak = std::max(peak, std::abs(x));
+  s.period.push_back(t);
+  if (t == 0.0) {
+    s.sd.push_back(0.0);
+    s.psa.push_back(peak);
+    return;
+  }
+  const double w = 2.0 * std::numbers::pi / t;
+  s.sd.push_back(peak);
+  s.psa.push_back(w * w * peak);
+}
+
 // The RotD spectrum of the pair `responses` gives at each period; with `first`, `second` also
-// each component's own spectrum from the same histories, as spectrum_of computes it (sd = the
-// peak |u|, psa = w² sd; T = 0: sd 0 and psa = the peak |a|): one SDOF history per component and
-// period where three spectra would compute each twice.
+// each component's own spectrum (add_ordinate) from the same histories: one SDOF history per
+// component and period where three spectra would compute each twice.
 RotDSpectrum rotd_of(
     std::string name, const std::vector<double>& periods,
     const std::function<void(double, std::vector<double>&, std::vector<double>&)>& responses,
@@ -152,15 +167,8 @@ RotDSpectrum rotd_of(
     s.period.push_back(t);
     responses(t, u1, u2);  // T = 0: the accelerations themselves
     rotd_peaks(u1, u2, peaks);
-    for (auto [component, u] : {std::pair{first, &u1}, std::pair{second, &u2}}) {
-      if (!component) continue;
-      double peak = 0.0;
-      for (double x : *u) peak = std::max(peak, std::abs(x));
-      const double w = 2.0 * std::numbers::pi / t;
-      component->period.push_back(t);
-      component->sd.push_back(t == 0.0 ? 0.0 : peak);
-      component->psa.push_back(t == 0.0 ? peak : w * w * peak);
-    }
+    if (first) add_ordinate(*first, t, u1);
+    if (second) add_ordinate(*second, t, u2);
     const double p50 = 0.5 * (peaks[89] + peaks[90]), p100 = peaks[179];
     if (t == 0.0) {
       s.sd50.push_back(0.0);
@@ -176,6 +184,33 @@ RotDSpectrum rotd_of(
     }
   }
   return s;
+}
+
+// rotd_of for two histories of the same length and step (the caller checks), each period's pair
+// of SDOF displacements (T = 0: the accelerations).
+template <class History>
+RotDSpectrum rotd_of_pair(const History& a, const History& b, const std::vector<double>& periods,
+                          const SpectrumOptions& options, Spectrum* first = nullptr,
+                          Spectrum* second = nullptr) {
+  return rotd_of(
+      a.name + "+" + b.name, periods,
+      [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
+        u1 = t == 0.0 ? a.acceleration : sdof_displacement(a, t, options);
+        u2 = t == 0.0 ? b.acceleration : sdof_displacement(b, t, options);
+      },
+      first, second);
+}
+
+void check_same_step(const GroundMotion& first, const GroundMotion& second) {
+  if (std::abs(first.dt - second.dt) > 1e-9 * first.dt)
+    throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
+                                ": the records have different time steps");
+}
+
+void check_same_times(const Accelerogram& first, const Accelerogram& second) {
+  if (first.time != second.time)
+    throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
+                                ": the two histories are not at the same times");
 }
 
 // The period and options of one SDOF, for a record or an accelerogram.
@@ -200,19 +235,10 @@ Spectrum spectrum_of(const History& history, const std::vector<double>& periods,
   Spectrum s;
   s.name = history.name;
   for (double t : periods) {
-    s.period.push_back(t);
-    if (t == 0.0) {
-      double pga = 0.0;
-      for (double a : history.acceleration) pga = std::max(pga, std::abs(a));
-      s.sd.push_back(0.0);
-      s.psa.push_back(pga);
-      continue;
-    }
-    double peak = 0.0;
-    for (double u : sdof_displacement(history, t, options)) peak = std::max(peak, std::abs(u));
-    const double w = 2.0 * std::numbers::pi / t;
-    s.sd.push_back(peak);
-    s.psa.push_back(w * w * peak);
+    if (t == 0.0)
+      add_ordinate(s, t, history.acceleration);
+    else
+      add_ordinate(s, t, sdof_displacement(history, t, options));
   }
   return s;
 }
@@ -289,18 +315,12 @@ SpectrumStatistics spectrum_statistics(const std::vector<Spectrum>& spectra) {
 
 RotDSpectrum rotd_spectrum(const GroundMotion& first, const GroundMotion& second,
                            const std::vector<double>& periods, const SpectrumOptions& options) {
-  if (std::abs(first.dt - second.dt) > 1e-9 * first.dt)
-    throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
-                                ": the records have different time steps");
+  check_same_step(first, second);
   GroundMotion a = first, b = second;
   const std::size_t n = std::max(a.acceleration.size(), b.acceleration.size());
   a.acceleration.resize(n, 0.0);
   b.acceleration.resize(n, 0.0);
-  return rotd_of(first.name + "+" + second.name, periods,
-                 [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
-                   u1 = t == 0.0 ? a.acceleration : sdof_displacement(a, t, options);
-                   u2 = t == 0.0 ? b.acceleration : sdof_displacement(b, t, options);
-                 });
+  return rotd_of_pair(a, b, periods, options);
 }
 
 std::vector<double> sdof_displacement(const Accelerogram& g, double period,
@@ -342,24 +362,17 @@ Spectrum response_spectrum(const Accelerogram& g, const std::vector<double>& per
 
 RotDSpectrum rotd_spectrum(const Accelerogram& first, const Accelerogram& second,
                            const std::vector<double>& periods, const SpectrumOptions& options) {
-  return pair_spectra(first, second, periods, options, false).rotd;
+  check_same_times(first, second);
+  return rotd_of_pair(first, second, periods, options);
 }
 
 PairSpectra pair_spectra(const Accelerogram& first, const Accelerogram& second,
-                         const std::vector<double>& periods, const SpectrumOptions& options,
-                         bool components) {
-  if (first.time != second.time)
-    throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
-                                ": the two histories are not at the same times");
+                         const std::vector<double>& periods, const SpectrumOptions& options) {
+  check_same_times(first, second);
   PairSpectra p;
-  if (components) p.first.name = first.name, p.second.name = second.name;
-  p.rotd = rotd_of(
-      first.name + "+" + second.name, periods,
-      [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
-        u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
-        u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
-      },
-      components ? &p.first : nullptr, components ? &p.second : nullptr);
+  p.first.name = first.name;
+  p.second.name = second.name;
+  p.rotd = rotd_of_pair(first, second, periods, options, &p.first, &p.second);
   return p;
 }
 
@@ -373,21 +386,10 @@ PairSpectra pair_spectra(const GroundMotion& first, const GroundMotion& second,
     p.rotd = rotd_spectrum(first, second, periods, options);
     return p;
   }
-  if (std::abs(first.dt - second.dt) > 1e-9 * first.dt)
-    throw std::invalid_argument("RotD pair " + first.name + ", " + second.name +
-                                ": the records have different time steps");
-  for (const GroundMotion* g : {&first, &second})
-    for (double t : periods)
-      if (t != 0.0) check(*g, t, options);  // as response_spectrum, before any work
+  check_same_step(first, second);
   p.first.name = first.name;
   p.second.name = second.name;
-  p.rotd = rotd_of(
-      first.name + "+" + second.name, periods,
-      [&](double t, std::vector<double>& u1, std::vector<double>& u2) {
-        u1 = t == 0.0 ? first.acceleration : sdof_displacement(first, t, options);
-        u2 = t == 0.0 ? second.acceleration : sdof_displacement(second, t, options);
-      },
-      &p.first, &p.second);
+  p.rotd = rotd_of_pair(first, second, periods, options, &p.first, &p.second);
   return p;
 }
 

@@ -96,7 +96,6 @@ struct PairSpectra {
 PairSpectra pair_spectra(const GroundMotion& first, const GroundMotion& second,
                          const std::vector<double>& periods, const SpectrumOptions& options = {});
 PairSpectra pair_spectra(const Accelerogram& first, const Accelerogram& second,
-                         const std::vector<double>& periods, const SpectrumOptions& options = {},
-                         bool components = true);
+                         const std::vector<double>& periods, const SpectrumOptions& options = {});
 
 }  // namespace isopound::post
