@@ -50,9 +50,9 @@ statistics:
 )";
 }
 
-// 9 u_y x 5 Q/W x 5 T_b = 225 bilinear runs of a 4 s pulse: long enough to be stopped mid-way (the
-// test stops it a few runs after 40; a run takes ~1 ms in Release, 30 ms under the sanitizers),
-// short enough for the sanitizer tree (1025 runs of 6 s took 60-98 s there).
+// 9 u_y x 5 Q/W x 5 T_b = 225 bilinear runs of a 4 s pulse: long enough to be stopped mid-way (once
+// the test sees 40 done: 64 here, the store writes runs in batches; a run takes ~1 ms in Release,
+// 30 ms under the sanitizers), short enough for the sanitizer tree (1025 runs of 6 s: 60-98 s).
 std::string resumable_study() {
   return "name: resumable\nmodel: " + test::thesis_model() + R"(
 set:
