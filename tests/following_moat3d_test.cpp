@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -16,10 +17,13 @@
 #include "solver/elements/polygon_contact.h"
 #include "solver/excitation/ground_motion.h"
 #include "solver/io/model_input.h"
+#include "solver/io/report3d.h"
 #include "solver/io/yaml_reader.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/job.h"
 #include "solver/structures/pounding3d.h"
+#include "tests/model_test_support.h"
+#include "tests/peak_comparison.h"
 
 namespace isopound {
 namespace {
@@ -282,6 +286,84 @@ TEST(FollowingMoat3D, LPodiumStrikesItsWallsPassively) {
     EXPECT_GE(struck, 1) << angle;
     EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3) << angle;
   }
+}
+
+// The L podium under the RSN1084 pair at 320° (configs/3d-l-podium-moat.yaml turned): at 4.35 s
+// the wing's long edge lies along its wall and the overlap turns from a triangle into a
+// quadrilateral at the mitre, where the thesis's δ_N rule makes c_N jump by √2. Newton flipped
+// between the two at the smallest step and the run stopped ("diverged") until the analysis held
+// the committed shape for such a step (Element::hold_branch). Now it goes on, passive, with its
+// energy balanced; held_steps says the step was taken.
+TEST(FollowingMoat3D, LPodiumGoesOnWhereNewtonFlipsBetweenTriangleAndQuadrilateral) {
+  ISOPOUND_REQUIRE_RECORDS();
+  ModelConfig c = test::load_shipped_config("3d-l-podium-moat.yaml");
+  c.ground_motion.angle = 320.0 * std::numbers::pi / 180.0;
+  c.analysis.t_end = 4.4;
+  c.output.histories = false;
+  JobResult r;
+  ASSERT_NO_THROW(r = run_job(c));
+  EXPECT_GE(r.analysis.stats.held_steps, 1);
+  EXPECT_LT(std::abs(r.analysis.energy.relative_error), 1e-3);
+  for (const auto& e : r.model.elements) {
+    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
+    if (!p || p->episodes() == 0) continue;
+    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
+  }
+}
+
+// Issue 40's convergence acceptance for the L-shaped example: over the window before pounding
+// makes runs unpredictable (the first 3.6 s, THEORY.md section 12), the peaks at the default
+// tolerance within 1 % of a run at 1e-6, at every 30°
+// (configs/studies/3d-l-podium-angles-window.yaml runs all 73 angles: worst 0.37 %). Compared:
+// every peak of the building but accelerations, the floors' accelerations as the study's envelopes
+// (largest resultant over the floors, at the centres of mass and at the corners), and per contact
+// quantity its largest over the walls' contacts. Left out: the struck base slab's accelerations, a
+// spike a few steps long at each impact whose sampled peak moves with the step grid, not with the
+// accuracy (at 60° its corner's x peak is 294, 293, 281 and 287 m/s² at tolerances 1e-4 ... 1e-7),
+// and the floors' components just after an impact (at 60°, floor 2's y: 1.1 % against 1e-6).
+TEST(FollowingMoat3D, LPodiumWindowPeaksWithin1PercentOfTolerance1e6) {
+  ISOPOUND_REQUIRE_RECORDS();
+  ModelConfig c = test::load_shipped_config("3d-l-podium-moat.yaml");
+  c.analysis.t_end = 3.6;
+  c.output.histories = false;
+  const auto peaks = [&](double tolerance) {
+    c.analysis.tolerance = tolerance;
+    const JobResult r = run_job(c);
+    std::map<std::string, std::pair<double, std::string>> building, contacts, out;
+    test::peak_leaves(summary3d_json(r), "", building);
+    for (const auto& [k, v] : building) {
+      if (k.find("acceleration") == std::string::npos) {
+        out[k] = v;
+      } else if (k.find("/levels/0/") == std::string::npos && k.ends_with("/resultant")) {
+        // Floors' accelerations as the study's envelopes: the largest over the floors, at the
+        // centres of mass and at the corners.
+        auto& largest = out[k.find("corners") == std::string::npos ? "a_floors" : "a_corners"];
+        largest = {std::max(largest.first, v.first), v.second};
+      }
+    }
+    test::peak_leaves(contacts3d_json(r), "", contacts);
+    for (const auto& [k, v] : contacts) {  // "/<contact>/<quantity>": the largest over contacts
+      const std::string quantity = "contacts" + k.substr(k.find('/', 1));
+      auto& largest = out[quantity];
+      largest = {std::max(largest.first, std::abs(v.first)), v.second};
+    }
+    return out;
+  };
+  test::Comparison worst;
+  int compared = 0;
+  for (int degrees = 0; degrees < 360; degrees += 30) {
+    c.ground_motion.angle = degrees * std::numbers::pi / 180.0;
+    const auto p = peaks(1e-4), q = peaks(1e-6);
+    ASSERT_EQ(p.size(), q.size());
+    for (const auto& [k, v] : q) {
+      if (v.first == 0.0) continue;
+      const double d = test::relative_difference(p.at(k).first, v.first);
+      if (d > worst.worst) worst = {d, std::to_string(degrees) + " deg " + k};
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 1000);
+  EXPECT_LE(worst.worst, 1e-2) << worst.where;
 }
 
 // What does not take a non-convex plan yet is refused at its key: a slab's bumper, and struck

@@ -956,6 +956,51 @@ TEST(PolygonContactOptions, DampingJumpOfTheThesisIndentationRule) {
   }
 }
 
+// The analysis's last resort at its smallest step (Element::hold_branch): a held contact keeps its
+// committed shape's δ_N rule. Committed as a triangle, a trial that is a quadrilateral has the
+// triangle's c_N (1/√2 of its own) while held, its own again when released; committing a held
+// trial keeps the triangle; a contact not closed at the commit has nothing to hold.
+TEST(PolygonContactOptions, HeldBranchKeepsTheCommittedShapesIndentationRule) {
+  PolygonContactConfig cfg;
+  cfg.friction = false;
+  PolygonContact c("c", slab(0), wall_at(6.0), cfg);
+  c.begin_step(1e-3, false);
+  Eigen::VectorXd u = Eigen::Vector3d(0, 0, 0.17), v = Eigen::Vector3d(0.5, 0, 0);
+  const auto count_at = [&](double x) {
+    return overlap_of(slab(0).shape.placed({x, 0, u[2]}), wall_at(6.0).shape).vertex_count;
+  };
+  // The last triangle and the first quadrilateral along the approach.
+  double x_tri = -1.0, x_quad = -1.0;
+  for (int i = 0; i < 25000 && x_quad < 0; ++i) {
+    const int n = count_at(i * 1e-4);
+    if (n == 3) x_tri = i * 1e-4;
+    if (n == 4 && x_tri >= 0) x_quad = i * 1e-4;
+  }
+  ASSERT_GE(x_quad, 0.0);
+  const auto damping = [&](double x) {  // c_N δ̇_N of the trial at x
+    u[0] = x;
+    c.set_trial(u, v);
+    return c.output(0) - cfg.k_normal * c.output(2);
+  };
+  const double own = damping(x_quad);
+  u[0] = x_tri;
+  c.set_trial(u, v);
+  c.commit();
+  c.hold_branch(true);
+  EXPECT_NEAR(damping(x_quad) / own, 1.0 / std::sqrt(2.0), 1e-12);
+  c.commit();  // a held quadrilateral committed: still the triangle's rule while held
+  EXPECT_NEAR(damping(x_quad) / own, 1.0 / std::sqrt(2.0), 1e-12);
+  c.hold_branch(false);
+  EXPECT_EQ(damping(x_quad), own);
+  // Open at the commit: the first trial in contact takes its own shape, held or not.
+  PolygonContact open("open", slab(0), wall_at(6.0), cfg);
+  open.begin_step(1e-3, false);
+  open.hold_branch(true);
+  u[0] = x_quad;
+  open.set_trial(u, v);
+  EXPECT_EQ(open.output(0), c.output(0));
+}
+
 // Stick/slip transitions converge with the step: the slide of the pressed slab (its stop time
 // and the friction-dissipated energy) at h = 4e-4, 2e-4, 1e-4 s.
 TEST(PolygonContactFriction, SlideConvergesAsTheStepShrinks) {

@@ -549,6 +549,7 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     p_elem_prev = 0.0;
     for (const auto& el : model.elements) p_elem_prev += el->power(stepper.v());
   };
+  bool holding = false;  // the step being tried holds the elements' branches
   for (long i = 0; i < intervals; ++i) {
     double pos = 0.0;
     double forced = 0.0;  // > 0: the fraction of H of a step cut at an event
@@ -562,8 +563,22 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
       const double h = frac * H;
       const GroundAcceleration ag1 = ground(i, pos + frac);
       const bool at_event = forced > 0;
-      const StepOutcome out = stepper.try_step(h, ag1, regular, at_event);
+      if (holding) {  // the held step is over (accepted or not): branches switch freely again
+        for (const int k : eventful) model.elements[k]->hold_branch(false);
+        holding = false;
+      }
+      StepOutcome out = stepper.try_step(h, ag1, regular, at_event);
       st.newton_iterations += out.iterations;
+      if (!out.converged && frac <= min_fraction * (1 + 1e-9)) {
+        // Newton fails at the smallest step: a force that jumps with the placement can make it
+        // flip between the two sides for ever. Retry with every law on its committed branch.
+        stepper.reject();
+        for (const int k : eventful) model.elements[k]->hold_branch(true);
+        holding = true;
+        out = stepper.try_step(h, ag1, regular, at_event);
+        st.newton_iterations += out.iterations;
+        if (out.converged) ++st.held_steps;
+      }
       const double err = adaptive && out.converged ? stepper.error_norm(force_scale) : 0.0;
       if (!out.converged || err > 1.0) {
         // Error-based halving only when adaptive; a Newton failure (e.g. a contact switching
@@ -654,6 +669,8 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     }
   }
 
+  if (holding)
+    for (const int k : eventful) model.elements[k]->hold_branch(false);
   EnergyBalance& en = res.energy;
   const double supplied = std::abs(en.input) + std::max(initial_energy, 0.0);
   en.relative_error = supplied > 0 ? std::abs(en.error) / supplied : 0.0;

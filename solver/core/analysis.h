@@ -52,7 +52,8 @@ struct RunStatistics {
   long steps = 0;           // accepted steps
   long rejected_steps = 0;  // steps redone with half the size
   long newton_iterations = 0;
-  long restarts = 0;  // restarts from equilibrium after a force jump at an event
+  long restarts = 0;    // restarts from equilibrium after a force jump at an event
+  long held_steps = 0;  // smallest steps taken with a law's branch held (Element::hold_branch)
   double min_step = 0.0, max_step = 0.0;  // s
   double wall_seconds = 0.0;
   double duration = 0.0;     // s of analysed time

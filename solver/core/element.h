@@ -79,6 +79,11 @@ class Element {
   // with freeze_status the element keeps its committed status (open/closed) through the trial:
   // the step is one cut to end at an event, which settle_event() then applies.
   virtual void begin_step(double /*h*/, bool /*freeze_status*/) {}
+  // The analysis's last resort at its smallest step, when Newton flips between the two sides of
+  // a force that jumps with the placement (the thesis's contact indentation at a triangle <->
+  // quadrilateral overlap): through the trials until the next begin_step without it, the element
+  // keeps the committed branch of such a law. It switches in a later step, from the other side.
+  virtual void hold_branch(bool /*hold*/) {}
   // After a converged trial: the fraction of the step in (0, 1) at which the element's first
   // status change occurs (contact onset, separation, approach/restitution switch), or 1.
   // The element remembers which event it was.

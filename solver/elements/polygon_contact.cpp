@@ -224,10 +224,10 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.width = length(ov.p_WP2 - ov.p_WP1);
   const bool thesis = cfg_.indentation == IndentationRule::kThesis;
   // A_c / δ_N: w (quadrilateral and up, or the mean-depth rule) or w/2 (triangle, thesis rule).
-  const double area_per_depth = secant_width_of(ov);
+  out.triangle = hold_branch_ && C.closed ? C.triangle : ov.vertex_count == 3;
+  const double area_per_depth = secant_width_of(ov, out.triangle);
   out.secant_width = area_per_depth;
-  out.indentation =
-      at_surface ? 0.0 : (thesis && ov.vertex_count == 3 ? 2.0 : 1.0) * out.area / out.width;
+  out.indentation = at_surface ? 0.0 : (thesis && out.triangle ? 2.0 : 1.0) * out.area / out.width;
   const Vec2 r_A = ov.p_WC - o_A, r_B = ov.p_WC - o_B;
   const Vec2 v_A = point_velocity(qdot[0], qdot[1], qdot[2], r_A);
   const Vec2 v_B = point_velocity(qdot[3], qdot[4], qdot[5], r_B);
@@ -330,8 +330,12 @@ Overlap PolygonContact::surface_overlap(const ConvexPolygon& pa, const ConvexPol
 }
 
 double PolygonContact::secant_width_of(const Overlap& ov) const {
+  return secant_width_of(ov, ov.vertex_count == 3);
+}
+
+double PolygonContact::secant_width_of(const Overlap& ov, bool triangle) const {
   const double w = length(ov.p_WP2 - ov.p_WP1);
-  return cfg_.indentation == IndentationRule::kThesis && ov.vertex_count == 3 ? 0.5 * w : w;
+  return cfg_.indentation == IndentationRule::kThesis && triangle ? 0.5 * w : w;
 }
 
 double PolygonContact::speed_bound(const Vec6& qdot) const {

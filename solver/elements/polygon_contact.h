@@ -111,6 +111,9 @@ class PolygonContact final : public Element {
     longest_step_ = std::max(longest_step_, h);
     freeze_ = freeze_status;
   }
+  // Held: a closed contact keeps its committed overlap shape's δ_N rule (eq. 5.20: triangle or
+  // not), whose c_N jumps by √2 where a triangle overlap becomes a quadrilateral.
+  void hold_branch(bool hold) override { hold_branch_ = hold; }
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
@@ -206,6 +209,7 @@ class PolygonContact final : public Element {
     double rate_n = 0.0;          // δ̇_N: approach rate at C along n_AB, m/s (> 0 closing)
     double rate_t = 0.0;          // u̇_T: sliding rate of B on A at C along t_AB, m/s
     double secant_width = 0.0;    // A_c/δ_N of the overlap's shape (w, or w/2), m
+    bool triangle = false;        // the overlap's shape takes eq. 5.20's triangle rule
     double raw_normal = 0.0;      // F_N before the no-tension clamp
     double elastic_normal = 0.0;  // k_N A_c (or the law's F(δ_N, 0))
     double normal = 0.0, tangential = 0.0;  // F_N, F_T as applied
@@ -254,6 +258,7 @@ class PolygonContact final : public Element {
   double speed_of(const State& s) const;
   // A_c/δ_N of an overlap's shape under the configured indentation rule (w, or w/2).
   double secant_width_of(const Overlap& ov) const;
+  double secant_width_of(const Overlap& ov, bool triangle) const;
   // The contact step of the area law at a secant width (m): π √(m_eff/(k_N w_s))/steps, w_s
   // bounded below by width_floor_.
   double area_contact_step(double secant_width) const;
@@ -288,6 +293,7 @@ class PolygonContact final : public Element {
   double h_ = 0.0;
   double longest_step_ = 0.0;  // s, the longest step tried so far (the analysis interval)
   bool freeze_ = false;
+  bool hold_branch_ = false;
   FrictionStatus forced_friction_ = FrictionStatus::kFree;
   State committed_, trial_;
   struct Trig {

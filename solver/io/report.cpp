@@ -463,6 +463,8 @@ nlohmann::json summary_json(const ModelConfig& config, const JobResult& job,
                      {"max_step_s", st.max_step},
                      {"analysed_time_s", st.duration},
                      {"wall_seconds", st.wall_seconds}};
+  // Only when it happened (docs/theory.md, "Steps at a jump of the contact force").
+  if (st.held_steps > 0) j["statistics"]["held_steps"] = st.held_steps;
   // How the analysis ended: at the record's end + extra_time, or at t_end (stated, with the
   // clipping of a t_end past the record), so that a shortened run never reads as a whole one.
   const std::string end_note = analysis_end_note(st);
@@ -672,6 +674,13 @@ void print_summary(std::ostream& out, const ModelConfig& config, const JobResult
                 r.stats.steps, r.stats.rejected_steps, r.stats.newton_iterations, r.stats.min_step,
                 r.stats.max_step, 1e3 * r.stats.wall_seconds);
   out << line;
+  if (r.stats.held_steps > 0) {
+    std::snprintf(line, sizeof line,
+                  "  %ld smallest steps held a contact's overlap shape (triangle or not, eq. 5.20) "
+                  "where Newton flipped between the two: docs/theory.md\n",
+                  r.stats.held_steps);
+    out << line;
+  }
 }
 
 }  // namespace isopound
