@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "geometry/outline_rules.h"
@@ -19,25 +20,48 @@ Vec2 unit(Vec2 v) {
   return {v.x / l, v.y / l};
 }
 
-// The point X with dot(X - p, n1) = a and dot(X - p, n2) = a (two offset lines of one corner).
-Vec2 offset_corner(Vec2 p, Vec2 n1, Vec2 n2, double a) {
+// The point X with dot(X - p, n1) = a1 and dot(X - p, n2) = a2 (two offset lines of one corner).
+Vec2 offset_corner(Vec2 p, Vec2 n1, Vec2 n2, double a1, double a2) {
   const double det = n1.x * n2.y - n1.y * n2.x;
-  return {p.x + a * (n2.y - n1.y) / det, p.y + a * (n1.x - n2.x) / det};
+  if (a1 == a2) return {p.x + a1 * (n2.y - n1.y) / det, p.y + a1 * (n1.x - n2.x) / det};
+  return {p.x + (a1 * n2.y - a2 * n1.y) / det, p.y + (a2 * n1.x - a1 * n2.x) / det};
 }
 
-}  // namespace
-
-std::vector<MoatWall> following_moat(const SimplePolygon& plan, double gap, double thickness,
-                                     double extension) {
+// The outline without its straight-through vertices.
+std::vector<Vec2> corners_of(const SimplePolygon& plan) {
   const int n = plan.size();
-  std::vector<Vec2> corner;  // the outline without its straight-through vertices
+  std::vector<Vec2> corner;
   for (int i = 0; i < n; ++i) {
     const Vec2 e_in = plan[i] - plan[(i + n - 1) % n], e_out = plan[(i + 1) % n] - plan[i];
     const double sine =
         cross(e_in, e_out) / (std::hypot(e_in.x, e_in.y) * std::hypot(e_out.x, e_out.y));
     if (std::abs(sine) > kCollinearSine) corner.push_back(plan[i]);
   }
+  return corner;
+}
+
+}  // namespace
+
+std::vector<std::pair<Vec2, Vec2>> outline_runs(const SimplePolygon& plan) {
+  const std::vector<Vec2> corner = corners_of(plan);
+  std::vector<std::pair<Vec2, Vec2>> runs;
+  for (std::size_t k = 0; k < corner.size(); ++k)
+    runs.emplace_back(corner[k], corner[(k + 1) % corner.size()]);
+  return runs;
+}
+
+std::vector<MoatWall> following_moat(const SimplePolygon& plan, double gap, double thickness,
+                                     double extension) {
+  return following_moat(plan, std::vector<double>(corners_of(plan).size(), gap), thickness,
+                        extension);
+}
+
+std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vector<double>& gaps,
+                                     double thickness, double extension) {
+  const std::vector<Vec2> corner = corners_of(plan);
   const int m = int(corner.size());
+  if (gaps.size() != corner.size())
+    throw std::invalid_argument("following_moat: one gap per run of the outline");
   const auto direction = [&](int k) { return unit(corner[(k + 1) % m] - corner[k]); };
   const auto outward = [&](int k) {
     const Vec2 d = direction(k);
@@ -50,20 +74,22 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, double gap, doub
   for (int k = 0; k < m; ++k) {
     const Vec2 s = corner[k], e = corner[(k + 1) % m];
     const Vec2 d = direction(k), nk = outward(k);
+    const double gap = gaps[k], gap_before = gaps[(k + m - 1) % m], gap_after = gaps[(k + 1) % m];
     Vec2 inner_s, inner_e, outer_s, outer_e;
     if (convex_at(k)) {
       inner_s = s + gap * nk - extension * d;
       outer_s = inner_s + thickness * nk;
     } else {
-      inner_s = offset_corner(s, outward((k + m - 1) % m), nk, gap);
-      outer_s = offset_corner(s, outward((k + m - 1) % m), nk, gap + thickness);
+      inner_s = offset_corner(s, outward((k + m - 1) % m), nk, gap_before, gap);
+      outer_s =
+          offset_corner(s, outward((k + m - 1) % m), nk, gap_before + thickness, gap + thickness);
     }
     if (convex_at((k + 1) % m)) {
       inner_e = e + gap * nk + extension * d;
       outer_e = inner_e + thickness * nk;
     } else {
-      inner_e = offset_corner(e, nk, outward((k + 1) % m), gap);
-      outer_e = offset_corner(e, nk, outward((k + 1) % m), gap + thickness);
+      inner_e = offset_corner(e, nk, outward((k + 1) % m), gap, gap_after);
+      outer_e = offset_corner(e, nk, outward((k + 1) % m), gap + thickness, gap_after + thickness);
     }
     const Vec2 quad[] = {outer_s, outer_e, inner_e, inner_s};
     try {

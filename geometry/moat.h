@@ -6,6 +6,7 @@
 // (mitred), so that no region belongs to both and a slab in the corner meets each wall once.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "geometry/convex_polygon.h"
@@ -19,9 +20,17 @@ struct MoatWall {
   Vec2 p_WE;              // ... and end vertex (counter-clockwise along the plan)
 };
 
+// The straight runs of the outline (collinear vertices dropped), counter-clockwise: start and
+// end vertex of each, in the order following_moat gives their walls.
+std::vector<std::pair<Vec2, Vec2>> outline_runs(const SimplePolygon& plan);
+
 // Throws InvalidPolygon when a wall would be degenerate (a run shorter than the mitres of its
 // re-entrant corners need at this gap and thickness), naming the run's first vertex.
 std::vector<MoatWall> following_moat(const SimplePolygon& plan, double gap, double thickness,
                                      double extension);
+// Each run at its own gap (gaps[k] for outline_runs(plan)[k]): at a re-entrant corner the two
+// walls' faces meet where the two offset lines cross, their back faces likewise.
+std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vector<double>& gaps,
+                                     double thickness, double extension);
 
 }  // namespace isopound

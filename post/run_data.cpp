@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "post/contact_log.h"
 #include "solver/io/model_input.h"
 #include "solver/structures/config3d.h"
 #include "solver/structures/pounding2d.h"
@@ -368,9 +369,13 @@ void find_geometry(RunData& run, const std::string& model_override) {
 }  // namespace
 
 // A bumper's rubber is that of the moat wall, or of the structure whose slab face, is <face>.
-std::optional<RunData::Friction> pair_friction(const ModelConfig& config, const std::string& pair) {
+std::optional<RunData::Friction> pair_friction(const ModelConfig& config,
+                                               const std::string& labelled_pair) {
   if (!config.contact3d.law.friction) return std::nullopt;
   RunData::Friction f{config.contact3d.law.mu_static, config.contact3d.law.mu_kinetic};
+  std::string a, b;  // a second contact of the same pair ("... bumper #2"): the same rubber
+  if (!split_pair(labelled_pair, a, b)) return f;
+  const std::string pair = a + "|" + b;
   const auto bar = pair.find('|');
   for (const std::string& end :
        {std::string(" ") + kBottomedLabel, std::string(" ") + kBumperLabel}) {

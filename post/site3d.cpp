@@ -173,10 +173,8 @@ Site3D site_geometry(const ModelConfig& config) {
     w.p_WCM = area_properties(b.plan_W).p_WC;
     site.bodies.push_back(std::move(w));
     const Building3DConfig& building = config.structures3d.at(static_cast<std::size_t>(b.building));
-    const Bumper3DConfig& bumper = building.walls.bumper;
-    if (b.wall_side >= 0 && bumper.on[b.wall_side] && bumper.thickness > 0)
-      add_strips(site, wall_body, b.label(), building, bumper,
-                 bumper_strips(moat_wall_outline(building, b.wall_side), b.wall_side, bumper));
+    if (const auto strips = wall_bumper_strips(building, b.wall_side, b.wall_face))
+      add_strips(site, wall_body, b.label(), building, building.walls.bumper, *strips);
   }
   // Rubber on slab faces: on every slab of the building, on each bumpered side.
   for (const Building3DConfig& b : config.structures3d) {

@@ -90,6 +90,35 @@ TEST(StruckColumn3DStatics, SlabPressingTheNodeDeflectsItAlongEachPrincipalAxis)
   }
 }
 
+// A non-convex slab strikes a column through its outline (a one-slot PlanPair), not its hull: an L
+// whose wing passes north of the column (the column in its notch, inside the hull) leaves it
+// free at rest, and pressing the main block's east face 2 cm into the section gives the force
+// of the plain rectangle that face belongs to (to 1e-6: the hull sets the sliver's scale).
+TEST(StruckColumn3DStatics, ANonConvexSlabStrikesThroughItsOutlineNotItsHull) {
+  const StruckColumn3DSpec rectangle = column_spec(0.0, 0.4);
+  StruckColumn3DSpec l = rectangle;
+  const double x = rectangle.p_W.x - 0.4;  // the east face
+  l.slab_outline_W = {{x - 4, 0}, {x, 0}, {x, 3}, {x + 3, 3}, {x + 3, 4}, {x - 4, 4}};
+  l.slab_plan_W = {{x - 4, 0}, {x, 0}, {x + 3, 3}, {x + 3, 4}, {x - 4, 4}};  // its hull
+  PolygonContactConfig law;
+  law.friction = false;
+  StruckColumn3D a("rectangle", rectangle, law), b("L", l, law);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
+  b.begin_step(1e-3, false);
+  b.set_trial(u, v);
+  EXPECT_FALSE(b.contact().snapshot().in_contact);  // the hull would overlap the section
+  u(0) = 0.42;
+  a.begin_step(1e-3, false);
+  b.begin_step(1e-3, false);
+  a.set_trial(u, v);
+  b.set_trial(u, v);
+  const ContactSnapshot ca = a.contact().snapshot(), cb = b.contact().snapshot();
+  ASSERT_TRUE(ca.in_contact);
+  ASSERT_TRUE(cb.in_contact);
+  EXPECT_NEAR(cb.normal_force / ca.normal_force, 1.0, 1e-6);
+  EXPECT_NEAR(b.node_displacement().x / a.node_displacement().x, 1.0, 1e-6);
+}
+
 TEST(StruckColumn3DStatics, CondensedNodeLeavesTheColumnsShareOfTheStorey) {
   for (const double orientation : {0.0, 0.4, 1.2}) {
     const StruckColumn3DSpec spec = column_spec(orientation, 1.0);
@@ -374,6 +403,31 @@ TEST(FloorToColumn3DEnergy, BalanceAndPassivityPerEpisode) {
   EXPECT_GE(episodes, 1);
   EXPECT_GT(hinges, 0.0);  // the hinges yielded
   EXPECT_LT(r.energy.relative_error, 1e-6);
+}
+
+// An L-shaped building (its notch to the north-west, away from the tower) strikes the tower's
+// column between floors through its outline: an impact, the energy balanced at the default
+// tolerance. Not checked here: the episode's passivity. The column's contact does net positive
+// work over this episode (+3.5 % of its gross work), and so it does for the same building as a
+// rectangle with the L's centre of mass (eccentricity [-0.385 m, 0.753 m]: +3.8 %, +4.1 % at fixed
+// 0.025 ms steps, where the model's balance closes to 1e-8); without the eccentricity it is
+// passive (-17 %). A defect of the struck column under a turning slab, open (closing note of
+// 2026-11-29), not of the L.
+TEST(FloorToColumn3DEnergy, AnLShapedSlabStrikesTheColumn) {
+  std::string text = tower_text("4.0 m", "100 kN*m");
+  const std::string rectangle = "plan: {rectangle: [16.95 m, 16.95 m]}";
+  text.replace(text.find(rectangle), rectangle.size(),
+               "plan: {polygon: [[-8.475 m, -8.475 m], [8.475 m, -8.475 m], [8.475 m, 8.475 m], "
+               "[-2 m, 8.475 m], [-2 m, 12 m], [-8.475 m, 12 m]]}");
+  ModelConfig config = test::load_model_text(text);
+  config.analysis.t_end = 1.5;
+  config.output.histories = false;
+  const JobResult job = run_job(config);
+  const std::vector<const StruckColumn3D*> columns = struck(job.model);
+  ASSERT_EQ(columns.size(), 1u);
+  EXPECT_GE(columns[0]->contact().impacts(), 1);
+  EXPECT_GE(columns[0]->contact().episodes(), 1);
+  EXPECT_LT(job.analysis.energy.relative_error, 1e-3);
 }
 
 // The massless node is balanced at every accepted step, through onsets, slip and separations

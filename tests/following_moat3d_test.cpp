@@ -20,6 +20,7 @@
 #include "solver/io/report3d.h"
 #include "solver/io/yaml_reader.h"
 #include "solver/structures/building3d.h"
+#include "solver/structures/bumper_layer3d.h"
 #include "solver/structures/job.h"
 #include "solver/structures/pounding3d.h"
 #include "tests/model_test_support.h"
@@ -59,6 +60,16 @@ constexpr const char* kLBase =
     "{mass: 520 t, plan: {polygon: [[-10.25 m, -10.25 m], [22.25 m, -10.25 m], [22.25 m, 0 m], "
     "[10.25 m, 0 m], [10.25 m, 10.25 m], [-10.25 m, 10.25 m]]}}";
 
+// The key an input error names for a building on `base` with `walls`, or "(accepted)".
+std::string refused_key(const std::string& base, const std::string& walls) {
+  try {
+    load_text(building(base, walls));
+  } catch (const InputError& e) {
+    return e.key();
+  }
+  return std::string("(accepted)");
+}
+
 // The built-in pulse along the direction at `angle` from x (peak ground velocity 1 m/s).
 GroundMotion pulse_at(double angle) {
   GroundMotion g = make_pulse(PulseParameters{});
@@ -91,9 +102,8 @@ const PolygonContact* contact(const Model& m, const std::string& label) {
 
 // A square slab's following moat is its four box walls: the same bodies in the same order, so the
 // same contacts and the same run to the last bit, through impacts on the walls (the pulse at 30°
-// strikes two of them).
-TEST(FollowingMoat3D, RectangleFollowingItsOutlineIsItsBoxWallsBitForBit) {
-  const std::string common = "gap: 5 cm, thickness: 1 m, height: 1 m, extension: 1 m}";
+// strikes two of them); rigid walls, and flexible ones (each its own 3 DOFs, from its length).
+void expect_following_moat_is_box_walls(const std::string& common, double t_end) {
   const ModelConfig box = load_text(building(kSquareBase, "{sides: all, " + common));
   const ModelConfig follow = load_text(building(kSquareBase, "{follow: outline, " + common));
   const std::vector<SiteBody> bodies_box = site_bodies(box), bodies_follow = site_bodies(follow);
@@ -109,7 +119,7 @@ TEST(FollowingMoat3D, RectangleFollowingItsOutlineIsItsBoxWallsBitForBit) {
     EXPECT_EQ(bodies_box[i].mass, bodies_follow[i].mass) << bodies_box[i].label();
   }
   const GroundMotion g = pulse_at(30 * std::numbers::pi / 180);
-  const Outcome a = run(box, g, 6.0), b = run(follow, g, 6.0);
+  const Outcome a = run(box, g, t_end), b = run(follow, g, t_end);
   const PolygonContact* east = contact(a.model, "building/base|wall east");
   ASSERT_NE(east, nullptr);
   EXPECT_GT(east->impacts(), 0) << "the pulse must reach the walls for the comparison to mean much";
@@ -128,6 +138,16 @@ TEST(FollowingMoat3D, RectangleFollowingItsOutlineIsItsBoxWallsBitForBit) {
     EXPECT_EQ(pa->impacts(), pb->impacts()) << pa->label();
     EXPECT_EQ(pa->max_impact_velocity(), pb->max_impact_velocity()) << pa->label();
   }
+}
+
+TEST(FollowingMoat3D, RectangleFollowingItsOutlineIsItsBoxWallsBitForBit) {
+  expect_following_moat_is_box_walls("gap: 5 cm, thickness: 1 m, height: 1 m, extension: 1 m}",
+                                     6.0);
+}
+
+TEST(FollowingMoat3D, FlexibleWallsOfARectanglesOutlineAreItsFlexibleBoxWallsBitForBit) {
+  expect_following_moat_is_box_walls(
+      "gap: 5 cm, thickness: 1 m, height: 1 m, extension: 1 m, model: flexible}", 3.0);
 }
 
 // A chamfered slab: eight walls, named by the compass point each faces, each at the declared gap
@@ -209,20 +229,14 @@ TEST(FollowingMoat3D, SidesSelectTheFacesOfAPartialMoat) {
   }
 }
 
-// What needs box walls is refused by key (file:line:key, exit 2 from the CLI).
-TEST(FollowingMoat3D, BoxOnlyKeysAreRefusedWithTheirKey) {
-  const auto key_of = [](const std::string& walls) {
-    try {
-      load_text(building(kChamferedBase, walls));
-    } catch (const InputError& e) {
-      return e.key();
-    }
-    return std::string("(accepted)");
-  };
-  EXPECT_EQ(key_of("{follow: outline, gap: 20 cm, model: flexible}"), "structures[0].walls.model");
-  EXPECT_EQ(key_of("{follow: outline, gap: 20 cm, bumper: {thickness: 5 cm}}"),
-            "structures[0].walls.bumper");
-  EXPECT_EQ(key_of("{follow: outline, gap: {east: 20 cm}}"), "structures[0].walls.gap");
+// A gap per face must give every wall's; an unknown `follow` is refused by key (file:line:key,
+// exit 2 from the CLI).
+TEST(FollowingMoat3D, BadWallsKeysAreRefusedWithTheirKey) {
+  const auto key_of = [](const std::string& walls) { return refused_key(kChamferedBase, walls); };
+  // A gap per face: every wall's face (here the chamfers' are missing).
+  EXPECT_EQ(
+      key_of("{follow: outline, gap: {east: 20 cm, west: 20 cm, north: 20 cm, south: 20 cm}}"),
+      "structures[0].walls.gap");
   EXPECT_EQ(key_of("{follow: plan, gap: 20 cm}"), "structures[0].walls.follow");
   EXPECT_EQ(key_of("{follow: outline, gap: 20 cm}"), "(accepted)");
 }
@@ -366,8 +380,131 @@ TEST(FollowingMoat3D, LPodiumWindowPeaksWithin1PercentOfTolerance1e6) {
   EXPECT_LE(worst.worst, 1e-2) << worst.where;
 }
 
-// What does not take a non-convex plan yet is refused at its key: a slab's bumper, and struck
-// columns beside it.
+// A gap per face (walls along a polyline, each with its own gap) and flexible walls around the L:
+// each wall's face at its gap from its run, the pre-check's clearance (along the wall's normal)
+// equal to it although the notch's mitre brings the wider wall's end nearer the other face; each
+// flexible wall its own three DOFs. A face missing, a face the outline lacks and a gap for a face
+// without a wall are refused at their keys.
+TEST(FollowingMoat3D, LPodiumWallsAtAGapPerFaceRigidOrFlexible) {
+  const std::string gaps =
+      "gap: {east: 30 cm, west: 20 cm, north: 25 cm, south: 20 cm, east 2: 15 cm, north 2: 20 cm}";
+  const ModelConfig c = load_text(building(kLBase, "{follow: outline, " + gaps + "}"));
+  const std::map<std::string, double> expected = {{"east", 0.30},   {"west", 0.20},
+                                                  {"north", 0.25},  {"south", 0.20},
+                                                  {"east 2", 0.15}, {"north 2", 0.20}};
+  int walls = 0;
+  for (const SiteBody& b : site_bodies(c)) {
+    if (b.role != "wall") continue;
+    ++walls;
+    EXPECT_EQ(b.wall_gap, expected.at(b.wall_face)) << b.wall_face;
+  }
+  EXPECT_EQ(walls, 6);
+  const ModelConfig flexible =
+      load_text(building(kLBase, "{follow: outline, model: flexible, " + gaps + "}"));
+  EXPECT_EQ(build_model(flexible).size(), build_model(c).size() + 6 * 3);
+  const auto key_of = [](const std::string& walls) { return refused_key(kLBase, walls); };
+  EXPECT_EQ(key_of("{follow: outline, gap: {east: 30 cm, west: 20 cm, north: 25 cm, south: 20 cm, "
+                   "east 2: 15 cm}}"),
+            "structures[0].walls.gap");
+  EXPECT_EQ(key_of("{follow: outline, " + gaps.substr(0, gaps.size() - 1) + ", east 3: 1 m}}"),
+            "structures[0].walls.gap.east 3");
+  EXPECT_EQ(key_of("{follow: outline, sides: [east, west], gap: {east: 30 cm, west: 20 cm, "
+                   "north: 25 cm}}"),
+            "structures[0].walls.gap.north");
+  EXPECT_EQ(key_of("{follow: outline, sides: [east, west], gap: {east: 30 cm, west: 20 cm}}"),
+            "(accepted)");
+}
+
+// Rubber on the walls that follow the outline (walls.bumper with faces by name). A box wall's
+// strips, built as any straight wall's (face_bumper_strips), are its box strips to round-off; a
+// rectangle's following moat with rubber runs as its box walls with rubber: peaks to 1e-7 (the
+// strips differ by ~1e-16 m; the rubber's located onsets carry that to ~6e-9 of a peak).
+TEST(FollowingMoat3D, BumpersOnOutlineWallsAreTheBoxWallsStripsForARectangle) {
+  Bumper3DConfig rubber;
+  rubber.thickness = 0.1;
+  rubber.from = 2.0;
+  rubber.to = 9.0;
+  const ModelConfig box = load_text(building(kSquareBase, "{sides: all, gap: 20 cm}"));
+  const Building3DConfig& b = box.structures3d.front();
+  for (int side = 0; side < 4; ++side) {
+    const std::vector<Vec2> wall = moat_wall_outline(b, side);
+    static constexpr Vec2 kNormal[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    const BumperStrips expected = bumper_strips(wall, side, rubber);
+    const BumperStrips got = face_bumper_strips(wall, kNormal[side], rubber);
+    for (const auto& [e, g] :
+         {std::pair{&expected.rubber, &got.rubber}, std::pair{&expected.bottomed, &got.bottomed}}) {
+      const ConvexPolygon pe{std::span<const Vec2>(*e)}, pg{std::span<const Vec2>(*g)};
+      EXPECT_NEAR(area_properties(pe).area, area_properties(pg).area, 1e-12) << side;
+      EXPECT_NEAR(pe.box_min().x, pg.box_min().x, 1e-12) << side;
+      EXPECT_NEAR(pe.box_min().y, pg.box_min().y, 1e-12) << side;
+      EXPECT_NEAR(pe.box_max().x, pg.box_max().x, 1e-12) << side;
+      EXPECT_NEAR(pe.box_max().y, pg.box_max().y, 1e-12) << side;
+    }
+  }
+  const std::string rubber_keys =
+      "bumper: {thickness: 3 cm, E: 10 MPa, height: 1 m, e: 0.8, from: 2 m, to: 15 m}}";
+  const ModelConfig with_box =
+      load_text(building(kSquareBase, "{sides: all, gap: 5 cm, " + rubber_keys));
+  const ModelConfig with_outline =
+      load_text(building(kSquareBase, "{follow: outline, gap: 5 cm, " + rubber_keys));
+  const GroundMotion g = pulse_at(30 * std::numbers::pi / 180);
+  const Outcome a = run(with_box, g, 6.0), o = run(with_outline, g, 6.0);
+  ASSERT_EQ(a.model.elements.size(), o.model.elements.size());
+  int struck = 0;
+  for (std::size_t e = 0; e < a.model.elements.size(); ++e) {
+    EXPECT_EQ(a.model.elements[e]->label(), o.model.elements[e]->label());
+    const auto* pa = dynamic_cast<const PolygonContact*>(a.model.elements[e].get());
+    const auto* po = dynamic_cast<const PolygonContact*>(o.model.elements[e].get());
+    if (!pa || !po) continue;
+    EXPECT_EQ(pa->impacts(), po->impacts()) << pa->label();
+    EXPECT_NEAR(pa->max_impact_velocity(), po->max_impact_velocity(),
+                1e-7 * std::max(1.0, pa->max_impact_velocity()))
+        << pa->label();
+    if (pa->length_law() && pa->impacts() > 0) ++struck;
+  }
+  EXPECT_GT(struck, 0) << "the pulse must reach the rubber";
+  for (std::size_t i = 0; i < a.result.displacement.size(); ++i)
+    EXPECT_NEAR(a.result.displacement[i].value, o.result.displacement[i].value,
+                1e-7 * std::abs(a.result.displacement[i].value) + 1e-15)
+        << i;
+}
+
+// The L podium with rubber on its notch walls only (east 2, the tower's face; north, the wing's),
+// each at its own gap: a pulse towards the notch compresses the rubber, every episode of every
+// contact (the concrete's and the strips', one per part of the overlap) passive, the energy
+// balanced; and what cannot be is refused at its key.
+TEST(FollowingMoat3D, LPodiumRubberOnItsNotchWallsIsStruckPassively) {
+  const std::string walls =
+      "{follow: outline, gap: {east: 30 cm, west: 20 cm, north: 25 cm, south: 20 cm, east 2: 15 "
+      "cm, "
+      "north 2: 20 cm}, bumper: {sides: [east 2, north], thickness: 10 cm, E: 10 MPa, height: 1 m, "
+      "e: 0.8}}";
+  const ModelConfig c = load_text(building(kLBase, walls));
+  const Outcome r = run(c, pulse_at(0.0), 8.0);
+  const PolygonContact* rubber = contact(r.model, "building/base|wall east 2 bumper");
+  ASSERT_NE(rubber, nullptr);
+  EXPECT_GT(rubber->impacts(), 0);
+  EXPECT_EQ(contact(r.model, "building/base|wall west bumper"), nullptr);  // no rubber there
+  for (const auto& e : r.model.elements) {
+    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
+    if (!p || p->episodes() == 0) continue;
+    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
+  }
+  EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3);
+  const auto key_of = [](const std::string& w) { return refused_key(kLBase, w); };
+  const std::string common =
+      "{follow: outline, gap: 20 cm, bumper: {E: 10 MPa, height: 1 m, e: 0.8, ";
+  EXPECT_EQ(key_of(common + "thickness: 10 cm, sides: [east 3]}}"),
+            "structures[0].walls.bumper.sides[0]");
+  EXPECT_EQ(key_of(common + "thickness: 20 cm}}"), "structures[0].walls.bumper.thickness");
+  EXPECT_EQ(key_of(common + "thickness: 10 cm, sides: [north], to: 13 m}}"),
+            "structures[0].walls.bumper.to");  // the wing's north face is 12 m + 1 m, mitred
+  EXPECT_EQ(key_of(common + "thickness: 10 cm}}"), "(accepted)");
+}
+
+// What does not take a non-convex plan yet is refused at its key: rubber on the slab's own faces
+// (struck columns beside it and rubber on its moat's walls work: floor_to_column3d_test.cpp and
+// above).
 TEST(FollowingMoat3D, LPlanRefusesWhatNeedsAConvexPlan) {
   const auto refused = [](const std::string& text, const std::string& key) {
     try {
@@ -379,7 +516,7 @@ TEST(FollowingMoat3D, LPlanRefusesWhatNeedsAConvexPlan) {
     }
   };
   const std::string l = building(kLBase, "{gap: 20 cm}");
-  refused(l + "    bumper: {thickness: 5 cm, sides: [east]}\n", "bumper");
+  refused(l + "    bumper: {thickness: 5 cm, sides: [east]}\n", "bumper");  // a slab's own rubber
 }
 
 }  // namespace

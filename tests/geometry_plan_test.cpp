@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "geometry/moat.h"
@@ -363,4 +365,47 @@ TEST(FollowingMoat, TheLsWallsStandAtTheGapAndMeetOnceAtTheReEntrantCorner) {
 }
 
 }  // namespace
+// A gap per run: one gap for all equals the one-gap moat bit for bit; different gaps put each
+// wall's face at its own run's gap (the face's offset from its run), the walls at the re-entrant
+// corner still share their mitre and nothing else, and the mitred end of the wider one comes no
+// nearer the other face than that face's own gap.
+TEST(FollowingMoat, EachRunAtItsOwnGap) {
+  const SimplePolygon l{std::span<const Vec2>(kL)};
+  const double t = 0.8, e = 1.0;
+  ASSERT_EQ(outline_runs(l).size(), 6u);
+  const std::vector<MoatWall> one = following_moat(l, 0.25, t, e);
+  const std::vector<MoatWall> same = following_moat(l, std::vector<double>(6, 0.25), t, e);
+  for (std::size_t k = 0; k < 6; ++k)
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(one[k].outline[i].x, same[k].outline[i].x);
+      EXPECT_EQ(one[k].outline[i].y, same[k].outline[i].y);
+    }
+  // Runs from (0, 0): south, east (x = 10), notch bottom (y = 4), notch side (x = 6), north, west.
+  const std::vector<double> gaps = {0.2, 0.3, 0.35, 0.15, 0.25, 0.4};
+  const std::vector<MoatWall> walls = following_moat(l, gaps, t, e);
+  const std::vector<std::pair<Vec2, Vec2>> runs = outline_runs(l);
+  for (std::size_t k = 0; k < 6; ++k) {
+    const Vec2 d = runs[k].second - runs[k].first;
+    const Vec2 n = (1.0 / std::hypot(d.x, d.y)) * Vec2{d.y, -d.x};
+    double face = std::numeric_limits<double>::infinity();
+    for (const Vec2& p : walls[k].outline.vertices()) face = std::min(face, dot(n, p));
+    EXPECT_NEAR(face - dot(n, runs[k].first), gaps[k], 1e-12) << k;
+    const SimplePolygon w{std::span<const Vec2>(walls[k].outline.vertices())};
+    EXPECT_GE(plan_separation(l, w).distance,
+              std::min({gaps[k], gaps[(k + 1) % 6], gaps[(k + 5) % 6]}) - 1e-12)
+        << k;
+  }
+  const auto shared = [&](int a, int b) {
+    return plan_overlap(SimplePolygon{std::span<const Vec2>(walls[a].outline.vertices())},
+                        SimplePolygon{std::span<const Vec2>(walls[b].outline.vertices())});
+  };
+  EXPECT_EQ(shared(2, 3).count, 0);  // the notch's two walls meet along their mitre only
+  // The notch bottom's wall (0.35) ends on the side wall's face line x = 6 + 0.15: its mitred
+  // end is 0.15 from the notch side, its face 0.35 from the notch bottom.
+  double least_x = std::numeric_limits<double>::infinity();
+  for (const Vec2& p : walls[2].outline.vertices()) least_x = std::min(least_x, p.x);
+  EXPECT_NEAR(least_x, 6.15, 1e-12);
+  EXPECT_THROW(following_moat(l, std::vector<double>(5, 0.25), t, e), std::invalid_argument);
+}
+
 }  // namespace isopound

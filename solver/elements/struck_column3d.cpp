@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
+
+#include "solver/elements/plan_pair.h"
 
 namespace isopound {
 
@@ -38,6 +41,18 @@ PolygonContactConfig struck_law(PolygonContactConfig law) {
   return law;
 }
 
+// The slab-to-section contact: a non-convex slab's overlap with the section through a PlanPair of
+// one slot (a section is small beside a slab: its overlap is one part).
+PolygonContact make_contact(const std::string& label, const StruckColumn3DSpec& s,
+                            const PolygonContactConfig& law) {
+  if (s.slab_outline_W.empty())
+    return PolygonContact(label, slab_body(s), section_body(s), struck_law(law));
+  auto pair = std::make_shared<PlanPair>(
+      PlanPairBody{SimplePolygon(std::span<const Vec2>(s.slab_outline_W)), {0.0, 0.0}, true},
+      PlanPairBody{SimplePolygon(std::span<const Vec2>(s.section_W)), s.p_W, true}, 1, law.overlap);
+  return PolygonContact(label, slab_body(s), section_body(s), struck_law(law), std::move(pair), 0);
+}
+
 }  // namespace
 
 StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec,
@@ -46,7 +61,7 @@ StruckColumn3D::StruckColumn3D(std::string label, const StruckColumn3DSpec& spec
       spec_(spec),
       column_{HingedColumn(spec.axis[0]), HingedColumn(spec.axis[1])},
       twist_weight_(spec.axis[0].node / spec.axis[0].length),
-      contact_(label_, slab_body(spec), section_body(spec), struck_law(law)),
+      contact_(make_contact(label_, spec, law)),
       zl_(Eigen::VectorXd::Zero(kLocal)),
       zdl_(Eigen::VectorXd::Zero(kLocal)),
       fl_(Eigen::VectorXd::Zero(kLocal)),

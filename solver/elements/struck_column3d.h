@@ -35,8 +35,11 @@ struct StruckColumn3DSpec {
   std::array<int, 3> lower{-1, -1, -1};  // the floor under the struck storey (-1: the ground)
   std::array<int, 3> upper{-1, -1, -1};  // the floor above it
   std::vector<Vec2> slab_plan_W;  // the slab at rest, convex (DOF origin at the plan origin), m
-  std::vector<Vec2> section_W;    // the column's section at rest (column_rectangle), m
-  double slab_mass = 0.0;         // kg
+  // A non-convex slab (L, T, U): its outline at rest (slab_plan_W is then its convex hull), whose
+  // overlap with the section is found by a one-slot PlanPair (plan_pair.h); empty when convex.
+  std::vector<Vec2> slab_outline_W;
+  std::vector<Vec2> section_W;  // the column's section at rest (column_rectangle), m
+  double slab_mass = 0.0;       // kg
   // kg: r_lower m_lower + r_upper m_upper, the floors seen through a point load on a column
   // fixed at both ends (+inf with the ground under it: its reactions go there)
   double struck_mass = 0.0;

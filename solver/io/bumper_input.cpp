@@ -3,6 +3,7 @@
 // max_strain; each checks its thickness against the gaps it faces.
 #include "solver/io/bumper_input.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -126,6 +127,23 @@ Bumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& wal
                              const std::function<int(const InputNode&)>& side_of) {
   node.expect_keys(kStripKeys);
   Bumper3DConfig b;
+  if (walls.follow_outline) {
+    // Faces of the outline's walls by name (checked with the plan: check_outline_bumper), or all.
+    b.on = walls.present;
+    if (const auto sides = node.find("sides")) {
+      if (!sides->is_sequence() || sides->elements().empty())
+        sides->fail("expected a list of faces, e.g. [east, north-east]");
+      for (const InputNode& s : sides->elements()) {
+        if (std::find(b.faces.begin(), b.faces.end(), s.string()) != b.faces.end())
+          s.fail("side listed twice");
+        b.faces.push_back(s.string());
+      }
+    } else {
+      node.note_default("sides", "every wall");
+    }
+    read_strip_rubber(node, b);
+    return b;  // thinner than each face's gap: check_outline_bumper
+  }
   if (const auto sides = node.find("sides")) {
     read_sides(
         *sides, side_of,
@@ -221,7 +239,7 @@ void check_slab_bumpers(const ModelConfig& config, const std::vector<StructureMa
 // walls' extension at each end, as moat_wall_outline builds it).
 void check_bumper_span(const InputNode& walls_node, const Building3DConfig& b) {
   const Bumper3DConfig& bumper = b.walls.bumper;
-  if (!bumper.any()) return;
+  if (!bumper.any() || b.walls.follow_outline) return;  // outline walls: check_outline_bumper
   const InputNode node = walls_node.required("bumper");
   for (int side = 0; side < 4; ++side) {
     if (!bumper.on[side]) continue;

@@ -85,8 +85,9 @@ std::vector<Vec2> read_plan(const InputNode& node) {
   return kept;
 }
 
-// What a non-convex plan (L, T, U) does not work with yet: rubber bumpers (on a box side) and
-// slabs striking columns (their overlap with the slab's plan); refused at the key.
+// What a non-convex plan (L, T, U) does not work with yet: rubber on its slab's faces (on a box
+// side); refused at the key. (Rubber on the moat's walls, walls.bumper, and slabs striking
+// columns work.)
 bool has_non_convex_plan(const Building3DConfig& b) {
   const auto non_convex = [](const std::vector<Vec2>& plan) {
     return !plan.empty() && !is_convex_list(plan);
@@ -98,14 +99,11 @@ bool has_non_convex_plan(const Building3DConfig& b) {
 
 void refuse_with_non_convex_plans(const InputNode& item, const Building3DConfig& b) {
   if (!has_non_convex_plan(b)) return;
-  // (struck_columns: refused for every structure beside a non-convex one, below.)
   const char* why =
       " is not available with a non-convex plan in this version (its L, T or U "
       "outline): use convex plans or remove it";
   for (const char* key : {"bumper"})
     if (item.find(key)) item.fail_at_key(key, std::string(key) + why);
-  if (const auto w = item.find("walls"); w && w->find("bumper"))
-    w->fail_at_key("bumper", std::string("bumper") + why);
 }
 
 // Column section and material: defaults from the building's `columns:` map, overridden per item.
@@ -298,8 +296,8 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   W w;
   node.read_choice<bool>("follow", {{"box", false}, {"outline", true}}, w.follow_outline);
   if (w.follow_outline) {
-    // One wall per straight run of the slab's outline (geometry/moat.h), each at the one gap,
-    // rigid and bare: the keys below that would make it otherwise are box walls' options.
+    // One wall per straight run of the slab's outline (geometry/moat.h), at the one gap or a gap
+    // per face, rigid or flexible (model), with bumpers by face (bumper.sides).
     // sides: all, or the faces of a partial moat (checked against the outline with the plan,
     // check_outline_sides).
     if (const auto sides = node.find("sides")) {
@@ -318,16 +316,19 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
     } else {
       node.note_default("sides", "all");
     }
-    if (node.find("bumper"))
-      node.fail_at_key("bumper",
-                       "with follow: outline the walls have no bumpers (bumpers line "
-                       "box walls: follow: box)");
-    if (const auto model = node.find("model"); model && model->string() != "rigid")
-      model->fail("with follow: outline the walls are rigid (flexible walls: follow: box)");
+    // gap: one length for every wall, or a map by face (checked against the outline's faces
+    // with the plan, check_outline_sides).
     const InputNode gap = node.required("gap");
-    if (gap.is_map()) gap.fail("one gap for every wall of the outline (a length, e.g. 20 cm)");
-    const double g = gap.quantity(dim::kLength, Bound::kNonNegative);
-    w.gap = {g, g, g, g};
+    if (gap.is_map()) {
+      for (const auto& entry : gap.yaml()) {
+        const std::string face = entry.first.as<std::string>();
+        w.outline_gaps[face] = gap.required(face).quantity(dim::kLength, Bound::kNonNegative);
+      }
+      if (w.outline_gaps.empty()) gap.fail("no gaps: give a length or e.g. {east: 20 cm, ...}");
+    } else {
+      const double g = gap.quantity(dim::kLength, Bound::kNonNegative);
+      w.gap = {g, g, g, g};
+    }
     w.present = {true, true, true, true};
   } else {
     if (const auto sides = node.find("sides")) {
@@ -377,11 +378,13 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   return w;
 }
 
-// follow: outline: walls the outline can have at this gap and thickness (a run too short for the
-// mitres of its re-entrant corners is refused at the walls' thickness); with sides: [...], each a
-// face of the outline's walls (moat_faces).
+// follow: outline: walls the outline can have at these gaps and thickness (a run too short for
+// the mitres of its re-entrant corners is refused at the walls' thickness); with sides: [...],
+// each a face of the outline's walls (moat_faces); with a gap per face, one for every wall and
+// none for a face without one.
 void check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
   if (!b.walls.follow_outline) return;
+  const MoatWalls3DConfig& w = b.walls;
   std::vector<std::string> faces;
   try {
     faces = moat_faces(b);
@@ -389,13 +392,68 @@ void check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
     const auto t = walls.find("thickness");
     (t ? *t : walls).fail(std::string("no moat can follow this outline: ") + e.what());
   }
-  if (b.walls.outline_sides.empty()) return;
-  const auto sides = walls.find("sides");
-  for (const InputNode& side : sides->elements()) {
-    if (std::find(faces.begin(), faces.end(), side.string()) != faces.end()) continue;
-    std::string all;
-    for (const std::string& f : faces) all += (all.empty() ? "" : ", ") + f;
-    side.fail("no wall of the outline faces '" + side.string() + "': its walls face " + all);
+  std::string all;
+  for (const std::string& f : faces) all += (all.empty() ? "" : ", ") + f;
+  const auto has_face = [&](const std::string& face) {
+    return std::find(faces.begin(), faces.end(), face) != faces.end();
+  };
+  if (!w.outline_sides.empty())
+    for (const InputNode& side : walls.find("sides")->elements())
+      if (!has_face(side.string()))
+        side.fail("no wall of the outline faces '" + side.string() + "': its walls face " + all);
+  if (w.outline_gaps.empty()) return;
+  const InputNode gap = walls.required("gap");
+  for (const auto& [face, g] : w.outline_gaps) {
+    if (!has_face(face))
+      gap.required(face).fail("no wall of the outline faces '" + face + "': its walls face " + all);
+    if (!w.outline_sides.empty() &&
+        std::find(w.outline_sides.begin(), w.outline_sides.end(), face) == w.outline_sides.end())
+      gap.required(face).fail("there is no " + face + " wall (see sides)");
+  }
+  for (const std::string& face : faces) {
+    const bool walled =
+        w.outline_sides.empty() ||
+        std::find(w.outline_sides.begin(), w.outline_sides.end(), face) != w.outline_sides.end();
+    if (walled && !w.outline_gaps.count(face))
+      gap.fail("no gap for the " + face + " wall (its walls face " + all + ")");
+  }
+}
+
+// follow: outline with a bumper: its faces walls of the moat, the rubber thinner than each one's
+// gap, from/to on each face.
+void check_outline_bumper(const InputNode& walls, const Building3DConfig& b) {
+  const MoatWalls3DConfig& w = b.walls;
+  if (!w.follow_outline || !w.bumper.any()) return;
+  const InputNode node = walls.required("bumper");
+  const std::vector<std::string> faces = moat_faces(b);
+  const auto walled = [&](const std::string& face) {
+    return std::find(faces.begin(), faces.end(), face) != faces.end() &&
+           (w.outline_sides.empty() || std::find(w.outline_sides.begin(), w.outline_sides.end(),
+                                                 face) != w.outline_sides.end());
+  };
+  if (const auto sides = node.find("sides"))
+    for (const InputNode& s : sides->elements())
+      if (!walled(s.string())) s.fail("there is no " + s.string() + " wall (see walls.sides)");
+  if (!(w.bumper.thickness > 0)) return;
+  for (const std::string& face : faces) {
+    if (!walled(face)) continue;
+    if (!w.bumper.faces.empty() &&
+        std::find(w.bumper.faces.begin(), w.bumper.faces.end(), face) == w.bumper.faces.end())
+      continue;
+    const auto g = w.outline_gaps.find(face);
+    const double gap = g != w.outline_gaps.end() ? g->second : w.gap[0];
+    if (w.bumper.thickness >= gap) {
+      char what[200];
+      std::snprintf(what, sizeof what,
+                    "the bumper (%g cm) must be thinner than the %s wall's gap (%g cm)",
+                    100 * w.bumper.thickness, face.c_str(), 100 * gap);
+      node.fail_at_key("thickness", what);
+    }
+    try {
+      wall_bumper_strips(b, -1, face);
+    } catch (const std::invalid_argument& e) {
+      node.fail_at_key(node.has("to") ? "to" : "from", "the " + face + " wall: " + e.what());
+    }
   }
 }
 
@@ -603,6 +661,7 @@ Building3DConfig read_building3d(const InputNode& node) {
       b.walls_level = level;
     }
     check_outline_sides(*w, b);
+    check_outline_bumper(*w, b);
   }
   if (!b.isolated && b.damping.type == Damping3DConfig::Type::kNonClassical) {
     // Fixed base: the superstructure Rayleigh alone.
@@ -693,13 +752,6 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
     if (const auto bumper = item.find("bumper"))
       out.back().bumper = read_slab_bumper3d(*bumper, out.back(), read_side);
   }
-  // Struck columns are struck by other structures' slabs: none of them may be non-convex.
-  if (std::any_of(out.begin(), out.end(), has_non_convex_plan))
-    for (std::size_t k = 0; k < out.size(); ++k)
-      if (const auto s = node.elements()[k].find("struck_columns"))
-        s->fail(
-            "struck columns are not available beside a structure with a non-convex plan in "
-            "this version (its L, T or U outline)");
   return out;
 }
 

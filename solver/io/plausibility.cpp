@@ -226,8 +226,10 @@ const PlausibleRange* plausible_range_for(std::string_view key_path, const Dimen
   if (!generic.empty())
     for (const PlausibleRange& r : kRanges)
       if (r.key == generic + "." + key && r.dimension == d) return &r;
+  // A gap per face of a moat that follows the outline ("gap.north-east", "gap.east 2"): a gap.
+  const std::string_view row = generic == "gap" ? std::string_view("gap") : key;
   for (const PlausibleRange& r : kRanges)
-    if (r.key == key && r.dimension == d) return &r;
+    if (r.key == row && r.dimension == d) return &r;
   return nullptr;
 }
 

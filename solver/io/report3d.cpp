@@ -173,7 +173,12 @@ nlohmann::json bumper_json(const JobResult& job, std::size_t e, const BumperLaw&
   const auto* bottomed = e + 1 < elements.size()
                              ? dynamic_cast<const PolygonContact*>(elements[e + 1].get())
                              : nullptr;
-  if (!bottomed || !bottomed->label().ends_with(kBottomedLabel))
+  // (a non-convex slab's slots: "... bumper #2" is followed by "... bumper bottomed #2")
+  const auto without_slot = [](std::string label) {
+    if (const auto hash = label.rfind(" #"); hash != std::string::npos) label.erase(hash);
+    return label;
+  };
+  if (!bottomed || !without_slot(bottomed->label()).ends_with(kBottomedLabel))
     throw std::logic_error("bumper contact " + elements[e]->label() +
                            " without its bottomed strip");
   const double first = e + 1 < job.first_impact_time.size() ? job.first_impact_time[e + 1] : -1.0;

@@ -48,6 +48,44 @@ BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side, const Bumper
           bumper_layer_outline(wall, side, t - s, span)};
 }
 
+namespace {
+
+// A strip over [from, to] along the face from `start` (direction d), between `setback` and
+// `setback + thickness` in front of it (against n), counter-clockwise.
+std::vector<Vec2> face_strip(Vec2 start, Vec2 d, Vec2 n, double from, double to, double thickness,
+                             double setback) {
+  const Vec2 a = start + from * d, b = start + to * d;
+  const Vec2 near = -setback * n, far = -(setback + thickness) * n;
+  std::vector<Vec2> strip = {a + far, b + far, b + near, a + near};
+  if (cross(strip[1] - strip[0], strip[2] - strip[1]) < 0) std::swap(strip[1], strip[3]);
+  return strip;
+}
+
+}  // namespace
+
+BumperStrips face_bumper_strips(const std::vector<Vec2>& wall, Vec2 n,
+                                const Bumper3DConfig& bumper) {
+  if (!(bumper.thickness > 0)) throw std::invalid_argument("bumper layer: thickness must be > 0");
+  // The inner face: the two corners of least n·x (a wall is a quadrilateral with that face).
+  std::vector<Vec2> corners = wall;
+  std::sort(corners.begin(), corners.end(), [&](Vec2 p, Vec2 q) { return dot(n, p) < dot(n, q); });
+  Vec2 start = corners[0], end = corners[1];
+  if (end.y < start.y || (end.y == start.y && end.x < start.x)) std::swap(start, end);
+  const double length = std::hypot(end.x - start.x, end.y - start.y);
+  const double to = std::isinf(bumper.to) ? length : bumper.to;
+  if (!(bumper.from >= 0 && to <= length * (1 + 1e-12) && bumper.from < to))
+    throw std::invalid_argument(
+        "bumper layer: from = " + std::to_string(bumper.from) + " m, to = " + std::to_string(to) +
+        " m must satisfy 0 <= from < to <= the face length " + std::to_string(length) + " m");
+  const Vec2 d = (1.0 / length) * (end - start);
+  // The face line through the corners' mean (both lie on it to round-off).
+  const Vec2 on_face = 0.5 * (start + end);
+  const Vec2 face_start = on_face + dot(start - on_face, d) * d;
+  const double t = bumper.thickness, s = bumper.max_strain * t, b = std::min(to, length);
+  return {face_strip(face_start, d, n, bumper.from, b, s, t - s),
+          face_strip(face_start, d, n, bumper.from, b, t - s, 0.0)};
+}
+
 BumperStrips slab_bumper_strips(const std::vector<Vec2>& plan, int side,
                                 const Bumper3DConfig& bumper) {
   if (plan.size() < 3 || side < 0 || side > 3)

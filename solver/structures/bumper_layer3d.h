@@ -36,6 +36,14 @@ struct BumperStrips {
 };
 BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side, const Bumper3DConfig& bumper);
 
+// The same two strips in front of the inner face of any straight wall (a wall that follows the
+// slab's outline, geometry/moat.h): `wall` its convex outline, `n` the unit normal from the slab
+// into it. The inner face is the wall's edge of least n·x; from/to are measured along it from its
+// end of least y (then least x), as a box wall's from its lower x or y. Throws
+// std::invalid_argument when from/to lie beyond that face.
+BumperStrips face_bumper_strips(const std::vector<Vec2>& wall, Vec2 n,
+                                const Bumper3DConfig& bumper);
+
 // The same two strips on a slab's own face (a neighbour's rubber, Building3DConfig::bumper): in
 // front of the straight edge the slab `plan` (building frame) has on side `side` of its bounding
 // box (0 east ... 3 south), max_strain t of rubber outermost, over [from, to] along that edge from

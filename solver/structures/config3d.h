@@ -5,6 +5,7 @@
 
 #include <array>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -97,15 +98,18 @@ enum class ColumnCoupling {
 // slab's edge over `height`. Linear F_N = (E h / t) A_c, Hertz-type F_N = E L_c h (d_N/t)^1.5,
 // times (1 + zeta d'_N / v_imp)+; bottoming out at max_strain t onto the concrete k_N.
 struct Bumper3DConfig {
-  std::array<bool, 4> on{};    // sides with rubber (MoatWalls3DConfig::Side); none: no bumpers
-  double thickness = 0.0;      // m, t
-  std::string law = "linear";  // "linear" or "hertz"
-  double modulus = 0.0;        // Pa, the rubber's E
-  double height = 0.0;         // m, h: rubber height in contact with the slab edge
-  double e = 0.8;              // coefficient of restitution of the rubber, (0, 1]
-  double max_strain = 0.6;     // bottoming out at max_strain t
-  double mu_static = 0.8, mu_kinetic = 0.6;             // rubber on the slab edge
-  double from = 0.0;                                    // m along the face from its start
+  std::array<bool, 4> on{};  // sides with rubber (MoatWalls3DConfig::Side); none: no bumpers
+  // Walls that follow the outline: the faces with rubber ("east", "north-east 2"); empty with
+  // any(): every wall.
+  std::vector<std::string> faces;
+  double thickness = 0.0;                    // m, t
+  std::string law = "linear";                // "linear" or "hertz"
+  double modulus = 0.0;                      // Pa, the rubber's E
+  double height = 0.0;                       // m, h: rubber height in contact with the slab edge
+  double e = 0.8;                            // coefficient of restitution of the rubber, (0, 1]
+  double max_strain = 0.6;                   // bottoming out at max_strain t
+  double mu_static = 0.8, mu_kinetic = 0.6;  // rubber on the slab edge
+  double from = 0.0;                         // m along the face from its start
   double to = std::numeric_limits<double>::infinity();  // m; +inf: to the face's end
   bool any() const { return on[0] || on[1] || on[2] || on[3]; }
 };
@@ -120,11 +124,15 @@ struct MoatWalls3DConfig {
   // `follow: box` (default): one straight wall per side of the slab's bounding box in the
   // building frame (sides, gap per side). `follow: outline`: one wall per straight run of the
   // slab's outline at `gap` (geometry/moat.h: convex corners extended, re-entrant ones mitred);
-  // a rectangular slab's are the four box walls. Rigid only, no bumper (yet).
+  // a rectangular slab's are the four box walls. Rigid or flexible, with bumpers by face.
   bool follow_outline = false;
   // follow: outline: the faces `sides` lists ("east", "north-east", "east 2": pounding3d.h,
   // moat_faces), a partial moat; empty: a wall on every run.
   std::vector<std::string> outline_sides;
+  // follow: outline with `gap: {east: .., north-east: ..}`: each face's gap (every wall's face is
+  // given: check_outline_sides; a face without a wall may be left out, its neighbours' mitres
+  // then take the least given gap); empty: gap[0] for every wall.
+  std::map<std::string, double> outline_gaps;
   std::array<bool, 4> present{};                  // no side: no walls
   std::array<double, 4> gap{0.2, 0.2, 0.2, 0.2};  // m, clear distance at rest
   double thickness = 1.0;                         // m

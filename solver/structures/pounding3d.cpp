@@ -84,8 +84,32 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
   const std::vector<Vec2>& plan =
       levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan;
   const SimplePolygon slab{std::span<const Vec2>(plan)};
+  // Each run's face name, then its gap: walls.gap by face, else the one gap. A face without a wall
+  // in a partial moat may have none given: its neighbours' mitres take the least given gap.
+  double least_given = w.gap[0];
+  if (!w.outline_gaps.empty()) {
+    least_given = std::numeric_limits<double>::infinity();
+    for (const auto& [face, g] : w.outline_gaps) least_given = std::min(least_given, g);
+  }
   std::map<std::string, int> faces;  // how many walls face each compass point so far
-  for (const MoatWall& m : following_moat(slab, w.gap[0], w.thickness, w.extension)) {
+  std::vector<std::string> names;
+  std::vector<double> gaps;
+  for (const auto& [start, end] : outline_runs(slab)) {
+    const Vec2 run = end - start;
+    const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run;
+    std::string face = compass_face({d.y, -d.x});
+    if (const int k = ++faces[face]; k > 1) {
+      char numbered[32];  // "east 2" (snprintf: GCC 12 misreads a string += as overlapping)
+      std::snprintf(numbered, sizeof numbered, "%s %d", face.c_str(), k);
+      face = numbered;
+    }
+    const auto given = w.outline_gaps.find(face);
+    gaps.push_back(given != w.outline_gaps.end() ? given->second : least_given);
+    names.push_back(std::move(face));
+  }
+  const std::vector<MoatWall> walls = following_moat(slab, gaps, w.thickness, w.extension);
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const MoatWall& m = walls[k];
     const Vec2 run = m.p_WE - m.p_WS;
     const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run, n{d.y, -d.x};
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -93,19 +117,13 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
       lo = std::min(lo, dot(p, d));
       hi = std::max(hi, dot(p, d));
     }
-    std::string face = compass_face(n);
-    if (const int k = ++faces[face]; k > 1) {
-      char numbered[32];  // "east 2" (snprintf: GCC 12 misreads a string += as overlapping)
-      std::snprintf(numbered, sizeof numbered, "%s %d", face.c_str(), k);
-      face = numbered;
-    }
     // From the vertex of least y (then x), as a box wall's outline starts.
     const std::span<const Vec2> v = m.outline.vertices();
     const auto first = std::min_element(
         v.begin(), v.end(), [](Vec2 p, Vec2 q) { return p.y < q.y || (p.y == q.y && p.x < q.x); });
     std::vector<Vec2> outline(first, v.end());
     outline.insert(outline.end(), v.begin(), first);
-    out.push_back({std::move(outline), n, w.gap[0], hi - lo, face, -1});
+    out.push_back({std::move(outline), n, gaps[k], hi - lo, names[k], -1});
   }
   // In the order of box walls (east, west, north, south), then the other faces along the
   // outline: a rectangle's following moat is its box walls, element for element.
@@ -130,6 +148,23 @@ std::vector<WallShape> wall_shapes(const Building3DConfig& b) {
 }
 
 }  // namespace
+
+std::optional<BumperStrips> wall_bumper_strips(const Building3DConfig& b, int side,
+                                               const std::string& face) {
+  const Bumper3DConfig& bumper = b.walls.bumper;
+  if (!bumper.any() || !(bumper.thickness > 0)) return std::nullopt;
+  if (side >= 0) {
+    if (b.walls.follow_outline || !bumper.on[side]) return std::nullopt;
+    return bumper_strips(moat_wall_outline(b, side), side, bumper);
+  }
+  if (!b.walls.follow_outline) return std::nullopt;
+  if (!bumper.faces.empty() &&
+      std::find(bumper.faces.begin(), bumper.faces.end(), face) == bumper.faces.end())
+    return std::nullopt;
+  for (const WallShape& s : wall_shapes(b))
+    if (s.face == face) return face_bumper_strips(s.outline_B, s.n_B, bumper);
+  return std::nullopt;
+}
 
 std::vector<std::string> moat_faces(const Building3DConfig& building) {
   Building3DConfig b = building;
@@ -223,7 +258,8 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
                              .wall_side = -1,
                              .wall_normal_W = {},
                              .wall_gap = 0.0,
-                             .wall_face = ""});
+                             .wall_face = "",
+                             .wall_length = 0.0});
     };
     const std::vector<Level3D> levels = levels3d(b);
     for (const Level3D& level : levels) add_slab(level.name, level.elevation, *level.diaphragm);
@@ -247,7 +283,8 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
                  .wall_side = shape.side,
                  .wall_normal_W = direction_W(b, shape.n_B),
                  .wall_gap = shape.gap,
-                 .wall_face = shape.face};
+                 .wall_face = shape.face,
+                 .wall_length = shape.length};
       // Named by side alone unless several buildings have walls.
       int walled = 0;
       for (const Building3DConfig& other : config.structures3d) walled += other.walls.any() ? 1 : 0;
@@ -306,13 +343,8 @@ std::vector<ContactPair3D> contact_pairs3d(const std::vector<SiteBody>& bodies,
 void add_flexible_walls(Model& model, const ModelConfig& config) {
   for (const SiteBody& w : site_bodies(config)) {
     if (w.role != "wall" || w.dof_label_u.empty()) continue;
-    if (w.wall_side < 0)
-      throw std::logic_error("3D pounding: a flexible wall that is not a box wall");
-    const Building3DConfig& b = config.structures3d[w.building];
-    const MoatWalls3DConfig& c = b.walls;
-    const std::vector<Vec2> outline = moat_wall_outline(b, w.wall_side);
-    const bool along_y = w.wall_side <= MoatWalls3DConfig::kWest;  // east/west walls run along y
-    const double L = along_y ? outline[2].y - outline[0].y : outline[1].x - outline[0].x;
+    const MoatWalls3DConfig& c = config.structures3d[w.building].walls;
+    const double L = w.wall_length;  // along the face (a mitred wall: its longer face)
     const double t = c.thickness, h = c.height, E = c.E, G = E / (2.0 * (1.0 + c.nu));
     // Cantilever of height h: out of plane flexure (I = L t³/12); in plane flexure (I = t L³/12)
     // in series with shear (κ = 5/6); twist as the out-of-plane strips (k_n L²/12) plus
@@ -370,16 +402,44 @@ void add_strip_contacts(Model& model, const ModelConfig& config, const SiteBody&
   law.normal_law = nullptr;
   law.mu_static = bumper.mu_static;
   law.mu_kinetic = bumper.mu_kinetic;
-  const auto add = [&](const std::vector<Vec2>& outline_W, std::shared_ptr<const ImpactLaw> f,
-                       const std::string& name) {
-    PolygonBody strip = body(owner);
-    strip.shape = polygon_of(outline_W);
-    law.length_law = std::move(f);
-    model.elements.push_back(std::make_unique<PolygonContact>(
-        other.label() + "|" + face + " " + name, body(other), std::move(strip), law));
+  const std::shared_ptr<const ImpactLaw> rubber = bumper_rubber_law(bumper, k_normal);
+  const std::shared_ptr<const ImpactLaw> bottomed = bumper_bottomed_law(k_normal);
+  if (other.convex()) {
+    const auto add = [&](const std::vector<Vec2>& outline_W, std::shared_ptr<const ImpactLaw> f,
+                         const std::string& name) {
+      PolygonBody strip = body(owner);
+      strip.shape = polygon_of(outline_W);
+      law.length_law = std::move(f);
+      model.elements.push_back(std::make_unique<PolygonContact>(
+          other.label() + "|" + face + " " + name, body(other), std::move(strip), law));
+    };
+    add(rubber_W, rubber, kBumperLabel);
+    add(bottomed_W, bottomed, kBottomedLabel);
+    return;
+  }
+  // A non-convex slab (L, T, U) against the strips: one contact per part of each strip's overlap
+  // (plan_pair.h), slot k of the rubber followed by slot k of the bottomed strip ("... bumper #2",
+  // "... bumper bottomed #2"), as report3d pairs them.
+  const auto moves = [](const SiteBody& s) { return !s.dof_label_u.empty(); };
+  const auto pair_with = [&](const std::vector<Vec2>& outline_W) {
+    return std::make_shared<PlanPair>(
+        PlanPairBody{other.outline(), other.p_WO, moves(other)},
+        PlanPairBody{SimplePolygon(std::span<const Vec2>(outline_W)), owner.p_WO, moves(owner)},
+        kPlanContactSlots, law.overlap);
   };
-  add(rubber_W, bumper_rubber_law(bumper, k_normal), kBumperLabel);
-  add(bottomed_W, bumper_bottomed_law(k_normal), kBottomedLabel);
+  const std::shared_ptr<PlanPair> rubber_pair = pair_with(rubber_W);
+  const std::shared_ptr<PlanPair> bottomed_pair = pair_with(bottomed_W);
+  for (int slot = 0; slot < kPlanContactSlots; ++slot) {
+    const std::string suffix = slot == 0 ? "" : " #" + std::to_string(slot + 1);
+    for (const bool is_rubber : {true, false}) {
+      PolygonBody strip = body(owner);
+      strip.shape = polygon_of(is_rubber ? rubber_W : bottomed_W);
+      law.length_law = is_rubber ? rubber : bottomed;
+      model.elements.push_back(std::make_unique<PolygonContact>(
+          other.label() + "|" + face + " " + (is_rubber ? kBumperLabel : kBottomedLabel) + suffix,
+          body(other), std::move(strip), law, is_rubber ? rubber_pair : bottomed_pair, slot));
+    }
+  }
 }
 
 // The rubber of a bumpered moat wall facing `slab`.
@@ -388,12 +448,10 @@ void add_wall_bumper(Model& model, const ModelConfig& config, const SiteBody& sl
                      const SiteBody& wall, const MakeBody& body, const PolygonContactConfig& law) {
   if (wall.role != "wall") return;
   const Building3DConfig& b = config.structures3d[wall.building];
-  const Bumper3DConfig& bumper = b.walls.bumper;
-  if (wall.wall_side < 0 || !bumper.on[wall.wall_side] || !(bumper.thickness > 0)) return;
-  const BumperStrips strips =
-      bumper_strips(moat_wall_outline(b, wall.wall_side), wall.wall_side, bumper);
-  add_strip_contacts(model, config, slab, wall, wall.label(), placed(b, strips.rubber),
-                     placed(b, strips.bottomed), bumper, body, law);
+  const std::optional<BumperStrips> strips = wall_bumper_strips(b, wall.wall_side, wall.wall_face);
+  if (!strips) return;
+  add_strip_contacts(model, config, slab, wall, wall.label(), placed(b, strips->rubber),
+                     placed(b, strips->bottomed), b.walls.bumper, body, law);
 }
 
 // The rubber on the faces of `owner`, a slab of a building with a `bumper:`, towards `other`, a

@@ -5,12 +5,14 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/convex_polygon.h"
 #include "geometry/simple_polygon.h"
 #include "solver/core/model.h"
+#include "solver/structures/bumper_layer3d.h"
 #include "solver/structures/config.h"
 #include "solver/structures/config3d.h"
 
@@ -38,6 +40,7 @@ struct SiteBody {
   Vec2 wall_normal_W;
   double wall_gap = 0.0;
   std::string wall_face;
+  double wall_length = 0.0;  // m, a wall's extent along its face (its mass, a flexible wall's L)
   std::string label() const { return role == "wall" ? structure : structure + "/" + level; }
   bool convex() const { return outline_W.size() == 0; }
   // The outline as a simple polygon, convex or not.
@@ -51,6 +54,12 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config);
 // `sides` selects it, in the order they are listed: "east", "west", "north", "south", then the
 // others along the outline ("north-east", a second east face "east 2", ...).
 std::vector<std::string> moat_faces(const Building3DConfig& building);
+
+// The rubber strips (building frame, bumper_layer3d.h) of the moat wall of `building` on box side
+// `side` (>= 0) or, for walls that follow the outline (side < 0), facing `face`; nullopt when it
+// has no rubber. Throws std::invalid_argument when the bumper's from/to lie beyond its face.
+std::optional<BumperStrips> wall_bumper_strips(const Building3DConfig& building, int side,
+                                               const std::string& face);
 
 // A box wall's outline in the building frame (before the building's placement), around the plan
 // of the level it faces.

@@ -104,6 +104,8 @@ Site site_plan(const ModelConfig& config) {
     const Building3DConfig& b = config.structures3d.at(static_cast<std::size_t>(w.building));
     w.structure = b.name;
     w.declared_gap = body.wall_gap;
+    w.along_outline = body.wall_side < 0;
+    w.normal_W = body.wall_normal_W;
     site.walls.push_back(w);
   }
   return site;

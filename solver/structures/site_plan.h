@@ -49,6 +49,11 @@ struct PlanWall {
   double height = 0.0;
   double elevation = 0.0;  // m: its top, flush with the level it faces (the base slab's)
   std::vector<Vec2> plan_W;
+  // A wall along a run of the slab's outline (walls: {follow: outline}): the unit normal from the
+  // slab's face into the wall; its gap is the clearance along it (at a re-entrant corner whose
+  // two walls have different gaps, the mitred end of the wider one comes nearer the other face).
+  bool along_outline = false;
+  Vec2 normal_W;
 };
 
 struct Site {

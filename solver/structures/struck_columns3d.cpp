@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "geometry/overlap.h"
+#include "geometry/plan_overlap.h"
 #include "solver/elements/struck_column3d.h"
 #include "solver/structures/building3d.h"
 #include "solver/structures/column_element.h"
@@ -63,8 +64,11 @@ std::vector<StruckColumnSite> struck_column_sites(const ModelConfig& config) {
           columns_in_plan(b, b.storeys[static_cast<std::size_t>(k) - 1].columns);
       for (std::size_t c = 0; c < columns.size(); ++c) {
         const std::vector<Vec2> section = section_of(columns[c]);
-        const Separation sep = separation_of(
-            slab.plan_W, ConvexPolygon(std::span<const Vec2>(section.data(), section.size())));
+        const Separation sep =
+            slab.convex()
+                ? separation_of(slab.plan_W, ConvexPolygon(std::span<const Vec2>(section.data(),
+                                                                                 section.size())))
+                : plan_separation(slab.outline(), SimplePolygon(std::span<const Vec2>(section)));
         if (sep.distance > config.contact3d.search_distance) continue;
         StruckColumnSite s;
         s.striker = slab.building;
@@ -127,6 +131,9 @@ void add_struck_columns3d(Model& model, const ModelConfig& config) {
     for (const SiteBody& body : site_bodies(config))
       if (body.building == site.striker && body.role == "slab" && body.level == site.slab_level) {
         spec.slab_plan_W.assign(body.plan_W.vertices().begin(), body.plan_W.vertices().end());
+        if (!body.convex())
+          spec.slab_outline_W.assign(body.outline_W.vertices().begin(),
+                                     body.outline_W.vertices().end());
         spec.slab_mass = body.mass;
       }
     spec.section_W = site.section_W;
