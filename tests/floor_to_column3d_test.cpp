@@ -394,6 +394,11 @@ TEST(FloorToColumn3DEnergy, BalanceAndPassivityPerEpisode) {
       worst = std::max(worst, c->contact().max_episode_net_work_relative());
       EXPECT_LE(c->contact().max_episode_net_work_relative(), 1e-9) << c->label();
     }
+    // The whole element (hinges included) over each episode.
+    EXPECT_EQ(c->episodes(), c->contact().episodes()) << c->label();
+    if (c->episodes() > 0) {
+      EXPECT_LE(c->max_episode_net_work_relative(), 1e-9) << c->label();
+    }
   }
   std::printf(
       "[energy 3D] balance %.3e (max %.3e), %d episodes, %d impacts, worst episode %.3e, "
@@ -406,28 +411,30 @@ TEST(FloorToColumn3DEnergy, BalanceAndPassivityPerEpisode) {
 }
 
 // An L-shaped building (its notch to the north-west, away from the tower) strikes the tower's
-// column between floors through its outline: an impact, the energy balanced at the default
-// tolerance. Not checked here: the episode's passivity. The column's contact does net positive
-// work over this episode (+3.5 % of its gross work), and so it does for the same building as a
-// rectangle with the L's centre of mass (eccentricity [-0.385 m, 0.753 m]: +3.8 %, +4.1 % at fixed
-// 0.025 ms steps, where the model's balance closes to 1e-8); without the eccentricity it is
-// passive (-17 %). A defect of the struck column under a turning slab, open (closing note of
-// 2026-11-29), not of the L.
-TEST(FloorToColumn3DEnergy, AnLShapedSlabStrikesTheColumn) {
-  std::string text = tower_text("4.0 m", "100 kN*m");
-  const std::string rectangle = "plan: {rectangle: [16.95 m, 16.95 m]}";
-  text.replace(text.find(rectangle), rectangle.size(),
-               "plan: {polygon: [[-8.475 m, -8.475 m], [8.475 m, -8.475 m], [8.475 m, 8.475 m], "
-               "[-2 m, 8.475 m], [-2 m, 12 m], [-8.475 m, 12 m]]}");
-  ModelConfig config = test::load_model_text(text);
-  config.analysis.t_end = 1.5;
-  config.output.histories = false;
-  const JobResult job = run_job(config);
-  const std::vector<const StruckColumn3D*> columns = struck(job.model);
-  ASSERT_EQ(columns.size(), 1u);
-  EXPECT_GE(columns[0]->contact().impacts(), 1);
-  EXPECT_GE(columns[0]->contact().episodes(), 1);
-  EXPECT_LT(job.analysis.energy.relative_error, 1e-3);
+// column between floors through its outline, with yielding and with elastic columns: impacts,
+// the energy balanced, and the element passive over every episode (StruckColumn3D::episodes:
+// work in less energy stored, the hinges' dissipation included). The contact's own episode
+// measure takes the node's rate behind the dashpot, not the rate of its position: with this
+// turning slab and yielding columns it reads +3.5 % of its gross work, while the element
+// dissipates 69 % of its gross work (docs/floor-to-column.md).
+TEST(FloorToColumn3DEnergy, AnLShapedSlabStrikesTheColumnPassively) {
+  for (const char* m_y : {"100 kN*m", "50 MN*m"}) {
+    std::string text = tower_text("4.0 m", m_y);
+    const std::string rectangle = "plan: {rectangle: [16.95 m, 16.95 m]}";
+    text.replace(text.find(rectangle), rectangle.size(),
+                 "plan: {polygon: [[-8.475 m, -8.475 m], [8.475 m, -8.475 m], [8.475 m, 8.475 m], "
+                 "[-2 m, 8.475 m], [-2 m, 12 m], [-8.475 m, 12 m]]}");
+    ModelConfig config = test::load_model_text(text);
+    config.analysis.t_end = 1.5;
+    config.output.histories = false;
+    const JobResult job = run_job(config);
+    const std::vector<const StruckColumn3D*> columns = struck(job.model);
+    ASSERT_EQ(columns.size(), 1u);
+    EXPECT_GE(columns[0]->contact().impacts(), 1) << m_y;
+    EXPECT_GE(columns[0]->episodes(), 1) << m_y;
+    EXPECT_LT(columns[0]->max_episode_net_work_relative(), -1e-3) << m_y;
+    EXPECT_LT(job.analysis.energy.relative_error, 1e-3) << m_y;
+  }
 }
 
 // The massless node is balanced at every accepted step, through onsets, slip and separations

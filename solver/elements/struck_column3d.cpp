@@ -471,6 +471,26 @@ bool StruckColumn3D::contact_damped() const {
 }
 
 void StruckColumn3D::commit() {
+  // Element passivity (episodes()): the work of the DOFs' rates on the element's forces.
+  double p = 0.0;
+  for (const int k : kRest) p += zdl_(k) * fl_(k);
+  work_ += 0.5 * (p + power_commit_) * h_;
+  gross_work_ += 0.5 * (std::abs(p) + std::abs(power_commit_)) * h_;
+  power_commit_ = p;
+  const bool closed = contact_.trial_closed();
+  const double dissipated = work_ - stored_energy();
+  if (closed && !closed_commit_) {
+    episode_dissipated_ = dissipated;
+    episode_gross_ = gross_work_;
+  } else if (!closed && closed_commit_) {
+    ++episodes_;
+    const double net = -(dissipated - episode_dissipated_), gross = gross_work_ - episode_gross_;
+    if (net > max_episode_net_work_) {
+      max_episode_net_work_ = net;
+      max_episode_net_work_relative_ = gross > 0 ? net / gross : 0.0;
+    }
+  }
+  closed_commit_ = closed;
   contact_.commit();
   for (int i = 0; i < 2; ++i) {
     hinge_energy_ +=

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,17 @@ class StruckColumn3D final : public Element {
   double shear() const;
   Vec2 local_drift() const;
   double hinge_dissipated_energy() const;
+  // Passivity of the whole element (column, node and contact) per contact episode: what the
+  // floors' and the slab's DOFs put into it, W = ∫ v·f dt (trapezoid over accepted steps), less
+  // what it stores (the columns' and the contact's elastic energy). Over an episode (onset to
+  // separation) W − E_stored may only grow; the largest net work the element did on the
+  // structures over one (J; ≤ 0 for a passive element, −inf before any episode), and that over
+  // the episode's gross ∫ |v·f| dt. The contact's own episode measure (contact().
+  // max_episode_net_work) takes the node's rate behind the dashpot (the depth rule, not dx/dt):
+  // the physical one is this.
+  int episodes() const { return episodes_; }
+  double max_episode_net_work() const { return max_episode_net_work_; }
+  double max_episode_net_work_relative() const { return max_episode_net_work_relative_; }
 
  private:
   static constexpr int kColumnOutputs = 17;
@@ -153,6 +165,12 @@ class StruckColumn3D final : public Element {
   double depth_commit_ = 0.0;
   bool shear_failed_ = false, shear_failed_commit_ = false;
   double hinge_energy_ = 0.0;
+  double work_ = 0.0, gross_work_ = 0.0, power_commit_ = 0.0;  // J, J, W (committed)
+  bool closed_commit_ = false;
+  double episode_dissipated_ = 0.0, episode_gross_ = 0.0;  // W − E_stored, gross: at the onset
+  int episodes_ = 0;
+  double max_episode_net_work_ = -std::numeric_limits<double>::infinity();
+  double max_episode_net_work_relative_ = -std::numeric_limits<double>::infinity();
   // Local displacement, rate and force (the contact works on vectors of kLocal; allocated once).
   Eigen::VectorXd zl_, zdl_, fl_;
   Eigen::VectorXd z_commit_, zd_commit_;  // the committed zl_, zdl_

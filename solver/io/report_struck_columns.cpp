@@ -30,20 +30,22 @@ nlohmann::json struck_column3d_json(const StruckColumn3D& c, const AnalysisResul
   const StruckColumn3DSpec& s = c.spec();
   const Peak& failed = peak_of(c, r, e, "shear_failed");
   const HingedColumnSection& s1 = s.axis[0];
-  json j = {{"label", c.label()},
-            {"height_m", s1.length},
-            {"struck_at_m", s1.node},
-            {"position_m", {s.p_W.x, s.p_W.y}},
-            {"orientation_deg", s.orientation * 180.0 / 3.14159265358979323846},
-            {"contact_force", peak_json(peak_of(c, r, e, "normal_force"), "N")},
-            {"impacts", peak_of(c, r, e, "impacts").value},
-            {"episodes", c.contact().episodes()},
-            {"max_episode_net_work_J",
-             c.contact().episodes() > 0 ? json(c.contact().max_episode_net_work()) : json(nullptr)},
-            {"shear", peak_json(peak_of(c, r, e, "column_shear"), "N")},
-            {"local_drift_x", peak_json(peak_of(c, r, e, "local_drift_x"), "m")},
-            {"local_drift_y", peak_json(peak_of(c, r, e, "local_drift_y"), "m")},
-            {"hinge_dissipated_J", c.hinge_dissipated_energy()}};
+  json j = {
+      {"label", c.label()},
+      {"height_m", s1.length},
+      {"struck_at_m", s1.node},
+      {"position_m", {s.p_W.x, s.p_W.y}},
+      {"orientation_deg", s.orientation * 180.0 / 3.14159265358979323846},
+      {"contact_force", peak_json(peak_of(c, r, e, "normal_force"), "N")},
+      {"impacts", peak_of(c, r, e, "impacts").value},
+      // Passivity of the whole element per episode (StruckColumn3D::episodes: the contact's
+      // own measure takes the node's rate behind the dashpot, not the physical work).
+      {"episodes", c.episodes()},
+      {"max_episode_net_work_J", c.episodes() > 0 ? json(c.max_episode_net_work()) : json(nullptr)},
+      {"shear", peak_json(peak_of(c, r, e, "column_shear"), "N")},
+      {"local_drift_x", peak_json(peak_of(c, r, e, "local_drift_x"), "m")},
+      {"local_drift_y", peak_json(peak_of(c, r, e, "local_drift_y"), "m")},
+      {"hinge_dissipated_J", c.hinge_dissipated_energy()}};
   if (s.shear_capacity > 0) {
     j["V_n_N"] = s.shear_capacity;
     j["shear_ratio"] = peak_of(c, r, e, "column_shear").value / s.shear_capacity;
