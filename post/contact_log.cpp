@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "solver/structures/pounding3d.h"
+
 namespace isopound::post {
 
 std::vector<std::string> split_csv(const std::string& line) {
@@ -34,10 +36,7 @@ bool split_pair(const std::string& pair, std::string& a, std::string& b) {
   b = pair.substr(bar + 1);
   // A second or third contact of the same two bodies (a non-convex plan: one per part of the
   // overlap) is labelled "A|B #2": the same bodies.
-  if (const auto hash = b.rfind(" #");
-      hash != std::string::npos &&
-      b.find_first_not_of("0123456789", hash + 2) == std::string::npos && hash + 2 < b.size())
-    b.erase(hash);
+  b = std::string(without_slot(b));
   return true;
 }
 

@@ -121,6 +121,17 @@ constexpr const std::array<const char*, 4>& kSideNames = MoatWalls3DConfig::kSid
 
 }  // namespace
 
+std::vector<std::string> read_face_names(const InputNode& list, const std::string& when_empty) {
+  if (list.elements().empty()) list.fail(when_empty);
+  std::vector<std::string> faces;
+  for (const InputNode& face : list.elements()) {
+    if (std::find(faces.begin(), faces.end(), face.string()) != faces.end())
+      face.fail("side listed twice");
+    faces.push_back(face.string());
+  }
+  return faces;
+}
+
 // bumper: {sides, thickness, law, E, height, e, max_strain, mu_static, mu_kinetic, from, to}
 // under walls (issue 27; docs/impact-laws.md). from/to against the face: check_bumper_span.
 Bumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& walls,
@@ -131,13 +142,8 @@ Bumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& wal
     // Faces of the outline's walls by name (checked with the plan: check_outline_bumper), or all.
     b.on = walls.present;
     if (const auto sides = node.find("sides")) {
-      if (!sides->is_sequence() || sides->elements().empty())
-        sides->fail("expected a list of faces, e.g. [east, north-east]");
-      for (const InputNode& s : sides->elements()) {
-        if (std::find(b.faces.begin(), b.faces.end(), s.string()) != b.faces.end())
-          s.fail("side listed twice");
-        b.faces.push_back(s.string());
-      }
+      if (!sides->is_sequence()) sides->fail("expected a list of faces, e.g. [east, north-east]");
+      b.faces = read_face_names(*sides, "expected a list of faces, e.g. [east, north-east]");
     } else {
       node.note_default("sides", "every wall");
     }

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "solver/io/problems.h"
 #include "solver/io/site_checks.h"
@@ -16,6 +18,11 @@ namespace isopound {
 // 2D: {thickness, law, k | (E, area), e, max_strain, min_impact_velocity, bottoming}; the
 // thickness below `gap`, the smallest gap the rubber faces.
 BumperConfig read_bumper(const InputNode& node, double gap);
+
+// A list of the faces of walls that follow the outline ("east", "north-east 2"), each once:
+// `sides: [...]` of the walls and of their bumper (the names are checked against the outline
+// with the plan). An empty list fails with `when_empty`.
+std::vector<std::string> read_face_names(const InputNode& list, const std::string& when_empty);
 
 // 3D walls: {sides, thickness, law, E, height, e, max_strain, mu_static, mu_kinetic, from, to};
 // side_of reads a side name into MoatWalls3DConfig::Side.

@@ -302,14 +302,7 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
     // check_outline_sides).
     if (const auto sides = node.find("sides")) {
       if (sides->is_sequence()) {
-        if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, north-east]");
-        for (const InputNode& side : sides->elements()) {
-          const std::string face = side.string();
-          if (std::find(w.outline_sides.begin(), w.outline_sides.end(), face) !=
-              w.outline_sides.end())
-            side.fail("side listed twice");
-          w.outline_sides.push_back(face);
-        }
+        w.outline_sides = read_face_names(*sides, "no sides: give all or e.g. [east, north-east]");
       } else {
         sides->choice<int>({{"all", 0}});
       }
@@ -382,8 +375,8 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
 // the mitres of its re-entrant corners is refused at the walls' thickness); with sides: [...],
 // each a face of the outline's walls (moat_faces); with a gap per face, one for every wall and
 // none for a face without one.
-void check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
-  if (!b.walls.follow_outline) return;
+std::vector<std::string> check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
+  if (!b.walls.follow_outline) return {};
   const MoatWalls3DConfig& w = b.walls;
   std::vector<std::string> faces;
   try {
@@ -401,47 +394,37 @@ void check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
     for (const InputNode& side : walls.find("sides")->elements())
       if (!has_face(side.string()))
         side.fail("no wall of the outline faces '" + side.string() + "': its walls face " + all);
-  if (w.outline_gaps.empty()) return;
+  if (w.outline_gaps.empty()) return faces;
   const InputNode gap = walls.required("gap");
   for (const auto& [face, g] : w.outline_gaps) {
     if (!has_face(face))
       gap.required(face).fail("no wall of the outline faces '" + face + "': its walls face " + all);
-    if (!w.outline_sides.empty() &&
-        std::find(w.outline_sides.begin(), w.outline_sides.end(), face) == w.outline_sides.end())
+    if (!w.has_outline_wall(face))
       gap.required(face).fail("there is no " + face + " wall (see sides)");
   }
-  for (const std::string& face : faces) {
-    const bool walled =
-        w.outline_sides.empty() ||
-        std::find(w.outline_sides.begin(), w.outline_sides.end(), face) != w.outline_sides.end();
-    if (walled && !w.outline_gaps.count(face))
+  for (const std::string& face : faces)
+    if (w.has_outline_wall(face) && !w.outline_gaps.count(face))
       gap.fail("no gap for the " + face + " wall (its walls face " + all + ")");
-  }
+  return faces;
 }
 
-// follow: outline with a bumper: its faces walls of the moat, the rubber thinner than each one's
-// gap, from/to on each face.
-void check_outline_bumper(const InputNode& walls, const Building3DConfig& b) {
+// follow: outline with a bumper: its faces walls of the moat (`faces`: the outline's, as
+// check_outline_sides returns them), the rubber thinner than each one's gap, from/to on each face.
+void check_outline_bumper(const InputNode& walls, const Building3DConfig& b,
+                          const std::vector<std::string>& faces) {
   const MoatWalls3DConfig& w = b.walls;
   if (!w.follow_outline || !w.bumper.any()) return;
   const InputNode node = walls.required("bumper");
-  const std::vector<std::string> faces = moat_faces(b);
   const auto walled = [&](const std::string& face) {
-    return std::find(faces.begin(), faces.end(), face) != faces.end() &&
-           (w.outline_sides.empty() || std::find(w.outline_sides.begin(), w.outline_sides.end(),
-                                                 face) != w.outline_sides.end());
+    return std::find(faces.begin(), faces.end(), face) != faces.end() && w.has_outline_wall(face);
   };
   if (const auto sides = node.find("sides"))
     for (const InputNode& s : sides->elements())
       if (!walled(s.string())) s.fail("there is no " + s.string() + " wall (see walls.sides)");
   if (!(w.bumper.thickness > 0)) return;
   for (const std::string& face : faces) {
-    if (!walled(face)) continue;
-    if (!w.bumper.faces.empty() &&
-        std::find(w.bumper.faces.begin(), w.bumper.faces.end(), face) == w.bumper.faces.end())
-      continue;
-    const auto g = w.outline_gaps.find(face);
-    const double gap = g != w.outline_gaps.end() ? g->second : w.gap[0];
+    if (!walled(face) || !w.bumper.on_outline_face(face)) continue;
+    const double gap = w.outline_gap(face);
     if (w.bumper.thickness >= gap) {
       char what[200];
       std::snprintf(what, sizeof what,
@@ -660,8 +643,7 @@ Building3DConfig read_building3d(const InputNode& node) {
                 std::to_string(b.isolation_level) + ")");
       b.walls_level = level;
     }
-    check_outline_sides(*w, b);
-    check_outline_bumper(*w, b);
+    check_outline_bumper(*w, b, check_outline_sides(*w, b));
   }
   if (!b.isolated && b.damping.type == Damping3DConfig::Type::kNonClassical) {
     // Fixed base: the superstructure Rayleigh alone.

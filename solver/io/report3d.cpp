@@ -174,10 +174,6 @@ nlohmann::json bumper_json(const JobResult& job, std::size_t e, const BumperLaw&
                              ? dynamic_cast<const PolygonContact*>(elements[e + 1].get())
                              : nullptr;
   // (a non-convex slab's slots: "... bumper #2" is followed by "... bumper bottomed #2")
-  const auto without_slot = [](std::string label) {
-    if (const auto hash = label.rfind(" #"); hash != std::string::npos) label.erase(hash);
-    return label;
-  };
   if (!bottomed || !without_slot(bottomed->label()).ends_with(kBottomedLabel))
     throw std::logic_error("bumper contact " + elements[e]->label() +
                            " without its bottomed strip");

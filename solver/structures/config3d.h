@@ -3,6 +3,7 @@
 // own frame, placed in the model's plan frame by (position, rotation).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <map>
@@ -112,6 +113,10 @@ struct Bumper3DConfig {
   double from = 0.0;                         // m along the face from its start
   double to = std::numeric_limits<double>::infinity();  // m; +inf: to the face's end
   bool any() const { return on[0] || on[1] || on[2] || on[3]; }
+  // Walls that follow the outline: whether the wall facing `face` has rubber.
+  bool on_outline_face(const std::string& face) const {
+    return any() && (faces.empty() || std::find(faces.begin(), faces.end(), face) != faces.end());
+  }
 };
 
 // Moat walls around the base slab of an isolated building (issue 16 item 3): one straight wall
@@ -149,6 +154,20 @@ struct MoatWalls3DConfig {
   double damping_ratio = 0.05;
   Bumper3DConfig bumper;  // rubber on the inner faces (issue 27); none by default
   bool any() const { return present[0] || present[1] || present[2] || present[3]; }
+  // follow: outline: whether the face has a wall (`sides` lists it, or there is no `sides`) ...
+  bool has_outline_wall(const std::string& face) const {
+    return outline_sides.empty() ||
+           std::find(outline_sides.begin(), outline_sides.end(), face) != outline_sides.end();
+  }
+  // ... and its gap: given by face, else the one gap; a face without a wall left out of a gap
+  // map takes the least given (its neighbours' mitres need one).
+  double outline_gap(const std::string& face) const {
+    if (outline_gaps.empty()) return gap[0];
+    if (const auto g = outline_gaps.find(face); g != outline_gaps.end()) return g->second;
+    double least = std::numeric_limits<double>::infinity();
+    for (const auto& [name, g] : outline_gaps) least = std::min(least, g);
+    return least;
+  }
 };
 
 // How a building was placed next to another (`adjacent:`), kept for reports and checks.

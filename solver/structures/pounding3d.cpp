@@ -84,13 +84,7 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
   const std::vector<Vec2>& plan =
       levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan;
   const SimplePolygon slab{std::span<const Vec2>(plan)};
-  // Each run's face name, then its gap: walls.gap by face, else the one gap. A face without a wall
-  // in a partial moat may have none given: its neighbours' mitres take the least given gap.
-  double least_given = w.gap[0];
-  if (!w.outline_gaps.empty()) {
-    least_given = std::numeric_limits<double>::infinity();
-    for (const auto& [face, g] : w.outline_gaps) least_given = std::min(least_given, g);
-  }
+  // Each run's face name, then its gap (MoatWalls3DConfig::outline_gap).
   std::map<std::string, int> faces;  // how many walls face each compass point so far
   std::vector<std::string> names;
   std::vector<double> gaps;
@@ -103,8 +97,7 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
       std::snprintf(numbered, sizeof numbered, "%s %d", face.c_str(), k);
       face = numbered;
     }
-    const auto given = w.outline_gaps.find(face);
-    gaps.push_back(given != w.outline_gaps.end() ? given->second : least_given);
+    gaps.push_back(w.outline_gap(face));
     names.push_back(std::move(face));
   }
   const std::vector<MoatWall> walls = following_moat(slab, gaps, w.thickness, w.extension);
@@ -139,11 +132,8 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
 
 std::vector<WallShape> wall_shapes(const Building3DConfig& b) {
   std::vector<WallShape> out = all_wall_shapes(b);
-  const std::vector<std::string>& sides = b.walls.outline_sides;
-  if (!b.walls.follow_outline || sides.empty()) return out;
-  std::erase_if(out, [&](const WallShape& s) {
-    return std::find(sides.begin(), sides.end(), s.face) == sides.end();
-  });
+  if (!b.walls.follow_outline) return out;
+  std::erase_if(out, [&](const WallShape& s) { return !b.walls.has_outline_wall(s.face); });
   return out;
 }
 
@@ -157,10 +147,7 @@ std::optional<BumperStrips> wall_bumper_strips(const Building3DConfig& b, int si
     if (b.walls.follow_outline || !bumper.on[side]) return std::nullopt;
     return bumper_strips(moat_wall_outline(b, side), side, bumper);
   }
-  if (!b.walls.follow_outline) return std::nullopt;
-  if (!bumper.faces.empty() &&
-      std::find(bumper.faces.begin(), bumper.faces.end(), face) == bumper.faces.end())
-    return std::nullopt;
+  if (!b.walls.follow_outline || !bumper.on_outline_face(face)) return std::nullopt;
   for (const WallShape& s : wall_shapes(b))
     if (s.face == face) return face_bumper_strips(s.outline_B, s.n_B, bumper);
   return std::nullopt;

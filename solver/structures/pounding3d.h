@@ -7,6 +7,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geometry/convex_polygon.h"
@@ -71,6 +72,15 @@ int walls_level3d(const Building3DConfig& building);
 // (solver/elements/plan_pair.h; a slab across both wings of a U meets its neighbour twice; more
 // parts at once get no force and are counted in most_components).
 inline constexpr int kPlanContactSlots = 3;
+// A second or third slot's label is the first's with " #2", " #3" (the same two bodies, or the
+// same bumper strip): the label without that number.
+inline std::string_view without_slot(std::string_view label) {
+  const auto hash = label.rfind(" #");
+  if (hash != std::string_view::npos && hash + 2 < label.size() &&
+      label.find_first_not_of("0123456789", hash + 2) == std::string_view::npos)
+    return label.substr(0, hash);
+  return label;
+}
 
 // A pair of bodies that may meet: indices into site_bodies(); label "A|B".
 struct ContactPair3D {
