@@ -195,7 +195,7 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
       0.5 * (std::max(a.box_min().x, b.box_min().x) + std::min(a.box_max().x, b.box_max().x)),
       0.5 * (std::max(a.box_min().y, b.box_min().y) + std::min(a.box_max().y, b.box_max().y))};
 
-  std::array<Vec2, kMaxOverlapVertices> vertex_O;  // overlap vertices, shifted, unordered
+  VertexArray<kMaxOverlapVertices> vertex_O;  // overlap vertices, shifted, unordered
   int count = 0;
   signed char id_a[kMax], id_b[kMax];  // overlap vertex at A's (B's) vertex, or −1
   signed char own_b[kMax];             // 1 when B's vertex j is not also one of A's vertices
@@ -314,7 +314,7 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
   for (int j = 0; j < m; ++j) consistent &= link(start_b[j], end_b[j], false);
   if (!consistent) return false;
 
-  std::array<Vec2, kMaxOverlapVertices> ordered;
+  VertexArray<kMaxOverlapVertices> ordered;
   bool edge_on_a[kMaxOverlapVertices];
   double area = 0.0;
   Vec2 p_OC;

@@ -53,7 +53,7 @@ struct Overlap {
   double mean_depth = 0.0;
   // Vertices of A ∩ B, counter-clockwise: vertex_count of them (0 separated, 1–2 touching).
   int vertex_count = 0;
-  std::array<Vec2, kMaxOverlapVertices> vertices;
+  VertexArray<kMaxOverlapVertices> vertices;  // the first vertex_count are set
 };
 
 // Overlap on the fast path: bounding-box rejection, then topology (which vertex is inside, which
