@@ -22,6 +22,7 @@ PlanPair::PlanPair(PlanPairBody a, PlanPairBody b, int slots, OverlapMethod meth
     e.placed_a = a_.outline_W;
     e.placed_b = b_.outline_W;
     e.component.assign(slots, -1);
+    e.piece_separation.resize(a_.outline_W.pieces().size() * b_.outline_W.pieces().size());
   }
 }
 
@@ -36,6 +37,7 @@ const PlanPair::Entry& PlanPair::at(const Placement6& q) const {
   e.valid = true;
   if (a_.moves) a_.outline_W.placed_into({q[0], q[1], q[2]}, a_.p_WO, e.placed_a);
   if (b_.moves) b_.outline_W.placed_into({q[3], q[4], q[5]}, b_.p_WO, e.placed_b);
+  e.separation_known = 0;
   plan_overlap(e.placed_a, e.placed_b, e.overlap, method_);
   merge_slivers(e.overlap);
   most_components_ = std::max(most_components_, e.overlap.count + e.overlap.dropped);
@@ -118,8 +120,31 @@ const Overlap& PlanPair::overlap(int slot, const Placement6& q) const {
   return k >= 0 ? e.overlap.components[k] : none_;
 }
 
+// plan_separation(e.placed_a, e.placed_b, ~pairs), each piece pair's separation computed once per
+// entry: the same pairs in the same order, the same least (bit for bit).
 Separation PlanPair::least_separation(const Entry& e, std::uint64_t pairs) const {
-  Separation best = plan_separation(e.placed_a, e.placed_b, ~pairs);
+  const auto& pieces_a = e.placed_a.pieces();
+  const auto& pieces_b = e.placed_b.pieces();
+  const int na = int(pieces_a.size()), nb = int(pieces_b.size());
+  // Beyond 64 pairs the bits alias (piece_pair_bit): nothing is kept then.
+  const bool keep = na * nb <= 64 && int(e.piece_separation.size()) == na * nb;
+  Separation best{std::numeric_limits<double>::infinity(), {}};
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < nb; ++j) {
+      const std::uint64_t bit = piece_pair_bit(i, j, nb);
+      if (!(pairs & bit)) continue;
+      Separation s;
+      if (!keep) {
+        s = separation_of(pieces_a[i], pieces_b[j]);
+      } else if (e.separation_known & bit) {
+        s = e.piece_separation[static_cast<std::size_t>(i * nb + j)];
+      } else {
+        s = separation_of(pieces_a[i], pieces_b[j]);
+        e.piece_separation[static_cast<std::size_t>(i * nb + j)] = s;
+        e.separation_known |= bit;
+      }
+      if (s.distance < best.distance) best = s;
+    }
   if (!std::isfinite(best.distance)) best = {size_, {1.0, 0.0}};  // nothing left: far
   return best;
 }

@@ -81,6 +81,10 @@ class PlanPair {
     PlanOverlap overlap;
     std::array<int, kMaxOverlapComponents> owner{};  // the slot of each component, or −1
     std::vector<int> component;                      // the component of each slot, or −1
+    // Each piece pair's separation, computed when first asked (the slots' witnesses at one
+    // placement share them): bit piece_pair_bit set in separation_known when stored.
+    mutable std::uint64_t separation_known = 0;
+    mutable std::vector<Separation> piece_separation;
   };
   struct Committed {
     bool closed = false;
