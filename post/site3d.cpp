@@ -176,15 +176,14 @@ Site3D site_geometry(const ModelConfig& config) {
     if (const auto strips = wall_bumper_strips(building, b.wall_side, b.wall_face))
       add_strips(site, wall_body, b.label(), building, building.walls.bumper, *strips);
   }
-  // Rubber on slab faces: on every slab of the building, on each bumpered side.
+  // Rubber on slab faces: on every slab of the building, on each bumpered face.
   for (const Building3DConfig& b : config.structures3d) {
     if (!b.bumper.any() || !(b.bumper.thickness > 0)) continue;
     for (const Level3D& level : levels3d(b)) {
       const std::string label = b.name + "/" + level.name;
-      for (int side = 0; side < 4; ++side)
-        if (b.bumper.on[side])
-          add_strips(site, site.find(label), slab_face_label(label, side), b, b.bumper,
-                     slab_bumper_strips(level.diaphragm->plan, side, b.bumper));
+      for (const FaceStrips& face : slab_face_strips(level.diaphragm->plan, b.bumper))
+        add_strips(site, site.find(label), slab_face_label(label, face.face), b, b.bumper,
+                   face.strips);
     }
   }
   // Struck columns: the solver's elements (add_struck_columns3d), one per site of a structure

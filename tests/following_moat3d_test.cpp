@@ -502,22 +502,5 @@ TEST(FollowingMoat3D, LPodiumRubberOnItsNotchWallsIsStruckPassively) {
   EXPECT_EQ(key_of(common + "thickness: 10 cm}}"), "(accepted)");
 }
 
-// What does not take a non-convex plan yet is refused at its key: rubber on the slab's own faces
-// (struck columns beside it and rubber on its moat's walls work: floor_to_column3d_test.cpp and
-// above).
-TEST(FollowingMoat3D, LPlanRefusesWhatNeedsAConvexPlan) {
-  const auto refused = [](const std::string& text, const std::string& key) {
-    try {
-      load_text(text);
-      ADD_FAILURE() << "no error for " << key;
-    } catch (const InputError& e) {
-      EXPECT_NE(e.key().find(key), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find("non-convex"), std::string::npos) << e.what();
-    }
-  };
-  const std::string l = building(kLBase, "{gap: 20 cm}");
-  refused(l + "    bumper: {thickness: 5 cm, sides: [east]}\n", "bumper");  // a slab's own rubber
-}
-
 }  // namespace
 }  // namespace isopound

@@ -175,19 +175,36 @@ Bumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& wal
 }
 
 // bumper: {...} on a building: rubber on its slabs' faces (sides in the building frame; default
-// the face towards adjacent.to). Every slab needs a straight edge on each side, over [from, to].
+// the face towards adjacent.to). A convex slab's sides are its bounding box's, and it needs a
+// straight edge on each; a non-convex slab's are its outline's faces by name (outline_faces:
+// "east", "north 2"), each listed face on some level. Every face over [from, to].
 Bumper3DConfig read_slab_bumper3d(const InputNode& node, const Building3DConfig& building,
                                   const std::function<int(const InputNode&)>& side_of) {
   node.expect_keys(kStripKeys);
   Bumper3DConfig b;
-  if (const auto sides = node.find("sides")) {
+  const std::vector<Level3D> levels = levels3d(building);
+  const bool by_outline = std::any_of(levels.begin(), levels.end(), [](const Level3D& l) {
+    return !is_convex_list(l.diaphragm->plan);
+  });
+  const auto sides = node.find("sides");
+  if (sides && by_outline) {
+    const char* example = "expected a list of faces, e.g. [east, north 2]";
+    if (!sides->is_sequence()) sides->fail(example);
+    b.faces = read_face_names(*sides, example);
+    b.on = {true, true, true, true};
+  } else if (sides) {
     read_sides(
         *sides, side_of, [](int) { return std::string(); }, b);
   } else if (!building.adjacent.to.empty() && building.rotation == 0.0) {
     // adjacent.side: the side of `to` this building stands on; its own facing side is opposite.
     static constexpr int kOpposite[4] = {1, 0, 3, 2};
     const int k = kOpposite[building.adjacent.side];
-    b.on[k] = true;
+    if (by_outline) {
+      b.faces = {kSideNames[k]};
+      b.on = {true, true, true, true};
+    } else {
+      b.on[k] = true;
+    }
     node.note_default("sides", std::string("[") + kSideNames[k] + "] (the face towards '" +
                                    building.adjacent.to + "')");
   } else {
@@ -197,16 +214,40 @@ Bumper3DConfig read_slab_bumper3d(const InputNode& node, const Building3DConfig&
   }
   read_strip_rubber(node, b);
   if (!(b.thickness > 0)) return b;
-  for (const Level3D& level : levels3d(building))
-    for (int k = 0; k < 4; ++k) {
-      if (!b.on[k]) continue;
-      try {
-        slab_bumper_strips(level.diaphragm->plan, k, b);
-      } catch (const std::invalid_argument& e) {
-        const char* key = node.has("to") ? "to" : node.has("from") ? "from" : "sides";
-        node.fail_at_key(key, level.name + ": " + e.what());
+  if (by_outline) {
+    // Each listed face is one of some level's (a convex level's: its box sides).
+    std::vector<std::string> known;
+    for (const Level3D& level : levels) {
+      const std::vector<Vec2>& plan = level.diaphragm->plan;
+      if (is_convex_list(plan)) {
+        known.insert(known.end(), kSideNames.begin(), kSideNames.end());
+        continue;
       }
+      for (const OutlineFace& f : outline_faces(SimplePolygon(std::span<const Vec2>(plan))))
+        known.push_back(f.name);
     }
+    for (const std::string& face : b.faces) {
+      if (std::find(known.begin(), known.end(), face) != known.end()) continue;
+      std::string list;
+      for (const std::string& k : known)
+        if (list.find("'" + k + "'") == std::string::npos)
+          list += (list.empty() ? "'" : ", '") + k + "'";
+      const std::string what =
+          "no slab of this building has a face '" + face + "' (the outline's faces: " + list + ")";
+      if (sides)
+        for (const InputNode& e : sides->elements())
+          if (e.string() == face) e.fail(what);
+      node.fail_at_key("sides", what);
+    }
+  }
+  for (const Level3D& level : levels) {
+    try {
+      slab_face_strips(level.diaphragm->plan, b);
+    } catch (const std::invalid_argument& e) {
+      const char* key = node.has("to") ? "to" : node.has("from") ? "from" : "sides";
+      node.fail_at_key(key, level.name + ": " + e.what());
+    }
+  }
   return b;
 }
 
@@ -218,11 +259,9 @@ void check_slab_bumpers(const ModelConfig& config, const std::vector<StructureMa
     const auto node = marks[i].item->find("bumper");
     if (!node) continue;
     for (const Level3D& level : levels3d(b))
-      for (int k = 0; k < 4; ++k) {
-        if (!b.bumper.on[k]) continue;
+      for (const FaceStrips& face : slab_face_strips(level.diaphragm->plan, b.bumper)) {
         std::vector<Vec2> rubber_W;
-        for (const Vec2& p : slab_bumper_strips(level.diaphragm->plan, k, b.bumper).rubber)
-          rubber_W.push_back(to_plan(b, p));
+        for (const Vec2& p : face.strips.rubber) rubber_W.push_back(to_plan(b, p));
         const ConvexPolygon rubber(std::span<const Vec2>(rubber_W.data(), rubber_W.size()));
         for (const PlanSlab& other : site.slabs) {
           if (other.structure == static_cast<int>(i) ||
@@ -233,8 +272,8 @@ void check_slab_bumpers(const ModelConfig& config, const std::vector<StructureMa
           std::snprintf(what, sizeof what,
                         "the rubber on the %s face of '%s/%s' (%g cm) touches or enters '%s/%s' "
                         "at rest: a bumper must be thinner than the gap it faces",
-                        kSideNames[k], b.name.c_str(), level.name.c_str(), 100 * b.bumper.thickness,
-                        other.name.c_str(), other.level.c_str());
+                        face.face.c_str(), b.name.c_str(), level.name.c_str(),
+                        100 * b.bumper.thickness, other.name.c_str(), other.level.c_str());
           problems.error_at(*node, "thickness", what);
         }
       }

@@ -85,27 +85,6 @@ std::vector<Vec2> read_plan(const InputNode& node) {
   return kept;
 }
 
-// What a non-convex plan (L, T, U) does not work with yet: rubber on its slab's faces (on a box
-// side); refused at the key. (Rubber on the moat's walls, walls.bumper, and slabs striking
-// columns work.)
-bool has_non_convex_plan(const Building3DConfig& b) {
-  const auto non_convex = [](const std::vector<Vec2>& plan) {
-    return !plan.empty() && !is_convex_list(plan);
-  };
-  return non_convex(b.base.plan) ||
-         std::any_of(b.storeys.begin(), b.storeys.end(),
-                     [&](const Storey3DConfig& s) { return non_convex(s.floor.plan); });
-}
-
-void refuse_with_non_convex_plans(const InputNode& item, const Building3DConfig& b) {
-  if (!has_non_convex_plan(b)) return;
-  const char* why =
-      " is not available with a non-convex plan in this version (its L, T or U "
-      "outline): use convex plans or remove it";
-  for (const char* key : {"bumper"})
-    if (item.find(key)) item.fail_at_key(key, std::string(key) + why);
-}
-
 // Column section and material: defaults from the building's `columns:` map, overridden per item.
 struct ColumnProps {
   std::optional<double> b, h, I11, I22, J, E, G, nu;
@@ -729,7 +708,6 @@ std::vector<Building3DConfig> read_structures3d(const InputNode& node) {
       if (out[k].name == out.back().name)
         item.fail_at_key("name", "two structures are named '" + out.back().name + "'");
     if (const auto adj = item.find("adjacent")) place_adjacent(*adj, item, out);
-    refuse_with_non_convex_plans(item, out.back());
     // Rubber on the slabs' faces: after the placement, whose side it defaults to.
     if (const auto bumper = item.find("bumper"))
       out.back().bumper = read_slab_bumper3d(*bumper, out.back(), read_side);

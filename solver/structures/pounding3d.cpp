@@ -85,20 +85,11 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
       levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan;
   const SimplePolygon slab{std::span<const Vec2>(plan)};
   // Each run's face name, then its gap (MoatWalls3DConfig::outline_gap).
-  std::map<std::string, int> faces;  // how many walls face each compass point so far
   std::vector<std::string> names;
   std::vector<double> gaps;
-  for (const auto& [start, end] : outline_runs(slab)) {
-    const Vec2 run = end - start;
-    const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run;
-    std::string face = compass_face({d.y, -d.x});
-    if (const int k = ++faces[face]; k > 1) {
-      char numbered[32];  // "east 2" (snprintf: GCC 12 misreads a string += as overlapping)
-      std::snprintf(numbered, sizeof numbered, "%s %d", face.c_str(), k);
-      face = numbered;
-    }
-    gaps.push_back(w.outline_gap(face));
-    names.push_back(std::move(face));
+  for (OutlineFace& face : outline_faces(slab)) {
+    gaps.push_back(w.outline_gap(face.name));
+    names.push_back(std::move(face.name));
   }
   const std::vector<MoatWall> walls = following_moat(slab, gaps, w.thickness, w.extension);
   for (std::size_t k = 0; k < walls.size(); ++k) {
@@ -153,6 +144,72 @@ std::optional<BumperStrips> wall_bumper_strips(const Building3DConfig& b, int si
   return std::nullopt;
 }
 
+std::vector<OutlineFace> outline_faces(const SimplePolygon& plan) {
+  std::vector<OutlineFace> out;
+  std::map<std::string, int> faces;  // how many runs face each compass point so far
+  for (const auto& [start, end] : outline_runs(plan)) {
+    const Vec2 run = end - start;
+    const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run;
+    std::string face = compass_face({d.y, -d.x});
+    if (const int k = ++faces[face]; k > 1) {
+      char numbered[32];  // "east 2" (snprintf: GCC 12 misreads a string += as overlapping)
+      std::snprintf(numbered, sizeof numbered, "%s %d", face.c_str(), k);
+      face = numbered;
+    }
+    out.push_back({std::move(face), start, end});
+  }
+  return out;
+}
+
+std::vector<FaceStrips> slab_face_strips(const std::vector<Vec2>& plan_B,
+                                         const Bumper3DConfig& bumper) {
+  std::vector<FaceStrips> out;
+  if (!bumper.any() || !(bumper.thickness > 0)) return out;
+  if (is_convex_list(plan_B)) {  // the box sides (bit for bit as before non-convex plans)
+    for (int side = 0; side < 4; ++side) {
+      const char* name = MoatWalls3DConfig::kSideNames[side];
+      const bool on = bumper.faces.empty() ? bumper.on[side]
+                                           : std::find(bumper.faces.begin(), bumper.faces.end(),
+                                                       name) != bumper.faces.end();
+      if (on) out.push_back({name, slab_bumper_strips(plan_B, side, bumper)});
+    }
+    return out;
+  }
+  const std::vector<OutlineFace> faces =
+      outline_faces(SimplePolygon(std::span<const Vec2>(plan_B)));
+  const int n = static_cast<int>(faces.size());
+  const double t = bumper.thickness;
+  for (int k = 0; k < n; ++k) {
+    const OutlineFace& face = faces[k];
+    if (!bumper.on_outline_face(face.name)) continue;
+    const Vec2 run = face.end - face.start;
+    const double length = std::hypot(run.x, run.y);
+    const Vec2 d = (1.0 / length) * run, m{d.y, -d.x};  // m: outward (the slab to the left)
+    // The slab as a wall standing behind the face (face_bumper_strips' inner face is the one of
+    // least n·x, n = −m): its strips lie outside the slab, the rubber outermost.
+    const std::vector<Vec2> wall = {face.start, face.end, face.end - length * m,
+                                    face.start - length * m};
+    Bumper3DConfig span = bumper;
+    // A re-entrant corner at the run's start whose other face has rubber too: the two strips
+    // would overlap in a t × t square there; this face's begins t from the corner instead, where
+    // the other's ends (the rubber lines the corner once).
+    const OutlineFace& before = faces[(k + n - 1) % n];
+    const Vec2 in = face.start - before.start;
+    if (cross(in, run) < 0 && bumper.on_outline_face(before.name)) {
+      // from/to run from the face's end of least y (then x), as face_bumper_strips measures.
+      const bool start_first =
+          face.start.y < face.end.y || (face.start.y == face.end.y && face.start.x < face.end.x);
+      if (start_first)
+        span.from = std::max(span.from, t);
+      else
+        span.to = std::min(span.to, length - t);
+      if (!(span.from < std::min(span.to, length))) continue;  // nothing left beyond the corner
+    }
+    out.push_back({face.name, face_bumper_strips(wall, -1.0 * m, span)});
+  }
+  return out;
+}
+
 std::vector<std::string> moat_faces(const Building3DConfig& building) {
   Building3DConfig b = building;
   b.walls.follow_outline = true;
@@ -190,8 +247,8 @@ void note_upper_contact(Model& model, int u, int element, bool with_wall) {
   }
 }
 
-std::string slab_face_label(const std::string& slab_label, int side) {
-  return slab_label + " " + MoatWalls3DConfig::kSideNames[side];
+std::string slab_face_label(const std::string& slab_label, const std::string& face) {
+  return slab_label + " " + face;
 }
 
 int walls_level3d(const Building3DConfig& b) {
@@ -454,15 +511,13 @@ void add_slab_bumper(Model& model, const ModelConfig& config, const SiteBody& ot
   const auto level = std::find_if(levels.begin(), levels.end(),
                                   [&](const Level3D& l) { return l.name == owner.level; });
   if (level == levels.end()) throw std::logic_error("3D pounding: no level " + owner.level);
-  for (int side = 0; side < 4; ++side) {
-    if (!bumper.on[side]) continue;
-    const BumperStrips strips = slab_bumper_strips(level->diaphragm->plan, side, bumper);
-    const std::vector<Vec2> rubber_W = placed(b, strips.rubber);
+  for (const FaceStrips& face : slab_face_strips(level->diaphragm->plan, bumper)) {
+    const std::vector<Vec2> rubber_W = placed(b, face.strips.rubber);
     if (separation_of(polygon_of(rubber_W), other.plan_W).distance >
         config.contact3d.search_distance)
       continue;
-    add_strip_contacts(model, config, other, owner, slab_face_label(owner.label(), side), rubber_W,
-                       placed(b, strips.bottomed), bumper, body, law);
+    add_strip_contacts(model, config, other, owner, slab_face_label(owner.label(), face.face),
+                       rubber_W, placed(b, face.strips.bottomed), bumper, body, law);
   }
 }
 

@@ -51,6 +51,30 @@ struct SiteBody {
 // Every slab (base slabs and floors, bottom to top per structure) and every moat wall.
 std::vector<SiteBody> site_bodies(const ModelConfig& config);
 
+// A straight run of a plan's outline (collinear vertices dropped), counter-clockwise, the plan on
+// its left, named by its outward normal's compass point: "east", "north-east", ...; a second run
+// facing the same way "east 2", and so on in the order of the runs (geometry/moat.h,
+// outline_runs). The names of a following moat's walls and of a slab's rubber.
+struct OutlineFace {
+  std::string name;
+  Vec2 start, end;  // m, the plan's frame
+};
+std::vector<OutlineFace> outline_faces(const SimplePolygon& plan);
+
+// The rubber on one slab's faces (Building3DConfig::bumper; plan_B its outline in the building
+// frame), per face: a convex plan's bumpered box sides ("east": bumper_layer3d.h,
+// slab_bumper_strips); a non-convex plan's bumpered outline faces (outline_faces; every face when
+// bumper.faces is empty), each strip in front of its run over [from, to] measured from the run's
+// end of least y (then least x). At a re-entrant corner between two bumpered faces the face that
+// starts there (counter-clockwise) begins its rubber t from the corner, where the other's ends.
+// Throws std::invalid_argument when from/to lie beyond a bumpered face (or a box side is a corner).
+struct FaceStrips {
+  std::string face;
+  BumperStrips strips;
+};
+std::vector<FaceStrips> slab_face_strips(const std::vector<Vec2>& plan_B,
+                                         const Bumper3DConfig& bumper);
+
 // The faces of a building's outline walls (walls: {follow: outline}), every run's whether or not
 // `sides` selects it, in the order they are listed: "east", "west", "north", "south", then the
 // others along the outline ("north-east", a second east face "east 2", ...).
@@ -112,9 +136,9 @@ PolygonContactConfig pair_law(const ModelConfig& config, double mass_a, double m
 // Marks `element`, acting on the level whose x DOF is u, as not part of an isolated structure's
 // base shear unless u is its base slab (and, on a raised base slab, the element a wall's).
 void note_upper_contact(Model& model, int u, int element, bool with_wall);
-// A slab's face with rubber (Building3DConfig::bumper): "<slab label> <side>", e.g.
-// "east-neighbour/floor 1 west" (side: MoatWalls3DConfig::Side, building frame).
-std::string slab_face_label(const std::string& slab_label, int side);
+// A slab's face with rubber (Building3DConfig::bumper): "<slab label> <face>", e.g.
+// "east-neighbour/floor 1 west", "podium/base east 2" (building frame).
+std::string slab_face_label(const std::string& slab_label, const std::string& face);
 
 // Adds a PolygonContact per pair (the model must hold the structures' DOFs already), and after a
 // pair's contact the two of each bumper it has (issue 27): a bumpered wall's, and those of each
