@@ -4,6 +4,7 @@
 # (the order rotated each round), and the export tables of every build compared. Usage:
 #   bash bench/study_sweep_compare.sh [build-dir] reference-isopound[,reference2,...] [to] [rounds]
 # e.g. bash bench/study_sweep_compare.sh build /work/base-4e93098/build/isopound 1.2 3
+#      STUDY=configs/studies/3d-xy5-angles.yaml bash bench/study_sweep_compare.sh build REF - 2
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin="$(realpath "${1:-build}")/isopound"
@@ -14,12 +15,16 @@ rounds="${4:-3}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 records="$(realpath ../shared/records)"
-sed -e "s#model: ../thesis-3storey-bw.yaml#model: $(realpath configs/thesis-3storey-bw.yaml)#" \
+# STUDY: another study of configs/studies (e.g. 3d-xy5-angles.yaml, all its runs; `to` is then
+# ignored); its model and records paths are made absolute.
+study="${STUDY:-configs/studies/chapter2.yaml}"
+model="$(sed -nE 's/^model: ([^ #]*).*$/\1/p' "$study")"
+sed -e "s#^model: .*#model: $(realpath "$(dirname "$study")/$model")#" \
     -e "s#../../../shared/records#$records#" \
-    -e "s#to: 3 cm, step: 0.05 cm#to: $to cm, step: 0.05 cm#" configs/studies/chapter2.yaml \
+    -e "s#to: 3 cm, step: 0.05 cm#to: $to cm, step: 0.05 cm#" "$study" \
     > "$work/chapter2.yaml"
 runs=$("$bin" sweep "$work/chapter2.yaml" --dry-run | head -1 | sed -E 's/.*: ([0-9]+) runs.*/\1/')
-echo "chapter-2 study, u_y to $to cm: $runs runs; $rounds rounds; load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "$(basename "$study"), u_y to $to cm (chapter 2): $runs runs; $rounds rounds; load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 binaries=("$bin" "${refs[@]}")
 tags=(new)
 for k in "${!refs[@]}"; do tags+=("ref$k"); echo "ref$k = ${refs[$k]}"; done
