@@ -18,6 +18,7 @@
 #include "solver/structures/job.h"
 #include "solver/structures/pounding3d.h"
 #include "test_support.h"
+#include "tests/bumper3d_support.h"
 #include "tests/model_test_support.h"
 
 namespace isopound {
@@ -111,42 +112,15 @@ TEST(Bumper3DOutline, LFaceStripsLineTheOutlineAndTheNotchOnce) {
 // A U-shaped building (24 m square, a 3 m x 6 m notch in its west face, symmetric about the x
 // axis: the x pulse moves it along x only) and a fixed-base neighbour 4 cm east of its straight
 // east face. `building_extra` / `neighbour_extra` are keys added to each (indented 4).
+constexpr const char* kUPlan =
+    "{polygon: [[-12 m, -12 m], [12 m, -12 m], [12 m, 12 m], [-12 m, 12 m], [-12 m, 3 m], "
+    "[-9 m, 3 m], [-9 m, -3 m], [-12 m, -3 m]]}";
+
 std::string u_and_neighbour(const std::string& building_extra, const std::string& neighbour_extra) {
-  return R"(structures:
-  - name: building
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    plan: {polygon: [[-12 m, -12 m], [12 m, -12 m], [12 m, 12 m], [-12 m, 12 m], [-12 m, 3 m],
-                     [-9 m, 3 m], [-9 m, -3 m], [-12 m, -3 m]]}
-    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 3, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    base: {mass: 340 t}
-    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
-    damping: {type: none}
-)" + building_extra +
-         R"(  - name: neighbour
-    isolated: false
-    adjacent: {to: building, side: east, gap: 4 cm}
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    plan: {rectangle: [16.85 m, 16.85 m]}
-    columns: {section: [35 cm, 35 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 2, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    damping: {type: none}
-)" + neighbour_extra;
+  return test::building_beside_neighbour(kUPlan, building_extra, neighbour_extra);
 }
 
-struct Outcome {
-  Model model;
-  AnalysisResult result;
-};
-
-Outcome run(const ModelConfig& c, const GroundMotion& g, double t_end) {
-  RunOptions o;
-  o.output.histories = false;
-  o.analysis.t_end = t_end;
-  Outcome r{build_model(c), {}};
-  r.result = run_analysis(r.model, g, o);
-  return r;
-}
+using Outcome = test::BumperOutcome;
 
 int impacts_of(const Model& m, const std::string& label) {
   int n = 0;
@@ -168,26 +142,17 @@ const std::string kRubber = "{thickness: 2 cm, E: 5 MPa, height: 30 cm, e: 0.7";
 // differences' round-off (1e-6 as for two rectangles, tests/bumper3d_test.cpp).
 TEST(Bumper3DOutline, RubberOnTheUOrOnItsNeighbourIsTheSameHeadOn) {
   const GroundMotion pulse = make_pulse(PulseParameters{});  // along x
-  const Outcome on_u = run(
+  const Outcome on_u = test::run_bumper_model(
       test::load_model_text(u_and_neighbour("    bumper: " + kRubber + ", sides: [east]}\n", "")),
       pulse, 3.3);
-  const Outcome on_neighbour =
-      run(test::load_model_text(u_and_neighbour("", "    bumper: " + kRubber + "}\n")), pulse, 3.3);
+  const Outcome on_neighbour = test::run_bumper_model(
+      test::load_model_text(u_and_neighbour("", "    bumper: " + kRubber + "}\n")), pulse, 3.3);
   const int rubber_u = impacts_of(on_u.model, "neighbour/floor 1|building/floor 1 east bumper");
   EXPECT_GE(rubber_u, 1);
   EXPECT_EQ(rubber_u,
             impacts_of(on_neighbour.model, "building/floor 1|neighbour/floor 1 west bumper"));
   EXPECT_EQ(impacts_of(on_u.model, "building/floor 1|neighbour/floor 1"), 0);  // no concrete
-  const auto x_peaks = [](const Outcome& o) {
-    std::vector<test::NamedPeak> p;
-    for (std::size_t i = 0; i < o.model.dofs.size(); ++i)
-      if (o.model.dofs[i].label.ends_with("(x)")) {
-        p.push_back({"u " + o.model.dofs[i].label, o.result.displacement[i].value});
-        p.push_back({"a " + o.model.dofs[i].label, o.result.absolute_acceleration[i].value});
-      }
-    return p;
-  };
-  const test::Comparison c = test::compare(x_peaks(on_u), x_peaks(on_neighbour));
+  const test::Comparison c = test::compare(test::x_peaks(on_u), test::x_peaks(on_neighbour));
   EXPECT_LE(c.worst, 1e-6) << c.where;
 }
 
@@ -195,35 +160,18 @@ TEST(Bumper3DOutline, RubberOnTheUOrOnItsNeighbourIsTheSameHeadOn) {
 // on both prongs' tips, the notch's back and its two sides; the pulse at 30 degrees: every
 // episode of every contact does net work <= 0 and the energy balance closes.
 TEST(Bumper3DOutline, EveryEpisodeIsPassiveAgainstARubberLinedU) {
-  const std::string text = R"(structures:
-  - name: building
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    plan: {rectangle: [16.95 m, 16.95 m]}
-    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 3, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    base: {mass: 340 t}
-    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
-    damping: {type: none}
-    eccentricity: [1.5 m, 1 m]
-  - name: neighbour
-    isolated: false
-    adjacent: {to: building, side: east, gap: 4 cm}
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    plan: {polygon: [[-12 m, -12 m], [12 m, -12 m], [12 m, 12 m], [-12 m, 12 m], [-12 m, 3 m],
-                     [-9 m, 3 m], [-9 m, -3 m], [-12 m, -3 m]]}
-    columns: {section: [35 cm, 35 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 2, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    damping: {type: none}
-    bumper: {thickness: 2 cm, E: 0.5 MPa, height: 30 cm, e: 0.6, mu_static: 0.9, mu_kinetic: 0.7,
-             sides: [west, west 2, west 3, south 2, north 2]}
-)";
+  const std::string text = test::building_beside_neighbour(
+      "{rectangle: [16.95 m, 16.95 m]}", "    eccentricity: [1.5 m, 1 m]\n",
+      "    bumper: {thickness: 2 cm, E: 0.5 MPa, height: 30 cm, e: 0.6, mu_static: 0.9, "
+      "mu_kinetic: 0.7, sides: [west, west 2, west 3, south 2, north 2]}\n",
+      kUPlan);
   GroundMotion g = make_pulse(PulseParameters{});
   g.acceleration_y = g.acceleration;
   for (std::size_t k = 0; k < g.acceleration.size(); ++k) {
     g.acceleration_y[k] *= 0.5;
     g.acceleration[k] *= std::sqrt(3.0) / 2;
   }
-  const Outcome r = run(test::load_model_text(text), g, 4.0);
+  const Outcome r = test::run_bumper_model(test::load_model_text(text), g, 4.0);
   int rubber = 0, bottomed = 0, episodes = 0;
   for (const auto& e : r.model.elements) {
     const auto* c = dynamic_cast<const PolygonContact*>(e.get());

@@ -24,6 +24,7 @@
 #include "solver/structures/job.h"
 #include "solver/structures/pounding3d.h"
 #include "test_support.h"
+#include "tests/bumper3d_support.h"
 #include "tests/model_test_support.h"
 
 namespace isopound {
@@ -147,18 +148,10 @@ std::string walled_building(const std::string& walls, const std::string& extra =
          "    walls: " + walls + "\n";
 }
 
-struct Outcome {
-  Model model;
-  AnalysisResult result;
-};
+using Outcome = test::BumperOutcome;
 
 Outcome run(const ModelConfig& c, double t_end = 3.3) {
-  RunOptions o;
-  o.output.histories = false;
-  o.analysis.t_end = t_end;
-  Outcome r{build_model(c), {}};
-  r.result = run_analysis(r.model, make_pulse(PulseParameters{}), o);  // along x only
-  return r;
+  return test::run_bumper_model(c, make_pulse(PulseParameters{}), t_end);  // along x only
 }
 
 std::vector<test::NamedPeak> level_peaks(const AnalysisResult& r) {
@@ -322,25 +315,8 @@ TEST(Bumper3DConvergence, XY5With10cmBumpersDefaultsWithin1PercentOfFixedStep) {
 // grid; `building_extra` / `neighbour_extra` are keys added to each (indented 4).
 std::string with_neighbour(const std::string& neighbour_extra,
                            const std::string& building_extra = "") {
-  return R"(structures:
-  - name: building
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    plan: {rectangle: [16.95 m, 16.95 m]}
-    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 3, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    base: {mass: 340 t}
-    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
-    damping: {type: none}
-)" + building_extra +
-         R"(  - name: neighbour
-    isolated: false
-    adjacent: {to: building, side: east, gap: 4 cm}
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    plan: {rectangle: [16.85 m, 16.85 m]}
-    columns: {section: [35 cm, 35 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 2, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    damping: {type: none}
-)" + neighbour_extra;
+  return test::building_beside_neighbour("{rectangle: [16.95 m, 16.95 m]}", building_extra,
+                                         neighbour_extra);
 }
 
 const std::string kRubber = "{thickness: 2 cm, E: 5 MPa, height: 30 cm, e: 0.7";
@@ -401,20 +377,12 @@ TEST(Bumper3DNeighbour, RubberOnEitherFaceIsTheSameHeadOn) {
   EXPECT_EQ(impacts_of(on_building.model, "neighbour/floor 1|building/floor 1 east bumper"),
             impacts_of(on_neighbour.model, floor1 + " west bumper"));
   // Along x (y and θ stay at round-off: their peaks are noise).
-  const auto x_peaks = [](const Outcome& o) {
-    std::vector<test::NamedPeak> p;
-    for (std::size_t i = 0; i < o.model.dofs.size(); ++i)
-      if (o.model.dofs[i].label.ends_with("(x)")) {
-        p.push_back({"u " + o.model.dofs[i].label, o.result.displacement[i].value});
-        p.push_back({"a " + o.model.dofs[i].label, o.result.absolute_acceleration[i].value});
-      }
-    return p;
-  };
-  const test::Comparison c = test::compare(x_peaks(on_building), x_peaks(on_neighbour));
+  const test::Comparison c = test::compare(test::x_peaks(on_building), test::x_peaks(on_neighbour));
   EXPECT_LE(c.worst, 1e-6) << c.where;
   // The bare neighbour is hit harder: the rubber softens the first-storey impacts.
   const Outcome bare = run(load_text(with_neighbour("")));
-  const double a_rubber = x_peaks(on_neighbour)[3].value, a_bare = x_peaks(bare)[3].value;
+  const double a_rubber = test::x_peaks(on_neighbour)[3].value,
+               a_bare = test::x_peaks(bare)[3].value;
   EXPECT_LT(a_rubber, a_bare);
 }
 
