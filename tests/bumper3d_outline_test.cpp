@@ -109,6 +109,52 @@ TEST(Bumper3DOutline, LFaceStripsLineTheOutlineAndTheNotchOnce) {
   EXPECT_EQ(box(box_faces[0].strips.rubber), box(want.rubber));
 }
 
+// A strip that ends inside the face striking it (a span's end, a re-entrant corner, a notch) and
+// is pressed through its whole depth: the overlap is the strip's piece beside the slab, whose
+// two boundary crossings lie on the slab's side face, across the strip; that chord's normal
+// would run along the face, with δ_N = A/w metres deep. The strip's own compression direction
+// keeps the normal on the face normal and δ_N at the strip's depth s (A = s L, w = L).
+TEST(Bumper3DOutline, AStripPressedThroughItsDepthKeepsItsFaceNormal) {
+  const double s = 0.03;                                         // strip depth, m
+  const ConvexPolygon slab{{-5, -5}, {5, -5}, {5, 5}, {-5, 5}};  // a 10 m square
+  // The strip lies in front of x = 5.01 over y in [-2, 12]: its end y = -2 inside the slab's face.
+  const ConvexPolygon strip{{5.01, -2}, {5.01 + s, -2}, {5.01 + s, 12}, {5.01, 12}};
+  PolygonContactConfig cfg;
+  cfg.friction = false;
+  Bumper3DConfig b = rubber(0.05);
+  cfg.length_law = bumper_rubber_law(b, 2.58e10);
+  const PolygonBody a{0, 1, -1, {0, 0}, slab, 340e3};
+  const PolygonBody fixed{-1, -1, -1, {0, 0}, strip, std::numeric_limits<double>::infinity()};
+  const double through = 0.01 + s + 0.005;  // the slab's face 5 mm beyond the strip's back
+  const auto pressed = [&](const PolygonContactConfig& c) {
+    PolygonContact contact("c", a, fixed, c);
+    contact.begin_step(1e-4, false);
+    contact.set_trial(Eigen::Vector2d(through, 0), Eigen::Vector2d(0, 0));
+    return contact.snapshot();
+  };
+  const ContactSnapshot chord = pressed(cfg);  // without the direction: the chord's normal
+  EXPECT_LT(std::abs(chord.n_AB.x), 1e-9);
+  EXPECT_GT(chord.indentation, 1.0);  // metres: A/w with w the strip's depth
+  cfg.strip_compression_W = {1, 0};
+  const ContactSnapshot held = pressed(cfg);
+  EXPECT_EQ(held.n_AB.x, 1.0);
+  EXPECT_EQ(held.n_AB.y, 0.0);
+  EXPECT_NEAR(held.indentation, s, 1e-12);
+  EXPECT_NEAR(held.area, s * 7.0, 1e-12);  // y from -2 to 5
+  // Below full depth the two agree: the chord runs along the strip's front.
+  PolygonContactConfig plain = cfg;
+  plain.strip_compression_W = {};
+  const auto partly = [&](const PolygonContactConfig& c) {
+    PolygonContact contact("c", a, fixed, c);
+    contact.begin_step(1e-4, false);
+    contact.set_trial(Eigen::Vector2d(0.01 + 0.5 * s, 0), Eigen::Vector2d(0, 0));
+    return contact.snapshot();
+  };
+  EXPECT_NEAR(partly(cfg).normal_force, partly(plain).normal_force,
+              1e-12 * partly(plain).normal_force);
+  EXPECT_NEAR(partly(cfg).indentation, 0.5 * s, 1e-12);
+}
+
 // A U-shaped building (24 m square, a 3 m x 6 m notch in its west face, symmetric about the x
 // axis: the x pulse moves it along x only) and a fixed-base neighbour 4 cm east of its straight
 // east face. `building_extra` / `neighbour_extra` are keys added to each (indented 4).

@@ -185,6 +185,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   // Boxes apart (overlap_of's own first test): no overlap, open unless frozen closed.
   if (out.box_gap > 0.0 && !(freeze && C.closed)) return open();
   Overlap ov = plan_pair_ ? plan_pair_->overlap(slot_, q) : overlap_of(pa, pb, cfg_.overlap);
+  orient_to_strip(ov, q[5]);
   const bool overlapping = ov.area > 0.0;
   out.closed = freeze ? C.closed : overlapping;
   out.started = !freeze && !C.closed && overlapping;
@@ -202,7 +203,8 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // (continuous_force: a sliver as deep as the overlap is short of it, so that the shape is
     // continuous where the overlap reaches the sliver's depth too.)
     const double deeper_by = cfg_.continuous_force ? sliver - ov.area / overlap_width : sliver;
-    const Overlap shape = overlap_at(pa, q, -deeper_by * ov.n_AB);
+    Overlap shape = overlap_at(pa, q, -deeper_by * ov.n_AB);
+    orient_to_strip(shape, q[5]);
     if (shape.area > 0.0) ov = shape;
   }
   if (!overlapping) {
@@ -213,6 +215,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     if ((plan_pair_ ? separation_at(q) : separation_of(pa, pb)).distance > 1e-9 * length_scale_)
       return;  // apart: no force
     ov = surface_overlap(pa, pb, q, sliver);
+    orient_to_strip(ov, q[5]);
     if (!(ov.area > 0.0)) return;
     at_surface = true;
   }
@@ -327,6 +330,27 @@ Overlap PolygonContact::surface_overlap(const ConvexPolygon& pa, const ConvexPol
   const Separation sep = plan_pair_ ? separation_at(q) : separation_of(pa, pb);
   const double shift = std::max(sep.distance, 0.0) + sliver;
   return overlap_at(pa, q, -shift * sep.n_AB);
+}
+
+void PolygonContact::orient_to_strip(Overlap& ov, double theta_B) const {
+  const Vec2 n0 = cfg_.strip_compression_W;
+  if ((n0.x == 0.0 && n0.y == 0.0) || ov.vertex_count == 0) return;
+  const Vec2 n = b_.dof_theta >= 0 ? rotate(n0, theta_B) : n0;
+  const Vec2 t{-n.y + 0.0, n.x + 0.0};
+  double lo = dot(t, ov.vertices[0]), hi = lo;
+  for (int k = 1; k < ov.vertex_count; ++k) {
+    lo = std::min(lo, dot(t, ov.vertices[k]));
+    hi = std::max(hi, dot(t, ov.vertices[k]));
+  }
+  const Vec2 on_line = ov.vertex_count >= 3 ? ov.p_WC : ov.vertices[0];
+  const double c = dot(t, on_line);
+  ov.n_AB = n;
+  ov.t_AB = t;
+  ov.p_WP1 = on_line + (lo - c) * t;
+  ov.p_WP2 = on_line + (hi - c) * t;
+  const double width = hi - lo;
+  ov.mean_depth = ov.area > 0.0 && width > 0.0 ? ov.area / width : 0.0;
+  ov.indentation = (ov.vertex_count == 3 ? 2.0 : 1.0) * ov.mean_depth;
 }
 
 double PolygonContact::secant_width_of(const Overlap& ov) const {
@@ -697,7 +721,8 @@ double PolygonContact::approach_limit() const {
   } else if (toi.time < area_contact_step(0.0)) {  // the floor's largest value (w = width_floor_)
     const ConvexPolygon pa = place(a_, C.q[0], C.q[1], C.q[2]);
     const ConvexPolygon pb = place(b_, C.q[3], C.q[4], C.q[5]);
-    const Overlap ov = surface_overlap(pa, pb, C.q, kSurfaceSliver * length_scale_);
+    Overlap ov = surface_overlap(pa, pb, C.q, kSurfaceSliver * length_scale_);
+    orient_to_strip(ov, C.q[5]);
     floor = area_contact_step(ov.area > 0.0 ? secant_width_of(ov) : 0.0);
   }
   return approach_limit_ = std::max(toi.time, floor);

@@ -82,6 +82,12 @@ struct PolygonContactConfig {
   // per m of contact; a linear f = k δ_N is the area law k A_c without damping). Not with
   // normal_law.
   std::shared_ptr<const ImpactLaw> length_law;
+  // A rubber strip as body B (a bumper's contact, with length_law): the unit direction B is
+  // compressed along at rest, plan frame W, from body A into the face that carries the strip; it
+  // turns with B. The contact's normal is this direction, not the overlap's chord: a strip that
+  // ends inside the striking face and is pressed through its whole depth has its chord across
+  // the strip, whose normal would run along the face. Zero (every other contact): the chord's.
+  Vec2 strip_compression_W;
 };
 
 // What a writer of the contact-event log needs at a step (SI, plan frame W).
@@ -257,6 +263,11 @@ class PolygonContact final : public Element {
   // speed_bound(s.qdot), computed once per state.
   double speed_of(const State& s) const;
   // A_c/δ_N of an overlap's shape under the configured indentation rule (w, or w/2).
+  // A strip's overlap (PolygonContactConfig::strip_compression_W set): its normal turned to the
+  // strip's compression direction at B's angle theta_B, the tangent +90° from it, P1, P2 the
+  // overlap's extremes along the tangent on the line through its centroid, δ_N and the mean depth
+  // from that width. Other contacts: unchanged.
+  void orient_to_strip(Overlap& ov, double theta_B) const;
   double secant_width_of(const Overlap& ov) const;
   double secant_width_of(const Overlap& ov, bool triangle) const;
   // The contact step of the area law at a secant width (m): π √(m_eff/(k_N w_s))/steps, w_s

@@ -44,8 +44,9 @@ std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, 
 BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side, const Bumper3DConfig& bumper) {
   const double t = bumper.thickness, s = bumper.max_strain * t;
   const BumperSpan span{bumper.from, bumper.to};
+  static constexpr Vec2 kInto[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};  // into the east wall, ...
   return {bumper_layer_outline(wall, side, s, span, t - s),
-          bumper_layer_outline(wall, side, t - s, span)};
+          bumper_layer_outline(wall, side, t - s, span), kInto[side]};
 }
 
 namespace {
@@ -83,7 +84,7 @@ BumperStrips face_bumper_strips(const std::vector<Vec2>& wall, Vec2 n,
   const Vec2 face_start = on_face + dot(start - on_face, d) * d;
   const double t = bumper.thickness, s = bumper.max_strain * t, b = std::min(to, length);
   return {face_strip(face_start, d, n, bumper.from, b, s, t - s),
-          face_strip(face_start, d, n, bumper.from, b, t - s, 0.0)};
+          face_strip(face_start, d, n, bumper.from, b, t - s, 0.0), n};
 }
 
 BumperStrips slab_bumper_strips(const std::vector<Vec2>& plan, int side,

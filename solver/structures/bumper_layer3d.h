@@ -33,6 +33,10 @@ std::vector<Vec2> bumper_layer_outline(const std::vector<Vec2>& wall, int side, 
 // rubber, (1 − max_strain) t deep against the wall face, which acts as concrete.
 struct BumperStrips {
   std::vector<Vec2> rubber, bottomed;  // building frame, as bumper_layer_outline
+  // The direction the rubber is compressed along (unit, building frame): from the slab that
+  // strikes it into the wall or slab face that carries it
+  // (PolygonContactConfig::strip_compression_W).
+  Vec2 n;
 };
 BumperStrips bumper_strips(const std::vector<Vec2>& wall, int side, const Bumper3DConfig& bumper);
 

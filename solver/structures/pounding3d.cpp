@@ -439,13 +439,14 @@ template <class MakeBody>
 void add_strip_contacts(Model& model, const ModelConfig& config, const SiteBody& other,
                         const SiteBody& owner, const std::string& face,
                         const std::vector<Vec2>& rubber_W, const std::vector<Vec2>& bottomed_W,
-                        const Bumper3DConfig& bumper, const MakeBody& body,
+                        Vec2 compression_W, const Bumper3DConfig& bumper, const MakeBody& body,
                         const PolygonContactConfig& pair_law) {
   const double k_normal = config.contact3d.law.k_normal;
   PolygonContactConfig law = pair_law;
   law.normal_law = nullptr;
   law.mu_static = bumper.mu_static;
   law.mu_kinetic = bumper.mu_kinetic;
+  law.strip_compression_W = compression_W;
   const std::shared_ptr<const ImpactLaw> rubber = bumper_rubber_law(bumper, k_normal);
   const std::shared_ptr<const ImpactLaw> bottomed = bumper_bottomed_law(k_normal);
   if (other.convex()) {
@@ -495,7 +496,8 @@ void add_wall_bumper(Model& model, const ModelConfig& config, const SiteBody& sl
   const std::optional<BumperStrips> strips = wall_bumper_strips(b, wall.wall_side, wall.wall_face);
   if (!strips) return;
   add_strip_contacts(model, config, slab, wall, wall.label(), placed(b, strips->rubber),
-                     placed(b, strips->bottomed), b.walls.bumper, body, law);
+                     placed(b, strips->bottomed), direction_W(b, strips->n), b.walls.bumper, body,
+                     law);
 }
 
 // The rubber on the faces of `owner`, a slab of a building with a `bumper:`, towards `other`, a
@@ -517,7 +519,8 @@ void add_slab_bumper(Model& model, const ModelConfig& config, const SiteBody& ot
         config.contact3d.search_distance)
       continue;
     add_strip_contacts(model, config, other, owner, slab_face_label(owner.label(), face.face),
-                       rubber_W, placed(b, face.strips.bottomed), bumper, body, law);
+                       rubber_W, placed(b, face.strips.bottomed), direction_W(b, face.strips.n),
+                       bumper, body, law);
   }
 }
 
