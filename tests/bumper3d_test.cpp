@@ -136,16 +136,7 @@ ModelConfig load_text(const std::string& text) {
 
 // The thesis building (3 storeys, 3 x 3 bays of 5.5 m) with walls.
 std::string walled_building(const std::string& walls, const std::string& extra = "") {
-  return R"(structures:
-  - name: building
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 3, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    base: {mass: 340 t}
-    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
-    damping: {type: none}
-)" + extra +
-         "    walls: " + walls + "\n";
+  return test::thesis_building("", extra + "    walls: " + walls + "\n");
 }
 
 using Outcome = test::BumperOutcome;

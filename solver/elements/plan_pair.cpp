@@ -126,8 +126,9 @@ Separation PlanPair::least_separation(const Entry& e, std::uint64_t pairs) const
   const auto& pieces_a = e.placed_a.pieces();
   const auto& pieces_b = e.placed_b.pieces();
   const int na = int(pieces_a.size()), nb = int(pieces_b.size());
-  // Beyond 64 pairs the bits alias (piece_pair_bit): nothing is kept then.
-  const bool keep = na * nb <= 64 && int(e.piece_separation.size()) == na * nb;
+  // Beyond 64 pairs the bits alias (piece_pair_bit): nothing is kept then. (piece_separation
+  // is sized na * nb by the constructor: placing a plan keeps its pieces.)
+  const bool keep = na * nb <= 64;
   Separation best{std::numeric_limits<double>::infinity(), {}};
   for (int i = 0; i < na; ++i)
     for (int j = 0; j < nb; ++j) {

@@ -117,13 +117,17 @@ Separation PolygonContact::separation_at(const Vec6& q) const {
 }
 
 Overlap PolygonContact::overlap_at(const ConvexPolygon& pa, const Vec6& q, Vec2 shift_B) const {
+  Overlap ov;
   if (plan_pair_) {
     Vec6 shifted = q;
     shifted[3] += shift_B.x;
     shifted[4] += shift_B.y;
-    return plan_pair_->overlap(slot_, shifted);
+    ov = plan_pair_->overlap(slot_, shifted);
+  } else {
+    ov = overlap_of(pa, placed(b_, q[3] + shift_B.x, q[4] + shift_B.y, q[5]), cfg_.overlap);
   }
-  return overlap_of(pa, placed(b_, q[3] + shift_B.x, q[4] + shift_B.y, q[5]), cfg_.overlap);
+  orient_to_strip(ov, q[5]);
+  return ov;
 }
 
 ConvexPolygon PolygonContact::place(const PolygonBody& body, double u, double v,
@@ -203,8 +207,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // (continuous_force: a sliver as deep as the overlap is short of it, so that the shape is
     // continuous where the overlap reaches the sliver's depth too.)
     const double deeper_by = cfg_.continuous_force ? sliver - ov.area / overlap_width : sliver;
-    Overlap shape = overlap_at(pa, q, -deeper_by * ov.n_AB);
-    orient_to_strip(shape, q[5]);
+    const Overlap shape = overlap_at(pa, q, -deeper_by * ov.n_AB);
     if (shape.area > 0.0) ov = shape;
   }
   if (!overlapping) {
@@ -215,7 +218,6 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     if ((plan_pair_ ? separation_at(q) : separation_of(pa, pb)).distance > 1e-9 * length_scale_)
       return;  // apart: no force
     ov = surface_overlap(pa, pb, q, sliver);
-    orient_to_strip(ov, q[5]);
     if (!(ov.area > 0.0)) return;
     at_surface = true;
   }
@@ -348,9 +350,6 @@ void PolygonContact::orient_to_strip(Overlap& ov, double theta_B) const {
   ov.t_AB = t;
   ov.p_WP1 = on_line + (lo - c) * t;
   ov.p_WP2 = on_line + (hi - c) * t;
-  const double width = hi - lo;
-  ov.mean_depth = ov.area > 0.0 && width > 0.0 ? ov.area / width : 0.0;
-  ov.indentation = (ov.vertex_count == 3 ? 2.0 : 1.0) * ov.mean_depth;
 }
 
 double PolygonContact::secant_width_of(const Overlap& ov) const {
@@ -721,8 +720,7 @@ double PolygonContact::approach_limit() const {
   } else if (toi.time < area_contact_step(0.0)) {  // the floor's largest value (w = width_floor_)
     const ConvexPolygon pa = place(a_, C.q[0], C.q[1], C.q[2]);
     const ConvexPolygon pb = place(b_, C.q[3], C.q[4], C.q[5]);
-    Overlap ov = surface_overlap(pa, pb, C.q, kSurfaceSliver * length_scale_);
-    orient_to_strip(ov, C.q[5]);
+    const Overlap ov = surface_overlap(pa, pb, C.q, kSurfaceSliver * length_scale_);
     floor = area_contact_step(ov.area > 0.0 ? secant_width_of(ov) : 0.0);
   }
   return approach_limit_ = std::max(toi.time, floor);

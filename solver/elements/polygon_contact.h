@@ -247,7 +247,8 @@ class PolygonContact final : public Element {
   void compute_witness(State& s) const;
   // The signed separation of the pair at q: of the convex shapes, or of this slot (plan pair).
   Separation separation_at(const Vec6& q) const;
-  // The overlap at q with B moved by shift_B: of the convex shapes, or this slot's (plan pair).
+  // The overlap at q with B moved by shift_B: of the convex shapes, or this slot's (plan pair);
+  // a strip's oriented to it (orient_to_strip).
   Overlap overlap_at(const ConvexPolygon& pa, const Vec6& q, Vec2 shift_B) const;
   // Tells the plan pair this slot's committed status (no-op for a convex pair).
   void report_committed() {
@@ -262,12 +263,13 @@ class PolygonContact final : public Element {
   double speed_bound(const Vec6& qdot) const;
   // speed_bound(s.qdot), computed once per state.
   double speed_of(const State& s) const;
-  // A_c/δ_N of an overlap's shape under the configured indentation rule (w, or w/2).
   // A strip's overlap (PolygonContactConfig::strip_compression_W set): its normal turned to the
   // strip's compression direction at B's angle theta_B, the tangent +90° from it, P1, P2 the
-  // overlap's extremes along the tangent on the line through its centroid, δ_N and the mean depth
-  // from that width. Other contacts: unchanged.
+  // overlap's extremes along the tangent on the line through its centroid (the contact takes
+  // w = |P1P2| and δ_N from them; the geometry's own indentation fields are not read). Other
+  // contacts: unchanged.
   void orient_to_strip(Overlap& ov, double theta_B) const;
+  // A_c/δ_N of an overlap's shape under the configured indentation rule (w, or w/2).
   double secant_width_of(const Overlap& ov) const;
   double secant_width_of(const Overlap& ov, bool triangle) const;
   // The contact step of the area law at a secant width (m): π √(m_eff/(k_N w_s))/steps, w_s

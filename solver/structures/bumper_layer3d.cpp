@@ -71,7 +71,7 @@ BumperStrips face_bumper_strips(const std::vector<Vec2>& wall, Vec2 n,
   std::vector<Vec2> corners = wall;
   std::sort(corners.begin(), corners.end(), [&](Vec2 p, Vec2 q) { return dot(n, p) < dot(n, q); });
   Vec2 start = corners[0], end = corners[1];
-  if (end.y < start.y || (end.y == start.y && end.x < start.x)) std::swap(start, end);
+  if (starts_face_before(end, start)) std::swap(start, end);
   const double length = std::hypot(end.x - start.x, end.y - start.y);
   const double to = std::isinf(bumper.to) ? length : bumper.to;
   if (!(bumper.from >= 0 && to <= length * (1 + 1e-12) && bumper.from < to))

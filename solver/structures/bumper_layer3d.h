@@ -12,6 +12,12 @@
 
 namespace isopound {
 
+// Where from/to are measured from on a straight face in the building frame: its end of least y,
+// then of least x (a box wall's lower x or y). True when p is that end rather than q.
+inline bool starts_face_before(Vec2 p, Vec2 q) {
+  return p.y < q.y || (p.y == q.y && p.x < q.x);
+}
+
 // Where the rubber sits along the face: metres from the face's start (its lower x for the
 // north and south walls, its lower y for the east and west walls); `to` = +inf: to the end.
 struct BumperSpan {

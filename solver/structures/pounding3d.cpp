@@ -103,8 +103,7 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
     }
     // From the vertex of least y (then x), as a box wall's outline starts.
     const std::span<const Vec2> v = m.outline.vertices();
-    const auto first = std::min_element(
-        v.begin(), v.end(), [](Vec2 p, Vec2 q) { return p.y < q.y || (p.y == q.y && p.x < q.x); });
+    const auto first = std::min_element(v.begin(), v.end(), starts_face_before);
     std::vector<Vec2> outline(first, v.end());
     outline.insert(outline.end(), v.begin(), first);
     out.push_back({std::move(outline), n, gaps[k], hi - lo, names[k], -1});
@@ -197,9 +196,7 @@ std::vector<FaceStrips> slab_face_strips(const std::vector<Vec2>& plan_B,
     const Vec2 in = face.start - before.start;
     if (cross(in, run) < 0 && bumper.on_outline_face(before.name)) {
       // from/to run from the face's end of least y (then x), as face_bumper_strips measures.
-      const bool start_first =
-          face.start.y < face.end.y || (face.start.y == face.end.y && face.start.x < face.end.x);
-      if (start_first)
+      if (starts_face_before(face.start, face.end))
         span.from = std::max(span.from, t);
       else
         span.to = std::min(span.to, length - t);
