@@ -4,6 +4,7 @@
 #include "geometry/moat.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -106,6 +107,98 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vecto
     }
   }
   return out;
+}
+
+std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thickness,
+                                     bool walls_left) {
+  // The runs' corners (index into `line` kept for messages): ends always, interior vertices
+  // where the line turns.
+  std::vector<int> at;
+  const int n = static_cast<int>(line.size());
+  double size = 0.0;
+  for (int i = 1; i < n; ++i)
+    size = std::max(size, std::hypot(line[i].x - line[0].x, line[i].y - line[0].y));
+  for (int i = 0; i < n; ++i) {
+    if (!at.empty()) {
+      const Vec2 e = line[i] - line[at.back()];
+      if (std::hypot(e.x, e.y) <= detail::kRepeatedFraction * size)
+        throw InvalidPolygon(i, detail::describe_vertex(i, line[i]) + " repeats the one before it");
+    }
+    if (at.size() >= 2) {
+      const Vec2 e_in = line[at.back()] - line[at[at.size() - 2]],
+                 e_out = line[i] - line[at.back()];
+      const double sine =
+          cross(e_in, e_out) / (std::hypot(e_in.x, e_in.y) * std::hypot(e_out.x, e_out.y));
+      if (std::abs(sine) <= kCollinearSine) {
+        if (dot(e_in, e_out) < 0.0)
+          throw InvalidPolygon(at.back(), detail::describe_vertex(at.back(), line[at.back()]) +
+                                              ": the line turns back along itself");
+        at.back() = i;  // straight through: one run
+        continue;
+      }
+    }
+    at.push_back(i);
+  }
+  if (at.size() < 2) throw InvalidPolygon(-1, "a polyline needs two distinct points");
+  const int m = static_cast<int>(at.size()) - 1;  // runs
+  const auto direction = [&](int k) { return unit(line[at[k + 1]] - line[at[k]]); };
+  const double side = walls_left ? -1.0 : 1.0;
+  const auto right = [&](int k) {  // into the wall
+    const Vec2 d = direction(k);
+    return Vec2{side * d.y, -side * d.x};
+  };
+  // The back's corner at vertex at[k]: square at the ends, else where the two backs cross.
+  const auto back = [&](int k) {
+    const Vec2 p = line[at[k]];
+    if (k == 0) return p + thickness * right(0);
+    if (k == m) return p + thickness * right(m - 1);
+    return offset_corner(p, right(k - 1), right(k), thickness, thickness);
+  };
+  std::vector<MoatWall> out;
+  for (int k = 0; k < m; ++k) {
+    const Vec2 s = line[at[k]], e = line[at[k + 1]];
+    const Vec2 bs = back(k), be = back(k + 1);
+    const Vec2 quad[] = {s, bs, be, e};  // counter-clockwise for walls on the right
+    try {
+      if (!(dot(be - bs, direction(k)) > 0.0))
+        throw InvalidPolygon(-1, "its back would run backwards");
+      // The run as MoatWall gives it: the wall to its right.
+      out.push_back(
+          {ConvexPolygon(std::span<const Vec2>(quad)), walls_left ? e : s, walls_left ? s : e});
+    } catch (const InvalidPolygon& error) {
+      std::ostringstream where;
+      where.precision(12);
+      where << "the wall from " << detail::describe_vertex(at[k], s) << " to "
+            << detail::describe_vertex(at[k + 1], e) << " is too short for its mitres at thickness "
+            << thickness << " m (" << error.what() << ")";
+      throw InvalidPolygon(at[k], where.str());
+    }
+  }
+  return out;
+}
+
+NormalClearance normal_clearance(std::span<const Vec2> slab, std::span<const Vec2> wall, Vec2 n) {
+  const Vec2 t{-n.y, n.x};
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo, face = lo;
+  for (const Vec2& p : wall) {
+    lo = std::min(lo, dot(t, p));
+    hi = std::max(hi, dot(t, p));
+    face = std::min(face, dot(n, p));
+  }
+  double reach = -std::numeric_limits<double>::infinity();
+  Vec2 at;
+  const auto consider = [&](Vec2 p) {
+    if (dot(n, p) > reach) reach = dot(n, p), at = p;
+  };
+  for (std::size_t i = 0; i < slab.size(); ++i) {
+    const Vec2 p = slab[i], q = slab[(i + 1) % slab.size()];
+    const double tp = dot(t, p), tq = dot(t, q);
+    if (tp >= lo && tp <= hi) consider(p);
+    for (const double bound : {lo, hi})
+      if ((tp - bound) * (tq - bound) < 0) consider(p + ((bound - tp) / (tq - tp)) * (q - p));
+  }
+  if (!std::isfinite(reach)) return {std::numeric_limits<double>::infinity(), {}};
+  return {face - reach, at};
 }
 
 }  // namespace isopound

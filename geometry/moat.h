@@ -6,6 +6,7 @@
 // (mitred), so that no region belongs to both and a slab in the corner meets each wall once.
 #pragma once
 
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -16,8 +17,8 @@ namespace isopound {
 
 struct MoatWall {
   ConvexPolygon outline;  // counter-clockwise, plan frame W, m
-  Vec2 p_WS;              // the plan's run this wall faces: its start ...
-  Vec2 p_WE;              // ... and end vertex (counter-clockwise along the plan)
+  Vec2 p_WS;              // the run this wall faces (the plan's, or a polyline wall's own face):
+  Vec2 p_WE;              // its start and end, the wall to the run's right
 };
 
 // The straight runs of the outline (collinear vertices dropped), counter-clockwise: start and
@@ -32,5 +33,29 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, double gap, doub
 // walls' faces meet where the two offset lines cross, their back faces likewise.
 std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vector<double>& gaps,
                                      double thickness, double extension);
+
+// Walls along a polyline of their own (walls: {follow: polyline}), not derived from a slab: one
+// wall per straight run of `line` (collinear vertices dropped), in the order drawn, the band
+// between the run (its face) and the run's offset `thickness` to its right (to its left with
+// walls_left), so a polyline drawn counter-clockwise around a slab has its walls outside it, as a
+// following moat's. Where two runs meet, their walls
+// are mitred (cut on the line through the face's corner and the crossing of their backs), so no
+// region belongs to both and none is left between them; the polyline's two ends are square.
+// Throws InvalidPolygon naming the vertex (index in `line`) when there are fewer than two
+// distinct points, a vertex repeats, the line turns back along itself, or a run is too short for
+// its mitres at this thickness.
+std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thickness,
+                                     bool walls_left = false);
+
+// The clearance of a straight wall from a slab along the wall's normal n (unit, from the slab
+// into the wall), over the wall's extent across n: the wall's face (the least n·x of its
+// corners) less the slab's furthest point along n within that extent (a vertex inside it, or
+// where an edge crosses its bounds), and that point. +inf (p_WA unset) when no part of the slab
+// lies across the wall's extent. `slab` may be any simple polygon.
+struct NormalClearance {
+  double clearance = 0.0;  // m; negative: the slab reaches past the wall's face
+  Vec2 p_WA;               // the slab's point nearest the face along n
+};
+NormalClearance normal_clearance(std::span<const Vec2> slab, std::span<const Vec2> wall, Vec2 n);
 
 }  // namespace isopound

@@ -25,6 +25,7 @@
 #include "solver/structures/pounding3d.h"
 #include "tests/model_test_support.h"
 #include "tests/peak_comparison.h"
+#include "tests/wall_run_support.h"
 
 namespace isopound {
 namespace {
@@ -70,35 +71,10 @@ std::string refused_key(const std::string& base, const std::string& walls) {
   return std::string("(accepted)");
 }
 
-// The built-in pulse along the direction at `angle` from x (peak ground velocity 1 m/s).
-GroundMotion pulse_at(double angle) {
-  GroundMotion g = make_pulse(PulseParameters{});
-  g.acceleration_y = g.acceleration;
-  for (std::size_t k = 0; k < g.acceleration.size(); ++k) {
-    g.acceleration_y[k] *= std::sin(angle);
-    g.acceleration[k] *= std::cos(angle);
-  }
-  return g;
-}
-
-struct Outcome {
-  Model model;
-  AnalysisResult result;
-};
-
-Outcome run(const ModelConfig& c, const GroundMotion& motion, double t_end) {
-  RunOptions o = run_options(c);
-  o.analysis.t_end = t_end;
-  Outcome r{build_model(c), {}};
-  r.result = run_analysis(r.model, motion, o);
-  return r;
-}
-
-const PolygonContact* contact(const Model& m, const std::string& label) {
-  for (const auto& e : m.elements)
-    if (e->label() == label) return dynamic_cast<const PolygonContact*>(e.get());
-  return nullptr;
-}
+using test::Outcome;
+using test::pulse_at;
+constexpr auto run = &test::run_until;
+constexpr auto contact = &test::polygon_contact;
 
 // A square slab's following moat is its four box walls: the same bodies in the same order, so the
 // same contacts and the same run to the last bit, through impacts on the walls (the pulse at 30°

@@ -138,8 +138,9 @@ Bumper3DConfig read_bumper3d(const InputNode& node, const MoatWalls3DConfig& wal
                              const std::function<int(const InputNode&)>& side_of) {
   node.expect_keys(kStripKeys);
   Bumper3DConfig b;
-  if (walls.follow_outline) {
-    // Faces of the outline's walls by name (checked with the plan: check_outline_bumper), or all.
+  if (walls.by_face()) {
+    // Faces of the outline's or polyline's walls by name (checked with the plan:
+    // check_outline_bumper), or all.
     b.on = walls.present;
     if (const auto sides = node.find("sides")) {
       if (!sides->is_sequence()) sides->fail("expected a list of faces, e.g. [east, north-east]");
@@ -284,7 +285,7 @@ void check_slab_bumpers(const ModelConfig& config, const std::vector<StructureMa
 // walls' extension at each end, as moat_wall_outline builds it).
 void check_bumper_span(const InputNode& walls_node, const Building3DConfig& b) {
   const Bumper3DConfig& bumper = b.walls.bumper;
-  if (!bumper.any() || b.walls.follow_outline) return;  // outline walls: check_outline_bumper
+  if (!bumper.any() || b.walls.by_face()) return;  // walls by face: check_outline_bumper
   const InputNode node = walls_node.required("bumper");
   for (int side = 0; side < 4; ++side) {
     if (!bumper.on[side]) continue;

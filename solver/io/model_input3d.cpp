@@ -266,15 +266,49 @@ void read_damping3d(const InputNode& node, bool isolated, Damping3DConfig& d) {
   }
 }
 
-// walls: {follow: box | outline, sides: all | [east, ...], gap: 20 cm | {east: .., west: ..},
-// thickness, height, extension, mass_per_length, bumper}
+// walls: {follow: box | outline | polyline, polyline: [[x, y], ...], sides: all | [east, ...],
+// gap: 20 cm | {east: .., west: ..}, thickness, height, extension, mass_per_length, bumper}
 MoatWalls3DConfig read_walls3d(const InputNode& node) {
   using W = MoatWalls3DConfig;
-  node.expect_keys({"follow", "sides", "gap", "thickness", "height", "extension", "mass_per_length",
-                    "model", "E", "nu", "damping", "bumper", "level"});
+  node.expect_keys({"follow", "polyline", "sides", "gap", "thickness", "height", "extension",
+                    "mass_per_length", "model", "E", "nu", "damping", "bumper", "level"});
   W w;
-  node.read_choice<bool>("follow", {{"box", false}, {"outline", true}}, w.follow_outline);
-  if (w.follow_outline) {
+  if (node.has("polyline") && !node.has("follow")) {
+    w.follow = W::Follow::kPolyline;  // the walls stand where they are drawn
+    node.note_default("follow", "polyline (walls.polyline is given)");
+  } else {
+    node.read_choice<W::Follow>("follow",
+                                {{"box", W::Follow::kBox},
+                                 {"outline", W::Follow::kOutline},
+                                 {"polyline", W::Follow::kPolyline}},
+                                w.follow);
+  }
+  if (w.follow == W::Follow::kPolyline) {
+    // Walls along a polyline of their own (building frame): each wall's gap is its clearance at
+    // rest, measured (isopound-pre lists it); the polyline's ends are where it is drawn.
+    const InputNode line = node.required("polyline");
+    if (!line.is_sequence() || line.elements().size() < 2)
+      line.fail("expected a list of at least two [x, y] points (the walls' faces)");
+    for (const InputNode& p : line.elements()) w.polyline.push_back(read_point(p));
+    for (const char* key : {"gap", "extension"})
+      if (node.has(key))
+        node.fail_at_key(key, std::string("not used by walls along a polyline: ") +
+                                  (key == std::string("gap")
+                                       ? "each wall's gap is its clearance from the slab at rest, "
+                                         "measured (isopound-pre lists them)"
+                                       : "its walls end where the polyline ends"));
+    if (const auto sides = node.find("sides")) {
+      if (sides->is_sequence()) {
+        w.outline_sides = read_face_names(*sides, "no sides: give all or e.g. [east, north-east]");
+      } else {
+        sides->choice<int>({{"all", 0}});
+      }
+    }
+    w.present = {true, true, true, true};
+  } else if (node.has("polyline")) {
+    node.fail_at_key("polyline", "only used with follow: polyline (walls along it)");
+  }
+  if (w.follow == W::Follow::kOutline) {
     // One wall per straight run of the slab's outline (geometry/moat.h), at the one gap or a gap
     // per face, rigid or flexible (model), with bumpers by face (bumper.sides).
     // sides: all, or the faces of a partial moat (checked against the outline with the plan,
@@ -302,7 +336,7 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
       w.gap = {g, g, g, g};
     }
     w.present = {true, true, true, true};
-  } else {
+  } else if (w.follow == W::Follow::kBox) {
     if (const auto sides = node.find("sides")) {
       if (sides->is_sequence()) {
         if (sides->elements().empty()) sides->fail("no sides: give all or e.g. [east, west]");
@@ -337,7 +371,8 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   }
   node.read_quantity("thickness", dim::kLength, Bound::kPositive, w.thickness);
   node.read_quantity("height", dim::kLength, Bound::kPositive, w.height);
-  node.read_quantity("extension", dim::kLength, Bound::kNonNegative, w.extension);
+  if (w.follow != W::Follow::kPolyline)
+    node.read_quantity("extension", dim::kLength, Bound::kNonNegative, w.extension);
   node.read_quantity("mass_per_length", Dimension{-1, 1, 0}, Bound::kPositive, w.mass_per_length);
   node.read_choice<bool>("model", {{"rigid", false}, {"flexible", true}}, w.flexible);
   if (w.flexible) {
@@ -350,29 +385,52 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
   return w;
 }
 
-// follow: outline: walls the outline can have at these gaps and thickness (a run too short for
-// the mitres of its re-entrant corners is refused at the walls' thickness); with sides: [...],
-// each a face of the outline's walls (moat_faces); with a gap per face, one for every wall and
-// none for a face without one.
-std::vector<std::string> check_outline_sides(const InputNode& walls, const Building3DConfig& b) {
-  if (!b.walls.follow_outline) return {};
+// Walls by face (follow: outline or polyline): walls the outline or polyline can have at these
+// gaps and thickness (a run too short for its mitres is refused at the walls' thickness, or at
+// the polyline's vertex); a polyline's walls clear of the slab at rest; with sides: [...], each a
+// face of the walls (moat_faces); with a gap per face, one for every wall and none for a face
+// without one.
+std::vector<MoatFace> check_moat_faces(const InputNode& walls, const Building3DConfig& b) {
+  using Follow = MoatWalls3DConfig::Follow;
   const MoatWalls3DConfig& w = b.walls;
-  std::vector<std::string> faces;
+  if (!w.by_face()) return {};
+  std::vector<MoatFace> faces;
   try {
     faces = moat_faces(b);
   } catch (const InvalidPolygon& e) {
+    if (w.follow == Follow::kPolyline) {
+      const InputNode line = walls.required("polyline");
+      const auto points = line.elements();
+      const InputNode at = e.vertex() >= 0 && e.vertex() < static_cast<int>(points.size())
+                               ? points[static_cast<std::size_t>(e.vertex())]
+                               : line;
+      at.fail(std::string("no walls can follow this polyline: ") + e.what());
+    }
     const auto t = walls.find("thickness");
     (t ? *t : walls).fail(std::string("no moat can follow this outline: ") + e.what());
   }
   std::string all;
-  for (const std::string& f : faces) all += (all.empty() ? "" : ", ") + f;
+  for (const MoatFace& f : faces) all += (all.empty() ? "" : ", ") + f.name;
   const auto has_face = [&](const std::string& face) {
-    return std::find(faces.begin(), faces.end(), face) != faces.end();
+    return std::any_of(faces.begin(), faces.end(),
+                       [&](const MoatFace& f) { return f.name == face; });
   };
+  if (w.follow == Follow::kPolyline)
+    for (const MoatFace& f : faces)
+      if (!(f.gap > 0.0)) {
+        char what[200];
+        std::snprintf(what, sizeof what,
+                      "the %s wall along this polyline %s the slab it faces at rest (clearance "
+                      "%.4g m): draw the walls' faces outside the slab",
+                      f.name.c_str(), f.gap < 0 ? "crosses" : "touches", f.gap);
+        walls.required("polyline").fail(what);
+      }
+  const char* of = w.follow == Follow::kPolyline ? "polyline" : "outline";
   if (!w.outline_sides.empty())
     for (const InputNode& side : walls.find("sides")->elements())
       if (!has_face(side.string()))
-        side.fail("no wall of the outline faces '" + side.string() + "': its walls face " + all);
+        side.fail("no wall of the " + std::string(of) + " faces '" + side.string() +
+                  "': its walls face " + all);
   if (w.outline_gaps.empty()) return faces;
   const InputNode gap = walls.required("gap");
   for (const auto& [face, g] : w.outline_gaps) {
@@ -381,34 +439,36 @@ std::vector<std::string> check_outline_sides(const InputNode& walls, const Build
     if (!w.has_outline_wall(face))
       gap.required(face).fail("there is no " + face + " wall (see sides)");
   }
-  for (const std::string& face : faces)
-    if (w.has_outline_wall(face) && !w.outline_gaps.count(face))
-      gap.fail("no gap for the " + face + " wall (its walls face " + all + ")");
+  for (const MoatFace& f : faces)
+    if (w.has_outline_wall(f.name) && !w.outline_gaps.count(f.name))
+      gap.fail("no gap for the " + f.name + " wall (its walls face " + all + ")");
   return faces;
 }
 
-// follow: outline with a bumper: its faces walls of the moat (`faces`: the outline's, as
-// check_outline_sides returns them), the rubber thinner than each one's gap, from/to on each face.
+// Walls by face with a bumper: its faces walls of the moat (`faces` as check_moat_faces returns
+// them), the rubber thinner than each one's gap, from/to on each face.
 void check_outline_bumper(const InputNode& walls, const Building3DConfig& b,
-                          const std::vector<std::string>& faces) {
+                          const std::vector<MoatFace>& faces) {
   const MoatWalls3DConfig& w = b.walls;
-  if (!w.follow_outline || !w.bumper.any()) return;
+  if (!w.by_face() || !w.bumper.any()) return;
   const InputNode node = walls.required("bumper");
   const auto walled = [&](const std::string& face) {
-    return std::find(faces.begin(), faces.end(), face) != faces.end() && w.has_outline_wall(face);
+    return std::any_of(faces.begin(), faces.end(),
+                       [&](const MoatFace& f) { return f.name == face; }) &&
+           w.has_outline_wall(face);
   };
   if (const auto sides = node.find("sides"))
     for (const InputNode& s : sides->elements())
       if (!walled(s.string())) s.fail("there is no " + s.string() + " wall (see walls.sides)");
   if (!(w.bumper.thickness > 0)) return;
-  for (const std::string& face : faces) {
+  for (const MoatFace& f : faces) {
+    const std::string& face = f.name;
     if (!walled(face) || !w.bumper.on_outline_face(face)) continue;
-    const double gap = w.outline_gap(face);
-    if (w.bumper.thickness >= gap) {
+    if (w.bumper.thickness >= f.gap) {
       char what[200];
       std::snprintf(what, sizeof what,
                     "the bumper (%g cm) must be thinner than the %s wall's gap (%g cm)",
-                    100 * w.bumper.thickness, face.c_str(), 100 * gap);
+                    100 * w.bumper.thickness, face.c_str(), 100 * f.gap);
       node.fail_at_key("thickness", what);
     }
     try {
@@ -622,7 +682,7 @@ Building3DConfig read_building3d(const InputNode& node) {
                 std::to_string(b.isolation_level) + ")");
       b.walls_level = level;
     }
-    check_outline_bumper(*w, b, check_outline_sides(*w, b));
+    check_outline_bumper(*w, b, check_moat_faces(*w, b));
   }
   if (!b.isolated && b.damping.type == Damping3DConfig::Type::kNonClassical) {
     // Fixed base: the superstructure Rayleigh alone.

@@ -104,7 +104,7 @@ constexpr std::array<PlausibleRange, 72> kRanges{{
 }};
 // clang-format on
 
-constexpr std::array<UncheckedKey, 30> kUnchecked{{
+constexpr std::array<UncheckedKey, 31> kUnchecked{{
     {"tolerance", "a solver setting (relative error), bounded by the reader"},
     {"newton_tolerance", "a solver setting (relative residual), bounded by the reader"},
     {"steps_per_period", "a solver setting, bounded by the reader"},
@@ -130,6 +130,9 @@ constexpr std::array<UncheckedKey, 30> kUnchecked{{
      "where a 3D bumper starts along its wall's or slab's face (m), checked against the face"},
     {"to", "where a 3D bumper ends along its wall's or slab's face (m), checked against the face"},
     {"polygon", "plan vertices (m): the site's own geometry, checked by the site checks"},
+    {"polyline",
+     "walls' faces in plan (m): the site's own geometry; each wall's clearance from the slab is "
+     "measured and must be positive"},
     {"at", "a bearing's plan position (m): checked against the slab by the site checks"},
     {"eccentricity", "centre-of-mass offset (m): checked against the slab by the site checks"},
     {"restitution", "coefficient of restitution, bounded by the reader"},

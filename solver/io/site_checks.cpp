@@ -8,6 +8,7 @@
 #include <limits>
 #include <span>
 
+#include "geometry/moat.h"
 #include "geometry/overlap.h"
 #include "geometry/plan_shape.h"
 #include "solver/io/bumper_input.h"
@@ -272,39 +273,6 @@ void check_columns(const ModelConfig& config, const std::vector<StructureMarks>&
     }
 }
 
-// The clearance of a straight wall from a slab along the wall's normal n (from the slab into the
-// wall), over the wall's extent across n: its face (the least n·x of its corners) less the slab's
-// furthest point along n within that extent (a vertex inside it, or where an edge crosses its
-// bounds), and that point.
-struct NormalClearance {
-  double clearance = 0.0;
-  Vec2 p_WA;
-};
-NormalClearance normal_clearance(const std::vector<Vec2>& slab_W, const std::vector<Vec2>& wall_W,
-                                 Vec2 n) {
-  const Vec2 t{-n.y, n.x};
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo, face = lo;
-  for (const Vec2& p : wall_W) {
-    lo = std::min(lo, dot(t, p));
-    hi = std::max(hi, dot(t, p));
-    face = std::min(face, dot(n, p));
-  }
-  double reach = -std::numeric_limits<double>::infinity();
-  Vec2 at;
-  const auto consider = [&](Vec2 p) {
-    if (dot(n, p) > reach) reach = dot(n, p), at = p;
-  };
-  for (std::size_t i = 0; i < slab_W.size(); ++i) {
-    const Vec2 p = slab_W[i], q = slab_W[(i + 1) % slab_W.size()];
-    const double tp = dot(t, p), tq = dot(t, q);
-    if (tp >= lo && tp <= hi) consider(p);
-    for (const double bound : {lo, hi})
-      if ((tp - bound) * (tq - bound) < 0) consider(p + ((bound - tp) / (tq - tp)) * (q - p));
-  }
-  if (!std::isfinite(reach)) return {std::numeric_limits<double>::infinity(), {}};
-  return {face - reach, at};
-}
-
 }  // namespace
 
 std::vector<StructureMarks> structure_marks(const InputNode& structures) {
@@ -504,13 +472,16 @@ std::vector<Clearance> check_site3d(const ModelConfig& config,
         if (w.along_outline && sep.distance > 0) {
           // Along its normal over its own extent (at rest apart: a wall in the slab is caught by
           // the distance above).
+          // (Nothing of the slab in front of it, as a polyline's wall may stand: the distance.)
           const NormalClearance along = normal_clearance(s.plan_W, w.plan_W, w.normal_W);
-          c.measured = along.clearance;
-          c.p_WA = along.p_WA;
-          c.p_WB = along.p_WA + along.clearance * w.normal_W;
+          if (std::isfinite(along.clearance)) {
+            c.measured = along.clearance;
+            c.p_WA = along.p_WA;
+            c.p_WB = along.p_WA + along.clearance * w.normal_W;
+          }
         }
         clearances.push_back(c);
-        if (std::abs(c.measured - w.declared_gap) > limits.gap_tolerance)
+        if (w.declared_gap >= 0 && std::abs(c.measured - w.declared_gap) > limits.gap_tolerance)
           problems.error_at(
               where, "gap",
               "the " + w.side + " wall of '" + w.structure + "' stands " + metres(c.measured) +

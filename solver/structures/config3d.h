@@ -113,7 +113,7 @@ struct Bumper3DConfig {
   double from = 0.0;                         // m along the face from its start
   double to = std::numeric_limits<double>::infinity();  // m; +inf: to the face's end
   bool any() const { return on[0] || on[1] || on[2] || on[3]; }
-  // Walls that follow the outline: whether the wall facing `face` has rubber.
+  // Walls named by face (outline, polyline): whether the wall facing `face` has rubber.
   bool on_outline_face(const std::string& face) const {
     return any() && (faces.empty() || std::find(faces.begin(), faces.end(), face) != faces.end());
   }
@@ -129,10 +129,18 @@ struct MoatWalls3DConfig {
   // `follow: box` (default): one straight wall per side of the slab's bounding box in the
   // building frame (sides, gap per side). `follow: outline`: one wall per straight run of the
   // slab's outline at `gap` (geometry/moat.h: convex corners extended, re-entrant ones mitred);
-  // a rectangular slab's are the four box walls. Rigid or flexible, with bumpers by face.
-  bool follow_outline = false;
-  // follow: outline: the faces `sides` lists ("east", "north-east", "east 2": pounding3d.h,
-  // moat_faces), a partial moat; empty: a wall on every run.
+  // a rectangular slab's are the four box walls. `follow: polyline`: one wall per straight run of
+  // `polyline`, on its side away from the slab, mitred where runs meet; each wall's gap is its
+  // clearance at rest (measured, not declared). Rigid or flexible, with bumpers by face.
+  enum class Follow { kBox, kOutline, kPolyline };
+  Follow follow = Follow::kBox;
+  // Walls named by face ("east", "north-east", "east 2"), not by box side: outline and polyline.
+  bool by_face() const { return follow != Follow::kBox; }
+  // follow: polyline: the walls' faces in the building frame, m, in the order drawn (at least two
+  // points; oriented away from the slab by the model: pounding3d.cpp, all_wall_shapes).
+  std::vector<Vec2> polyline;
+  // follow: outline or polyline: the faces `sides` lists ("east", "north-east", "east 2":
+  // pounding3d.h, moat_faces), a partial moat; empty: a wall on every run.
   std::vector<std::string> outline_sides;
   // follow: outline with `gap: {east: .., north-east: ..}`: each face's gap (every wall's face is
   // given: check_outline_sides; a face without a wall may be left out, its neighbours' mitres
@@ -154,7 +162,7 @@ struct MoatWalls3DConfig {
   double damping_ratio = 0.05;
   Bumper3DConfig bumper;  // rubber on the inner faces (issue 27); none by default
   bool any() const { return present[0] || present[1] || present[2] || present[3]; }
-  // follow: outline: whether the face has a wall (`sides` lists it, or there is no `sides`) ...
+  // By face: whether the face has a wall (`sides` lists it, or there is no `sides`) ...
   bool has_outline_wall(const std::string& face) const {
     return outline_sides.empty() ||
            std::find(outline_sides.begin(), outline_sides.end(), face) != outline_sides.end();

@@ -54,6 +54,16 @@ std::string compass_face(Vec2 n_B) {
   return kNames[(k % 8 + 8) % 8];
 }
 
+// A face's name, numbered when another before it faces the same way ("east 2"; `seen` counts
+// the faces named so far per compass point).
+std::string numbered_face(const std::string& compass, std::map<std::string, int>& seen) {
+  const int k = ++seen[compass];
+  if (k == 1) return compass;
+  char numbered[32];  // snprintf: GCC 12 misreads a string += as overlapping
+  std::snprintf(numbered, sizeof numbered, "%s %d", compass.c_str(), k);
+  return numbered;
+}
+
 // One moat wall of a building before its placement (building frame).
 struct WallShape {
   std::vector<Vec2> outline_B;
@@ -64,12 +74,28 @@ struct WallShape {
   int side = -1;        // MoatWalls3DConfig::Side of a box wall, else -1
 };
 
-// Every wall of the building, before `sides` selects among the outline's.
+// The slab (plan_B) lies to the left of `line` as drawn: decided at the run nearest the slab, by
+// the side its nearest vertex is on (a polyline that crosses the slab is refused by its walls'
+// clearance: check_moat_faces).
+bool slab_left_of(const std::vector<Vec2>& line, const std::vector<Vec2>& plan_B) {
+  double nearest = std::numeric_limits<double>::infinity(), side = 0.0;
+  for (std::size_t k = 0; k + 1 < line.size(); ++k)
+    for (const Vec2& p : plan_B) {
+      const Vec2 a = line[k], e = line[k + 1] - a;
+      const double s = std::clamp(dot(p - a, e) / dot(e, e), 0.0, 1.0);
+      const Vec2 d = p - (a + s * e);
+      if (dot(d, d) < nearest) nearest = dot(d, d), side = cross(e, p - a);
+    }
+  return side >= 0.0;
+}
+
+// Every wall of the building, before `sides` selects among the outline's or polyline's.
 std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
+  using Follow = MoatWalls3DConfig::Follow;
   static constexpr Vec2 kAxis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};  // box sides' normals
   std::vector<WallShape> out;
   const MoatWalls3DConfig& w = b.walls;
-  if (!w.follow_outline) {
+  if (w.follow == Follow::kBox) {
     for (int side = 0; side < 4; ++side) {
       if (!w.present[side]) continue;
       std::vector<Vec2> outline = moat_wall_outline(b, side);
@@ -83,15 +109,34 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
   const std::vector<Level3D> levels = levels3d(b);
   const std::vector<Vec2>& plan =
       levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan;
-  const SimplePolygon slab{std::span<const Vec2>(plan)};
-  // Each run's face name, then its gap (MoatWalls3DConfig::outline_gap).
   std::vector<std::string> names;
   std::vector<double> gaps;
-  for (OutlineFace& face : outline_faces(slab)) {
-    gaps.push_back(w.outline_gap(face.name));
-    names.push_back(std::move(face.name));
+  std::vector<MoatWall> walls;
+  if (w.follow == Follow::kOutline) {
+    const SimplePolygon slab{std::span<const Vec2>(plan)};
+    // Each run's face name, then its gap (MoatWalls3DConfig::outline_gap).
+    for (OutlineFace& face : outline_faces(slab)) {
+      gaps.push_back(w.outline_gap(face.name));
+      names.push_back(std::move(face.name));
+    }
+    walls = following_moat(slab, gaps, w.thickness, w.extension);
+  } else {
+    // The walls on the polyline's side away from the slab, listed and named in the order drawn;
+    // each gap its clearance at rest.
+    walls = polyline_walls(std::span<const Vec2>(w.polyline), w.thickness,
+                           !slab_left_of(w.polyline, plan));
+    std::map<std::string, int> faces;  // how many walls face each compass point so far
+    for (const MoatWall& m : walls) {
+      const Vec2 run = m.p_WE - m.p_WS;
+      const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run, n{d.y, -d.x};
+      names.push_back(numbered_face(compass_face(n), faces));
+      const NormalClearance c = normal_clearance(plan, m.outline.vertices(), n);
+      gaps.push_back(
+          std::isfinite(c.clearance)
+              ? c.clearance
+              : plan_separation(std::span<const Vec2>(plan), m.outline.vertices()).distance);
+    }
   }
-  const std::vector<MoatWall> walls = following_moat(slab, gaps, w.thickness, w.extension);
   for (std::size_t k = 0; k < walls.size(); ++k) {
     const MoatWall& m = walls[k];
     const Vec2 run = m.p_WE - m.p_WS;
@@ -108,6 +153,7 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
     outline.insert(outline.end(), v.begin(), first);
     out.push_back({std::move(outline), n, gaps[k], hi - lo, names[k], -1});
   }
+  if (w.follow == Follow::kPolyline) return out;
   // In the order of box walls (east, west, north, south), then the other faces along the
   // outline: a rectangle's following moat is its box walls, element for element.
   const auto rank = [](const WallShape& s) {
@@ -122,7 +168,7 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
 
 std::vector<WallShape> wall_shapes(const Building3DConfig& b) {
   std::vector<WallShape> out = all_wall_shapes(b);
-  if (!b.walls.follow_outline) return out;
+  if (!b.walls.by_face()) return out;
   std::erase_if(out, [&](const WallShape& s) { return !b.walls.has_outline_wall(s.face); });
   return out;
 }
@@ -134,10 +180,10 @@ std::optional<BumperStrips> wall_bumper_strips(const Building3DConfig& b, int si
   const Bumper3DConfig& bumper = b.walls.bumper;
   if (!bumper.any() || !(bumper.thickness > 0)) return std::nullopt;
   if (side >= 0) {
-    if (b.walls.follow_outline || !bumper.on[side]) return std::nullopt;
+    if (b.walls.by_face() || !bumper.on[side]) return std::nullopt;
     return bumper_strips(moat_wall_outline(b, side), side, bumper);
   }
-  if (!b.walls.follow_outline || !bumper.on_outline_face(face)) return std::nullopt;
+  if (!b.walls.by_face() || !bumper.on_outline_face(face)) return std::nullopt;
   for (const WallShape& s : wall_shapes(b))
     if (s.face == face) return face_bumper_strips(s.outline_B, s.n_B, bumper);
   return std::nullopt;
@@ -149,13 +195,7 @@ std::vector<OutlineFace> outline_faces(const SimplePolygon& plan) {
   for (const auto& [start, end] : outline_runs(plan)) {
     const Vec2 run = end - start;
     const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run;
-    std::string face = compass_face({d.y, -d.x});
-    if (const int k = ++faces[face]; k > 1) {
-      char numbered[32];  // "east 2" (snprintf: GCC 12 misreads a string += as overlapping)
-      std::snprintf(numbered, sizeof numbered, "%s %d", face.c_str(), k);
-      face = numbered;
-    }
-    out.push_back({std::move(face), start, end});
+    out.push_back({numbered_face(compass_face({d.y, -d.x}), faces), start, end});
   }
   return out;
 }
@@ -207,11 +247,12 @@ std::vector<FaceStrips> slab_face_strips(const std::vector<Vec2>& plan_B,
   return out;
 }
 
-std::vector<std::string> moat_faces(const Building3DConfig& building) {
+std::vector<MoatFace> moat_faces(const Building3DConfig& building) {
   Building3DConfig b = building;
-  b.walls.follow_outline = true;
-  std::vector<std::string> faces;
-  for (const WallShape& s : all_wall_shapes(b)) faces.push_back(s.face);
+  if (b.walls.follow == MoatWalls3DConfig::Follow::kBox)
+    b.walls.follow = MoatWalls3DConfig::Follow::kOutline;
+  std::vector<MoatFace> faces;
+  for (const WallShape& s : all_wall_shapes(b)) faces.push_back({s.face, s.gap});
   return faces;
 }
 

@@ -75,13 +75,20 @@ struct FaceStrips {
 std::vector<FaceStrips> slab_face_strips(const std::vector<Vec2>& plan_B,
                                          const Bumper3DConfig& bumper);
 
-// The faces of a building's outline walls (walls: {follow: outline}), every run's whether or not
-// `sides` selects it, in the order they are listed: "east", "west", "north", "south", then the
-// others along the outline ("north-east", a second east face "east 2", ...).
-std::vector<std::string> moat_faces(const Building3DConfig& building);
+// The faces of a building's walls by face, every run's whether or not `sides` selects it, in the
+// order they are listed. walls: {follow: outline} (also what a box moat's would be): "east",
+// "west", "north", "south", then the others along the outline ("north-east", a second east face
+// "east 2", ...), each at its declared gap. follow: polyline: in the order drawn, named by the
+// compass point of the normal into the wall, each at its clearance from the slab at rest.
+// Throws InvalidPolygon when no such walls can be built (geometry/moat.h).
+struct MoatFace {
+  std::string name;
+  double gap = 0.0;  // m
+};
+std::vector<MoatFace> moat_faces(const Building3DConfig& building);
 
 // The rubber strips (building frame, bumper_layer3d.h) of the moat wall of `building` on box side
-// `side` (>= 0) or, for walls that follow the outline (side < 0), facing `face`; nullopt when it
+// `side` (>= 0) or, for walls by face (outline, polyline; side < 0), facing `face`; nullopt when it
 // has no rubber. Throws std::invalid_argument when the bumper's from/to lie beyond its face.
 std::optional<BumperStrips> wall_bumper_strips(const Building3DConfig& building, int side,
                                                const std::string& face);

@@ -103,7 +103,8 @@ Site site_plan(const ModelConfig& config) {
     for (Vec2 p : body.plan_W.vertices()) w.plan_W.push_back(p);
     const Building3DConfig& b = config.structures3d.at(static_cast<std::size_t>(w.building));
     w.structure = b.name;
-    w.declared_gap = body.wall_gap;
+    // A polyline's walls declare no gap: theirs is the clearance measured (pounding3d.h).
+    w.declared_gap = b.walls.follow == MoatWalls3DConfig::Follow::kPolyline ? -1.0 : body.wall_gap;
     w.along_outline = body.wall_side < 0;
     w.normal_W = body.wall_normal_W;
     site.walls.push_back(w);

@@ -45,7 +45,7 @@ struct PlanWall {
   int building = 0;           // index of the building whose base slab it surrounds
   std::string structure;      // that building's name
   std::string side;           // "east", ...
-  double declared_gap = 0.0;  // m, as written
+  double declared_gap = 0.0;  // m, as written; < 0: none (walls along a polyline)
   double height = 0.0;
   double elevation = 0.0;  // m: its top, flush with the level it faces (the base slab's)
   std::vector<Vec2> plan_W;

@@ -1,0 +1,48 @@
+// Test helpers for 3D models struck by the built-in pulse (the moat-wall tests): the pulse along a
+// direction in plan, a run to a given time keeping the model (its elements' episodes), and a
+// contact by its label.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "solver/core/analysis.h"
+#include "solver/elements/polygon_contact.h"
+#include "solver/excitation/ground_motion.h"
+#include "solver/io/model_input.h"
+#include "solver/structures/job.h"
+
+namespace isopound::test {
+
+// The built-in pulse along the direction at `angle` (rad) from x (peak ground velocity 1 m/s).
+inline GroundMotion pulse_at(double angle) {
+  GroundMotion g = make_pulse(PulseParameters{});
+  g.acceleration_y = g.acceleration;
+  for (std::size_t k = 0; k < g.acceleration.size(); ++k) {
+    g.acceleration_y[k] *= std::sin(angle);
+    g.acceleration[k] *= std::cos(angle);
+  }
+  return g;
+}
+
+struct Outcome {
+  Model model;
+  AnalysisResult result;
+};
+
+inline Outcome run_until(const ModelConfig& c, const GroundMotion& motion, double t_end) {
+  RunOptions o = run_options(c);
+  o.analysis.t_end = t_end;
+  Outcome r{build_model(c), {}};
+  r.result = run_analysis(r.model, motion, o);
+  return r;
+}
+
+// The 3D contact labelled `label`, or nullptr.
+inline const PolygonContact* polygon_contact(const Model& m, const std::string& label) {
+  for (const auto& e : m.elements)
+    if (e->label() == label) return dynamic_cast<const PolygonContact*>(e.get());
+  return nullptr;
+}
+
+}  // namespace isopound::test
