@@ -177,14 +177,21 @@ std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thicknes
   return out;
 }
 
+WallExtent wall_extent(std::span<const Vec2> wall, Vec2 n) {
+  const Vec2 t{-n.y, n.x};
+  WallExtent e{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+               std::numeric_limits<double>::infinity()};
+  for (const Vec2& p : wall) {
+    e.lo = std::min(e.lo, dot(t, p));
+    e.hi = std::max(e.hi, dot(t, p));
+    e.face = std::min(e.face, dot(n, p));
+  }
+  return e;
+}
+
 NormalClearance normal_clearance(std::span<const Vec2> slab, std::span<const Vec2> wall, Vec2 n) {
   const Vec2 t{-n.y, n.x};
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo, face = lo;
-  for (const Vec2& p : wall) {
-    lo = std::min(lo, dot(t, p));
-    hi = std::max(hi, dot(t, p));
-    face = std::min(face, dot(n, p));
-  }
+  const auto [lo, hi, face] = wall_extent(wall, n);
   double reach = -std::numeric_limits<double>::infinity();
   Vec2 at;
   const auto consider = [&](Vec2 p) {

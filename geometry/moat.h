@@ -47,6 +47,14 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vecto
 std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thickness,
                                      bool walls_left = false);
 
+// A straight wall's extent across its normal n (unit, from the slab into the wall): [lo, hi] of
+// t·x over its corners, t = (−n_y, n_x), and its face, the least n·x of its corners.
+struct WallExtent {
+  double lo = 0.0, hi = 0.0;  // m along t
+  double face = 0.0;          // m along n
+};
+WallExtent wall_extent(std::span<const Vec2> wall, Vec2 n);
+
 // The clearance of a straight wall from a slab along the wall's normal n (unit, from the slab
 // into the wall), over the wall's extent across n: the wall's face (the least n·x of its
 // corners) less the slab's furthest point along n within that extent (a vertex inside it, or

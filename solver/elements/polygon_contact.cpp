@@ -535,13 +535,7 @@ double PolygonContact::onset_contact_step(const State& s) const {
 
 // The net work of the contact forces on the structures over the episode is −(W_sep − W_onset).
 void PolygonContact::end_episode(const State& s) {
-  const double net = -(s.work - s.episode_work);
-  const double gross = s.gross_work - s.episode_gross_work;
-  ++episodes_;
-  if (net > max_episode_net_work_) {
-    max_episode_net_work_ = net;
-    max_episode_net_work_relative_ = gross > 0 ? net / gross : 0.0;
-  }
+  episode_work_.end(-(s.work - s.episode_work), s.gross_work - s.episode_gross_work);
 }
 
 void PolygonContact::revert() {

@@ -12,6 +12,7 @@
 
 #include "geometry/overlap.h"
 #include "solver/core/element.h"
+#include "solver/elements/episode_work.h"
 #include "solver/elements/plan_pair.h"
 #include "solver/materials/impact_law.h"
 
@@ -164,9 +165,9 @@ class PolygonContact final : public Element {
   // the structures, −(W_sep − W_onset) with W the element work ∫ v·f_e dt. Completed episodes,
   // the largest net work of any of them (J; ≤ 0 for a passive contact, −inf before any), and that
   // episode's net work over its gross work ∫ |v·f_e| dt (the scale of its round-off).
-  int episodes() const { return episodes_; }
-  double max_episode_net_work() const { return max_episode_net_work_; }
-  double max_episode_net_work_relative() const { return max_episode_net_work_relative_; }
+  int episodes() const { return episode_work_.episodes(); }
+  double max_episode_net_work() const { return episode_work_.max_net_work(); }
+  double max_episode_net_work_relative() const { return episode_work_.max_net_work_relative(); }
   double friction_dissipated() const { return friction_dissipated_; }
   double trial_friction_dissipated() const { return trial_.friction_dissipated; }
   double dissipated_energy() const { return trial_.work - trial_stored(); }
@@ -324,9 +325,7 @@ class PolygonContact final : public Element {
   double max_impact_velocity_ = 0.0;
   double friction_dissipated_ = 0.0;
   double time_stick_ = 0.0, time_slip_ = 0.0;
-  int episodes_ = 0;
-  double max_episode_net_work_ = -std::numeric_limits<double>::infinity();
-  double max_episode_net_work_relative_ = -std::numeric_limits<double>::infinity();
+  EpisodeWork episode_work_;
 
   void end_episode(const State& at_separation);
 };

@@ -483,12 +483,7 @@ void StruckColumn3D::commit() {
     episode_dissipated_ = dissipated;
     episode_gross_ = gross_work_;
   } else if (!closed && closed_commit_) {
-    ++episodes_;
-    const double net = -(dissipated - episode_dissipated_), gross = gross_work_ - episode_gross_;
-    if (net > max_episode_net_work_) {
-      max_episode_net_work_ = net;
-      max_episode_net_work_relative_ = gross > 0 ? net / gross : 0.0;
-    }
+    episode_work_.end(-(dissipated - episode_dissipated_), gross_work_ - episode_gross_);
   }
   closed_commit_ = closed;
   contact_.commit();

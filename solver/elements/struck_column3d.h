@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "solver/core/element.h"
+#include "solver/elements/episode_work.h"
 #include "solver/elements/hinged_column.h"
 #include "solver/elements/polygon_contact.h"
 
@@ -108,9 +109,9 @@ class StruckColumn3D final : public Element {
   // the episode's gross ∫ |v·f| dt. The contact's own episode measure (contact().
   // max_episode_net_work) takes the node's rate behind the dashpot (the depth rule, not dx/dt):
   // the physical one is this.
-  int episodes() const { return episodes_; }
-  double max_episode_net_work() const { return max_episode_net_work_; }
-  double max_episode_net_work_relative() const { return max_episode_net_work_relative_; }
+  int episodes() const { return episode_work_.episodes(); }
+  double max_episode_net_work() const { return episode_work_.max_net_work(); }
+  double max_episode_net_work_relative() const { return episode_work_.max_net_work_relative(); }
 
  private:
   static constexpr int kColumnOutputs = 17;
@@ -168,9 +169,7 @@ class StruckColumn3D final : public Element {
   double work_ = 0.0, gross_work_ = 0.0, power_commit_ = 0.0;  // J, J, W (committed)
   bool closed_commit_ = false;
   double episode_dissipated_ = 0.0, episode_gross_ = 0.0;  // W − E_stored, gross: at the onset
-  int episodes_ = 0;
-  double max_episode_net_work_ = -std::numeric_limits<double>::infinity();
-  double max_episode_net_work_relative_ = -std::numeric_limits<double>::infinity();
+  EpisodeWork episode_work_;
   // Local displacement, rate and force (the contact works on vectors of kLocal; allocated once).
   Eigen::VectorXd zl_, zdl_, fl_;
   Eigen::VectorXd z_commit_, zd_commit_;  // the committed zl_, zdl_

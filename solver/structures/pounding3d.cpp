@@ -141,17 +141,13 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
     const MoatWall& m = walls[k];
     const Vec2 run = m.p_WE - m.p_WS;
     const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run, n{d.y, -d.x};
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const Vec2& p : m.outline.vertices()) {
-      lo = std::min(lo, dot(p, d));
-      hi = std::max(hi, dot(p, d));
-    }
+    const WallExtent along = wall_extent(m.outline.vertices(), n);  // t = d
     // From the vertex of least y (then x), as a box wall's outline starts.
     const std::span<const Vec2> v = m.outline.vertices();
     const auto first = std::min_element(v.begin(), v.end(), starts_face_before);
     std::vector<Vec2> outline(first, v.end());
     outline.insert(outline.end(), v.begin(), first);
-    out.push_back({std::move(outline), n, gaps[k], hi - lo, names[k], -1});
+    out.push_back({std::move(outline), n, gaps[k], along.hi - along.lo, names[k], -1});
   }
   if (w.follow == Follow::kPolyline) return out;
   // In the order of box walls (east, west, north, south), then the other faces along the
@@ -621,12 +617,7 @@ std::vector<WallClosing> wall_closings(const ModelConfig& config) {
       // A non-convex slab: the corners in front of the wall (within its length), the face its
       // gap before the wall.
       const Vec2 t{-n.y, n.x};
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo, wall_face = lo;
-      for (const Vec2& p : wall.plan_W.vertices()) {
-        lo = std::min(lo, dot(t, p));
-        hi = std::max(hi, dot(t, p));
-        wall_face = std::min(wall_face, dot(n, p));
-      }
+      const auto [lo, hi, wall_face] = wall_extent(wall.plan_W.vertices(), n);
       corners.clear();
       for (const Vec2& p : slab.outline_W.vertices())
         if (dot(t, p) >= lo && dot(t, p) <= hi && dot(n, p) <= wall_face) corners.push_back(p);
