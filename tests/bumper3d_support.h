@@ -10,6 +10,7 @@
 #include "solver/core/analysis.h"
 #include "solver/excitation/ground_motion.h"
 #include "solver/structures/job.h"
+#include "tests/wall_run_support.h"
 
 namespace isopound::test {
 
@@ -51,10 +52,7 @@ inline std::string building_beside_neighbour(
 )" + neighbour_extra;
 }
 
-struct BumperOutcome {
-  Model model;
-  AnalysisResult result;
-};
+using BumperOutcome = Outcome;  // the model and its run (wall_run_support.h)
 
 // The model run to t_end (s) under `motion`, no histories.
 inline BumperOutcome run_bumper_model(const ModelConfig& c, const GroundMotion& motion,

@@ -34,19 +34,7 @@ ModelConfig load_text(const std::string& text) {
   return load_model(YAML::Load(text), "inline.yaml", "/models");
 }
 
-// The thesis building (3 storeys, 3 x 3 bays of 5.5 m, configs/3d-xy5.yaml) with `base` and
-// `walls` as given.
-std::string building(const std::string& base, const std::string& walls) {
-  return R"(structures:
-  - name: building
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 3, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
-    damping: {type: rayleigh, ratios: [5 %, 2 %], modes: [1, 4], bearing_stiffness: post_yield}
-    base: )" +
-         base + "\n    walls: " + walls + "\n";
-}
+constexpr auto building = &test::moat_building;
 
 constexpr const char* kSquareBase = "{mass: 340 t}";
 // 2 m beyond the column grid, corners chamfered by 2.5 m (configs/3d-chamfered-moat.yaml).

@@ -128,16 +128,7 @@ ModelConfig load_text(const std::string& text) {
 
 // The thesis building (configs/3d-xy5.yaml: a 16.5 m square base) with `walls` as given.
 std::string building(const std::string& walls) {
-  return R"(structures:
-  - name: building
-    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
-    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
-    storeys: {count: 3, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
-    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
-    damping: {type: rayleigh, ratios: [5 %, 2 %], modes: [1, 4], bearing_stiffness: post_yield}
-    base: {mass: 340 t}
-    walls: )" +
-         walls + "\n";
+  return test::moat_building("{mass: 340 t}", walls);
 }
 
 std::string refused_key(const std::string& walls) {

@@ -1,6 +1,6 @@
-// Test helpers for 3D models struck by the built-in pulse (the moat-wall tests): the pulse along a
-// direction in plan, a run to a given time keeping the model (its elements' episodes), and a
-// contact by its label.
+// Test helpers for 3D models struck by the built-in pulse (the moat-wall tests): the thesis
+// building in its walls, the pulse along a direction in plan, a run to a given time keeping the
+// model (its elements' episodes), and a contact by its label.
 #pragma once
 
 #include <cmath>
@@ -13,6 +13,20 @@
 #include "solver/structures/job.h"
 
 namespace isopound::test {
+
+// The thesis building (3 storeys, 3 x 3 bays of 5.5 m, configs/3d-xy5.yaml) with `base` and
+// `walls` as given (YAML flow maps).
+inline std::string moat_building(const std::string& base, const std::string& walls) {
+  return R"(structures:
+  - name: building
+    grid: {bays_x: [5.5 m, 5.5 m, 5.5 m], bays_y: [5.5 m, 5.5 m, 5.5 m]}
+    columns: {section: [45 cm, 45 cm], E: 30 GPa, nu: 0.2}
+    storeys: {count: 3, height: 3.2 m, mass: 340 t, roof_mass: 250 t}
+    bearing: {model: bouc_wen, Tb: 2.0 s, QW: 5 %, uy: 1 cm}
+    damping: {type: rayleigh, ratios: [5 %, 2 %], modes: [1, 4], bearing_stiffness: post_yield}
+    base: )" +
+         base + "\n    walls: " + walls + "\n";
+}
 
 // The built-in pulse along the direction at `angle` (rad) from x (peak ground velocity 1 m/s).
 inline GroundMotion pulse_at(double angle) {
