@@ -59,10 +59,15 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, double gap, doub
 
 std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vector<double>& gaps,
                                      double thickness, double extension) {
+  return following_moat(plan, gaps, std::vector<double>(gaps.size(), thickness), extension);
+}
+
+std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vector<double>& gaps,
+                                     const std::vector<double>& thicknesses, double extension) {
   const std::vector<Vec2> corner = corners_of(plan);
   const int m = int(corner.size());
-  if (gaps.size() != corner.size())
-    throw std::invalid_argument("following_moat: one gap per run of the outline");
+  if (gaps.size() != corner.size() || thicknesses.size() != corner.size())
+    throw std::invalid_argument("following_moat: one gap and thickness per run of the outline");
   const auto direction = [&](int k) { return unit(corner[(k + 1) % m] - corner[k]); };
   const auto outward = [&](int k) {
     const Vec2 d = direction(k);
@@ -76,21 +81,24 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vecto
     const Vec2 s = corner[k], e = corner[(k + 1) % m];
     const Vec2 d = direction(k), nk = outward(k);
     const double gap = gaps[k], gap_before = gaps[(k + m - 1) % m], gap_after = gaps[(k + 1) % m];
+    const double thickness = thicknesses[k], thickness_before = thicknesses[(k + m - 1) % m],
+                 thickness_after = thicknesses[(k + 1) % m];
     Vec2 inner_s, inner_e, outer_s, outer_e;
     if (convex_at(k)) {
       inner_s = s + gap * nk - extension * d;
       outer_s = inner_s + thickness * nk;
     } else {
       inner_s = offset_corner(s, outward((k + m - 1) % m), nk, gap_before, gap);
-      outer_s =
-          offset_corner(s, outward((k + m - 1) % m), nk, gap_before + thickness, gap + thickness);
+      outer_s = offset_corner(s, outward((k + m - 1) % m), nk, gap_before + thickness_before,
+                              gap + thickness);
     }
     if (convex_at((k + 1) % m)) {
       inner_e = e + gap * nk + extension * d;
       outer_e = inner_e + thickness * nk;
     } else {
       inner_e = offset_corner(e, nk, outward((k + 1) % m), gap, gap_after);
-      outer_e = offset_corner(e, nk, outward((k + 1) % m), gap + thickness, gap_after + thickness);
+      outer_e =
+          offset_corner(e, nk, outward((k + 1) % m), gap + thickness, gap_after + thickness_after);
     }
     const Vec2 quad[] = {outer_s, outer_e, inner_e, inner_s};
     try {
@@ -109,10 +117,11 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vecto
   return out;
 }
 
-std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thickness,
-                                     bool walls_left) {
-  // The runs' corners (index into `line` kept for messages): ends always, interior vertices
-  // where the line turns.
+namespace {
+
+// The points of `line` that start or end a run (index into `line`, kept for messages): its ends,
+// and the interior points where the line turns.
+std::vector<int> polyline_corners(std::span<const Vec2> line) {
   std::vector<int> at;
   const int n = static_cast<int>(line.size());
   double size = 0.0;
@@ -140,7 +149,30 @@ std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thicknes
     at.push_back(i);
   }
   if (at.size() < 2) throw InvalidPolygon(-1, "a polyline needs two distinct points");
+  return at;
+}
+
+}  // namespace
+
+std::vector<std::pair<Vec2, Vec2>> polyline_runs(std::span<const Vec2> line) {
+  const std::vector<int> at = polyline_corners(line);
+  std::vector<std::pair<Vec2, Vec2>> runs;
+  for (std::size_t k = 0; k + 1 < at.size(); ++k) runs.emplace_back(line[at[k]], line[at[k + 1]]);
+  return runs;
+}
+
+std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thickness,
+                                     bool walls_left) {
+  return polyline_walls(line, std::vector<double>(polyline_runs(line).size(), thickness),
+                        walls_left);
+}
+
+std::vector<MoatWall> polyline_walls(std::span<const Vec2> line,
+                                     const std::vector<double>& thicknesses, bool walls_left) {
+  const std::vector<int> at = polyline_corners(line);
   const int m = static_cast<int>(at.size()) - 1;  // runs
+  if (thicknesses.size() != static_cast<std::size_t>(m))
+    throw std::invalid_argument("polyline_walls: one thickness per run of the line");
   const auto direction = [&](int k) { return unit(line[at[k + 1]] - line[at[k]]); };
   const double side = walls_left ? -1.0 : 1.0;
   const auto right = [&](int k) {  // into the wall
@@ -150,9 +182,9 @@ std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thicknes
   // The back's corner at vertex at[k]: square at the ends, else where the two backs cross.
   const auto back = [&](int k) {
     const Vec2 p = line[at[k]];
-    if (k == 0) return p + thickness * right(0);
-    if (k == m) return p + thickness * right(m - 1);
-    return offset_corner(p, right(k - 1), right(k), thickness, thickness);
+    if (k == 0) return p + thicknesses[0] * right(0);
+    if (k == m) return p + thicknesses[m - 1] * right(m - 1);
+    return offset_corner(p, right(k - 1), right(k), thicknesses[k - 1], thicknesses[k]);
   };
   std::vector<MoatWall> out;
   for (int k = 0; k < m; ++k) {
@@ -170,7 +202,7 @@ std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thicknes
       where.precision(12);
       where << "the wall from " << detail::describe_vertex(at[k], s) << " to "
             << detail::describe_vertex(at[k + 1], e) << " is too short for its mitres at thickness "
-            << thickness << " m (" << error.what() << ")";
+            << thicknesses[k] << " m (" << error.what() << ")";
       throw InvalidPolygon(at[k], where.str());
     }
   }

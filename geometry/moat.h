@@ -33,6 +33,9 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, double gap, doub
 // walls' faces meet where the two offset lines cross, their back faces likewise.
 std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vector<double>& gaps,
                                      double thickness, double extension);
+// ... and each its own thickness (thicknesses[k]): the back faces meet where their offsets cross.
+std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vector<double>& gaps,
+                                     const std::vector<double>& thicknesses, double extension);
 
 // Walls along a polyline of their own (walls: {follow: polyline}), not derived from a slab: one
 // wall per straight run of `line` (collinear vertices dropped), in the order drawn, the band
@@ -46,6 +49,13 @@ std::vector<MoatWall> following_moat(const SimplePolygon& plan, const std::vecto
 // its mitres at this thickness.
 std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thickness,
                                      bool walls_left = false);
+// ... each run's wall its own thickness (thicknesses[k] for polyline_runs(line)[k]): where two
+// runs meet, the backs' offsets cross at the mitre.
+std::vector<MoatWall> polyline_walls(std::span<const Vec2> line,
+                                     const std::vector<double>& thicknesses, bool walls_left);
+// The straight runs of `line` (collinear points dropped), start and end point of each in the
+// order drawn, as polyline_walls gives their walls; throws as it does.
+std::vector<std::pair<Vec2, Vec2>> polyline_runs(std::span<const Vec2> line);
 
 // A straight wall's extent across its normal n (unit, from the slab into the wall): [lo, hi] of
 // t·x over its corners, t = (−n_y, n_x), and its face, the least n·x of its corners.

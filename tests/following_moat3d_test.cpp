@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/moat.h"
 #include "geometry/overlap.h"
 #include "geometry/plan_overlap.h"
 #include "solver/core/analysis.h"
@@ -342,6 +343,44 @@ TEST(FollowingMoat3D, LPodiumWindowPeaksWithin1PercentOfTolerance1e6) {
   }
   EXPECT_GT(compared, 1000);
   EXPECT_LE(worst.worst, 1e-2) << worst.where;
+}
+
+// A thickness per face: the same thickness written for every face is the one thickness, body for
+// body; the notch's walls (north, east 2) thinner stand on their faces 40 cm deep and still meet
+// only on their mitre (their backs' offsets crossing).
+TEST(FollowingMoat3D, LPodiumWallsAThicknessPerFace) {
+  const auto walls_of = [](const std::string& thickness) {
+    std::vector<SiteBody> out;
+    for (SiteBody& b : site_bodies(load_text(
+             building(kLBase, "{follow: outline, gap: 20 cm, thickness: " + thickness + "}"))))
+      if (b.role == "wall") out.push_back(std::move(b));
+    return out;
+  };
+  const std::vector<SiteBody> one = walls_of("1 m");
+  const std::vector<SiteBody> each =
+      walls_of("{east: 1 m, west: 1 m, north: 1 m, south: 1 m, east 2: 1 m, north 2: 1 m}");
+  ASSERT_EQ(one.size(), each.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    const auto a = one[i].plan_W.vertices(), b = each[i].plan_W.vertices();
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(a[k].x, b[k].x);
+      EXPECT_EQ(a[k].y, b[k].y);
+    }
+  }
+  const std::vector<SiteBody> thin =
+      walls_of("{east: 1 m, west: 1 m, north: 40 cm, south: 1 m, east 2: 40 cm, north 2: 1 m}");
+  const SiteBody* notch[2] = {nullptr, nullptr};
+  for (const SiteBody& w : thin) {
+    const bool in_notch = w.wall_face == "east 2" || w.wall_face == "north";
+    double back = -1e9;
+    for (const Vec2& p : w.plan_W.vertices()) back = std::max(back, dot(w.wall_normal_W, p));
+    const double depth = back - wall_extent(w.plan_W.vertices(), w.wall_normal_W).face;
+    EXPECT_NEAR(depth, in_notch ? 0.4 : 1.0, 1e-12) << w.wall_face;
+    if (in_notch) notch[w.wall_face == "north"] = &w;
+  }
+  ASSERT_TRUE(notch[0] && notch[1]);
+  EXPECT_LT(overlap_of(notch[0]->plan_W, notch[1]->plan_W).area, 1e-12);
 }
 
 // A gap per face (walls along a polyline, each with its own gap) and flexible walls around the L:

@@ -86,6 +86,29 @@ TEST(PolylineWalls, EitherSideAndCollinearPoints) {
   EXPECT_NEAR(area_of(one[0]), 5.0, 1e-12);
 }
 
+// Each run its own thickness: where two runs meet, their backs' offsets cross (a right-angle
+// turn: the corner of the two back lines), so the walls still share only the mitre.
+TEST(PolylineWalls, EachRunItsOwnThickness) {
+  const std::vector<Vec2> line = {{-12, -10}, {10, -10}, {10, 10}};
+  const std::vector<MoatWall> walls = polyline_walls(line, std::vector<double>{1.0, 2.0}, false);
+  ASSERT_EQ(walls.size(), 2u);
+  // South: face 22 (y = -10), back 24 (y = -11, to x = 12), 1 deep; east: face 20 (x = 10),
+  // back 21 (x = 12, from y = -11), 2 deep.
+  EXPECT_NEAR(area_of(walls[0]), (22.0 + 24.0) / 2 * 1.0, 1e-12);
+  EXPECT_NEAR(area_of(walls[1]), (20.0 + 21.0) / 2 * 2.0, 1e-12);
+  EXPECT_NEAR(walls[1].outline.box_max().x, 12.0, 1e-12);
+  EXPECT_NEAR(walls[1].outline.box_min().y, -11.0, 1e-12);
+  EXPECT_LT(overlap_of(walls[0].outline, walls[1].outline).area, 1e-12);
+  // The same thickness for every run is the one-thickness walls, bit for bit.
+  const std::vector<MoatWall> one = polyline_walls(line, 1.5);
+  const std::vector<MoatWall> each = polyline_walls(line, std::vector<double>{1.5, 1.5}, false);
+  for (std::size_t k = 0; k < one.size(); ++k)
+    for (std::size_t i = 0; i < one[k].outline.vertices().size(); ++i) {
+      EXPECT_EQ(one[k].outline.vertices()[i].x, each[k].outline.vertices()[i].x);
+      EXPECT_EQ(one[k].outline.vertices()[i].y, each[k].outline.vertices()[i].y);
+    }
+}
+
 TEST(PolylineWalls, RefusesWhatCannotBeAWallNamingTheVertex) {
   const auto vertex_of = [](std::vector<Vec2> line, double t) {
     try {
@@ -275,6 +298,57 @@ TEST(PolylineWalls3D, RubberAndFlexibleWallsAlongAPolyline) {
   ASSERT_NE(west, nullptr);
   EXPECT_GT(west->impacts(), 0);
   EXPECT_LT(std::abs(f.result.energy.relative_error), 1e-3);
+}
+
+// Segments with their own thickness and model: the retaining wall's west wall rigid and 1 m
+// thick, its north wall flexible and 60 cm thick (its own 3 DOFs, its section from that
+// thickness); struck by the pulse, every episode passive. A map by face gives every wall's face.
+TEST(PolylineWalls3D, EachWallItsOwnThicknessAndModel) {
+  const ModelConfig c = load_text(building(
+      "{follow: polyline, polyline: [[-8.45 m, -11 m], [-8.45 m, 8.65 m], [11 m, 9.65 m]], "
+      "height: 1.5 m, mass_per_length: 8 t/m, thickness: {west: 1 m, north: 60 cm}, "
+      "model: {west: rigid, north: flexible}}"));
+  for (const SiteBody& w : site_bodies(c)) {
+    if (w.role != "wall") continue;
+    const bool north = w.wall_face == "north";
+    EXPECT_EQ(w.dof_label_u.empty(), !north) << w.wall_face;
+    // Its depth along its normal: the thickness.
+    const WallExtent e = wall_extent(w.plan_W.vertices(), w.wall_normal_W);
+    double back = -1e9;
+    for (const Vec2& p : w.plan_W.vertices()) back = std::max(back, dot(w.wall_normal_W, p));
+    EXPECT_NEAR(back - e.face, north ? 0.6 : 1.0, 1e-12) << w.wall_face;
+  }
+  const Outcome r = run(c, pulse_at(2 * std::numbers::pi / 3), 8.0);
+  const PolygonContact* north = contact(r.model, "building/base|wall north");
+  ASSERT_NE(north, nullptr);
+  EXPECT_GT(north->impacts(), 0);
+  for (const auto& e : r.model.elements) {
+    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
+    if (!p || p->episodes() == 0) continue;
+    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
+  }
+  EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3);
+  const std::string line =
+      "{follow: polyline, polyline: [[-8.45 m, -11 m], [-8.45 m, 8.65 m], [11 m, 9.65 m]], ";
+  EXPECT_EQ(refused_key(line + "thickness: {west: 1 m}}"), "structures[0].walls.thickness");
+  EXPECT_EQ(refused_key(line + "thickness: {west: 1 m, north: 1 m, east: 1 m}}"),
+            "structures[0].walls.thickness.east");
+  EXPECT_EQ(refused_key(line + "model: {west: rigid, north: bendy}}"),
+            "structures[0].walls.model.north");
+  // Box walls by side: the east wall 2 m thick.
+  const ModelConfig box = load_text(
+      building("{sides: [east, west], gap: 20 cm, thickness: {east: 2 m, west: 1 m}, model: {east: "
+               "flexible, west: rigid}}"));
+  for (const SiteBody& w : site_bodies(box)) {
+    if (w.role != "wall") continue;
+    const bool east = w.wall_face == "east";
+    EXPECT_NEAR(w.plan_W.box_max().x - w.plan_W.box_min().x, east ? 2.0 : 1.0, 1e-12);
+    EXPECT_EQ(w.dof_label_u.empty(), !east);
+  }
+  EXPECT_EQ(refused_key("{sides: [east, west], gap: 20 cm, thickness: {east: 2 m}}"),
+            "structures[0].walls.thickness");
+  EXPECT_EQ(refused_key("{sides: [east], gap: 20 cm, thickness: {east: 2 m, west: 1 m}}"),
+            "structures[0].walls.thickness.west");
 }
 
 TEST(PolylineWalls3D, BadPolylinesAreRefusedAtTheirKey) {

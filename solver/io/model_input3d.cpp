@@ -369,13 +369,45 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
       w.gap = {g, g, g, g};
     }
   }
-  node.read_quantity("thickness", dim::kLength, Bound::kPositive, w.thickness);
+  // thickness and model: one for every wall, or a map by face (box walls by side; checked here
+  // for box walls, with the plan for walls by face: check_moat_faces).
+  if (const auto th = node.find("thickness"); th && th->is_map()) {
+    for (const auto& entry : th->yaml()) {
+      const std::string face = entry.first.as<std::string>();
+      w.thicknesses[face] = th->required(face).quantity(dim::kLength, Bound::kPositive);
+    }
+    if (w.thicknesses.empty()) th->fail("no thicknesses: give a length or e.g. {east: 1 m, ...}");
+  } else {
+    node.read_quantity("thickness", dim::kLength, Bound::kPositive, w.thickness);
+  }
   node.read_quantity("height", dim::kLength, Bound::kPositive, w.height);
   if (w.follow != W::Follow::kPolyline)
     node.read_quantity("extension", dim::kLength, Bound::kNonNegative, w.extension);
   node.read_quantity("mass_per_length", Dimension{-1, 1, 0}, Bound::kPositive, w.mass_per_length);
-  node.read_choice<bool>("model", {{"rigid", false}, {"flexible", true}}, w.flexible);
-  if (w.flexible) {
+  if (const auto model = node.find("model"); model && model->is_map()) {
+    for (const auto& entry : model->yaml()) {
+      const std::string face = entry.first.as<std::string>();
+      w.flexible_faces[face] =
+          model->required(face).choice<bool>({{"rigid", false}, {"flexible", true}});
+    }
+    if (w.flexible_faces.empty()) model->fail("no models: give rigid, flexible or {east: ..}");
+  } else {
+    node.read_choice<bool>("model", {{"rigid", false}, {"flexible", true}}, w.flexible);
+  }
+  if (w.follow == W::Follow::kBox)
+    for (const char* key : {"thickness", "model"}) {
+      const auto map = node.find(key);
+      if (!map || !map->is_map()) continue;
+      map->expect_keys({"east", "west", "north", "south"});
+      for (int k = 0; k < 4; ++k) {
+        const auto entry = map->find(W::kSideNames[k]);
+        if (w.present[k] && !entry)
+          map->fail(std::string("no ") + key + " for the " + W::kSideNames[k] + " wall");
+        if (entry && !w.present[k])
+          entry->fail(std::string("there is no ") + W::kSideNames[k] + " wall (see sides)");
+      }
+    }
+  if (w.any_flexible()) {
     node.read_quantity("E", dim::kPressure, Bound::kPositive, w.E);
     node.read_number("nu", Bound::kNonNegative, w.nu);
     if (w.nu >= 0.5) node.fail_at_key("nu", "Poisson's ratio must be in [0, 0.5)");
@@ -431,17 +463,25 @@ std::vector<MoatFace> check_moat_faces(const InputNode& walls, const Building3DC
       if (!has_face(side.string()))
         side.fail("no wall of the " + std::string(of) + " faces '" + side.string() +
                   "': its walls face " + all);
-  if (w.outline_gaps.empty()) return faces;
-  const InputNode gap = walls.required("gap");
-  for (const auto& [face, g] : w.outline_gaps) {
-    if (!has_face(face))
-      gap.required(face).fail("no wall of the outline faces '" + face + "': its walls face " + all);
-    if (!w.has_outline_wall(face))
-      gap.required(face).fail("there is no " + face + " wall (see sides)");
-  }
-  for (const MoatFace& f : faces)
-    if (w.has_outline_wall(f.name) && !w.outline_gaps.count(f.name))
-      gap.fail("no gap for the " + f.name + " wall (its walls face " + all + ")");
+  // Maps by face (thickness, model, gap): every wall's face, and only those.
+  const auto check_face_map = [&](const char* key, const auto& map) {
+    if (map.empty()) return;
+    const InputNode node = walls.required(key);
+    for (const auto& [face, value] : map) {
+      if (!has_face(face))
+        node.required(face).fail("no wall of the " + std::string(of) + " faces '" + face +
+                                 "': its walls face " + all);
+      if (!w.has_outline_wall(face))
+        node.required(face).fail("there is no " + face + " wall (see sides)");
+    }
+    for (const MoatFace& f : faces)
+      if (w.has_outline_wall(f.name) && !map.count(f.name))
+        node.fail(std::string("no ") + key + " for the " + f.name + " wall (its walls face " + all +
+                  ")");
+  };
+  check_face_map("thickness", w.thicknesses);
+  check_face_map("model", w.flexible_faces);
+  check_face_map("gap", w.outline_gaps);
   return faces;
 }
 

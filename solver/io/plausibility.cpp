@@ -229,8 +229,11 @@ const PlausibleRange* plausible_range_for(std::string_view key_path, const Dimen
   if (!generic.empty())
     for (const PlausibleRange& r : kRanges)
       if (r.key == generic + "." + key && r.dimension == d) return &r;
-  // A gap per face of a moat that follows the outline ("gap.north-east", "gap.east 2"): a gap.
-  const std::string_view row = generic == "gap" ? std::string_view("gap") : key;
+  // A gap or thickness per face of walls named by face ("gap.north-east", "thickness.east 2"): a
+  // gap, a thickness.
+  const std::string_view row = generic == "gap" || generic == "thickness"
+                                   ? std::string_view(generic)
+                                   : std::string_view(key);
   for (const PlausibleRange& r : kRanges)
     if (r.key == row && r.dimension == d) return &r;
   return nullptr;

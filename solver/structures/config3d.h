@@ -148,20 +148,41 @@ struct MoatWalls3DConfig {
   std::map<std::string, double> outline_gaps;
   std::array<bool, 4> present{};                  // no side: no walls
   std::array<double, 4> gap{0.2, 0.2, 0.2, 0.2};  // m, clear distance at rest
-  double thickness = 1.0;                         // m
-  double height = 1.0;                            // m (drawing only)
-  double extension = 1.0;                         // m beyond the slab at each end
-  double mass_per_length = 5000.0;                // kg/m, backfill included
+  double thickness = 1.0;                         // m, every wall's unless by face:
+  // thickness: {east: 1 m, north-east: 60 cm}: each wall's by its face (box walls by side; every
+  // wall's face given: checked with the plan); empty: `thickness` for every wall.
+  std::map<std::string, double> thicknesses;
+  double height = 1.0;              // m (drawing only)
+  double extension = 1.0;           // m beyond the slab at each end
+  double mass_per_length = 5000.0;  // kg/m, backfill included
   // Flexible walls (THEORY §7: a single-storey 3-DOF structure): each wall a rigid diaphragm
   // (u, v, θ) on a cantilever of height `height` with the wall's section (thickness x length),
   // concrete E, nu; stiffness-proportional damping with `damping_ratio` at the out-of-plane
   // mode. Rigid (false): immovable, its mass enters m_eff only.
   bool flexible = false;
+  // model: {west: rigid, north: flexible}: each wall's model by its face (every wall's face
+  // given); empty: `flexible` for every wall.
+  std::map<std::string, bool> flexible_faces;
   double E = 30e9;  // Pa
   double nu = 0.2;
   double damping_ratio = 0.05;
   Bumper3DConfig bumper;  // rubber on the inner faces (issue 27); none by default
   bool any() const { return present[0] || present[1] || present[2] || present[3]; }
+  // The wall facing `face` (a box side's name, or an outline's or polyline's face): its
+  // thickness, and whether it is flexible; whether any wall is.
+  double thickness_of(const std::string& face) const {
+    const auto t = thicknesses.find(face);
+    return t == thicknesses.end() ? thickness : t->second;
+  }
+  bool flexible_of(const std::string& face) const {
+    if (flexible_faces.empty()) return flexible;
+    const auto f = flexible_faces.find(face);
+    return f != flexible_faces.end() && f->second;
+  }
+  bool any_flexible() const {
+    return flexible || std::any_of(flexible_faces.begin(), flexible_faces.end(),
+                                   [](const auto& f) { return f.second; });
+  }
   // By face: whether the face has a wall (`sides` lists it, or there is no `sides`) ...
   bool has_outline_wall(const std::string& face) const {
     return outline_sides.empty() ||

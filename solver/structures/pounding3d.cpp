@@ -114,22 +114,32 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
   std::vector<MoatWall> walls;
   if (w.follow == Follow::kOutline) {
     const SimplePolygon slab{std::span<const Vec2>(plan)};
-    // Each run's face name, then its gap (MoatWalls3DConfig::outline_gap).
+    // Each run's face name, then its gap (MoatWalls3DConfig::outline_gap) and thickness.
+    std::vector<double> thicknesses;
     for (OutlineFace& face : outline_faces(slab)) {
       gaps.push_back(w.outline_gap(face.name));
+      thicknesses.push_back(w.thickness_of(face.name));
       names.push_back(std::move(face.name));
     }
-    walls = following_moat(slab, gaps, w.thickness, w.extension);
+    walls = following_moat(slab, gaps, thicknesses, w.extension);
   } else {
-    // The walls on the polyline's side away from the slab, listed and named in the order drawn;
-    // each gap its clearance at rest.
-    walls = polyline_walls(std::span<const Vec2>(w.polyline), w.thickness,
-                           !slab_left_of(w.polyline, plan));
+    // The walls on the polyline's side away from the slab, listed and named in the order drawn
+    // (by the compass point of the normal into each), each its face's thickness; each gap its
+    // clearance at rest.
+    const std::span<const Vec2> line(w.polyline);
+    const bool walls_left = !slab_left_of(w.polyline, plan);
     std::map<std::string, int> faces;  // how many walls face each compass point so far
+    std::vector<double> thicknesses;
+    for (const auto& [start, end] : polyline_runs(line)) {
+      const Vec2 run = end - start;
+      const Vec2 n = walls_left ? Vec2{-run.y, run.x} : Vec2{run.y, -run.x};
+      names.push_back(numbered_face(compass_face(n), faces));
+      thicknesses.push_back(w.thickness_of(names.back()));
+    }
+    walls = polyline_walls(line, thicknesses, walls_left);
     for (const MoatWall& m : walls) {
       const Vec2 run = m.p_WE - m.p_WS;
       const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run, n{d.y, -d.x};
-      names.push_back(numbered_face(compass_face(n), faces));
       const NormalClearance c = normal_clearance(plan, m.outline.vertices(), n);
       gaps.push_back(
           std::isfinite(c.clearance)
@@ -295,7 +305,8 @@ std::vector<Vec2> moat_wall_outline(const Building3DConfig& b, int side) {
   const ConvexPolygon slab =
       convex_hull(levels.at(static_cast<std::size_t>(walls_level3d(b))).diaphragm->plan);
   const Vec2 lo = slab.box_min(), hi = slab.box_max();
-  const double g = w.gap[side], t = w.thickness, e = w.extension;
+  const double g = w.gap[side], t = w.thickness_of(MoatWalls3DConfig::kSideNames[side]),
+               e = w.extension;
   double x0, x1, y0, y1;
   switch (side) {
     case MoatWalls3DConfig::kEast:
@@ -367,7 +378,7 @@ std::vector<SiteBody> site_bodies(const ModelConfig& config) {
       int walled = 0;
       for (const Building3DConfig& other : config.structures3d) walled += other.walls.any() ? 1 : 0;
       if (walled > 1) w.structure = b.name + " " + w.structure;
-      if (b.walls.flexible) {
+      if (b.walls.flexible_of(shape.face)) {
         w.dof_label_u = w.structure + " (x)";
         w.dof_label_v = w.structure + " (y)";
         w.dof_label_theta = w.structure + " (theta)";
@@ -423,7 +434,8 @@ void add_flexible_walls(Model& model, const ModelConfig& config) {
     if (w.role != "wall" || w.dof_label_u.empty()) continue;
     const MoatWalls3DConfig& c = config.structures3d[w.building].walls;
     const double L = w.wall_length;  // along the face (a mitred wall: its longer face)
-    const double t = c.thickness, h = c.height, E = c.E, G = E / (2.0 * (1.0 + c.nu));
+    const double t = c.thickness_of(w.wall_face), h = c.height, E = c.E,
+                 G = E / (2.0 * (1.0 + c.nu));
     // Cantilever of height h: out of plane flexure (I = L t³/12); in plane flexure (I = t L³/12)
     // in series with shear (κ = 5/6); twist as the out-of-plane strips (k_n L²/12) plus
     // Saint-Venant G J/h with J = L t³/3 (THEORY-notes "Flexible moat walls").
