@@ -157,15 +157,7 @@ TEST(FollowingMoat3D, DiagonalPulseStrikesTheChamferWallPassively) {
   const PolygonContact* chamfer = contact(r.model, "building/base|wall north-east");
   ASSERT_NE(chamfer, nullptr);
   EXPECT_GT(chamfer->impacts(), 0);
-  int struck = 0;
-  for (const auto& e : r.model.elements) {
-    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
-    if (!p || p->episodes() == 0) continue;
-    ++struck;
-    // Round-off of the episode's gross work bounds what "passive" can resolve.
-    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
-  }
-  EXPECT_GE(struck, 1);
+  EXPECT_GE(test::expect_every_episode_passive(r.model), 1);
   // The energy balance closes with the step tolerance, as for box walls (this pulse: 3.5e-4 at
   // the default 1e-4, the square slab in box walls 2.2e-4; 7.7e-5 at 1e-5).
   EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3);
@@ -255,14 +247,7 @@ TEST(FollowingMoat3D, LPodiumStrikesItsWallsPassively) {
       kLBase, "{follow: outline, gap: 10 cm, thickness: 1 m, height: 1 m, extension: 1 m}"));
   for (const double angle : {0.0, std::numbers::pi / 4, 1.25 * std::numbers::pi}) {
     const Outcome r = run(c, pulse_at(angle), 8.0);
-    int struck = 0;
-    for (const auto& e : r.model.elements) {
-      const auto* p = dynamic_cast<const PolygonContact*>(e.get());
-      if (!p || p->episodes() == 0) continue;
-      ++struck;
-      EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label() << " at " << angle;
-    }
-    EXPECT_GE(struck, 1) << angle;
+    EXPECT_GE(test::expect_every_episode_passive(r.model, " at " + std::to_string(angle)), 1);
     EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3) << angle;
   }
 }
@@ -283,11 +268,7 @@ TEST(FollowingMoat3D, LPodiumGoesOnWhereNewtonFlipsBetweenTriangleAndQuadrilater
   ASSERT_NO_THROW(r = run_job(c));
   EXPECT_GE(r.analysis.stats.held_steps, 1);
   EXPECT_LT(std::abs(r.analysis.energy.relative_error), 1e-3);
-  for (const auto& e : r.model.elements) {
-    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
-    if (!p || p->episodes() == 0) continue;
-    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
-  }
+  test::expect_every_episode_passive(r.model);
 }
 
 // Issue 40's convergence acceptance for the L-shaped example: over the window before pounding
@@ -488,11 +469,7 @@ TEST(FollowingMoat3D, LPodiumRubberOnItsNotchWallsIsStruckPassively) {
   ASSERT_NE(rubber, nullptr);
   EXPECT_GT(rubber->impacts(), 0);
   EXPECT_EQ(contact(r.model, "building/base|wall west bumper"), nullptr);  // no rubber there
-  for (const auto& e : r.model.elements) {
-    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
-    if (!p || p->episodes() == 0) continue;
-    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
-  }
+  test::expect_every_episode_passive(r.model);
   EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3);
   const auto key_of = [](const std::string& w) { return refused_key(kLBase, w); };
   const std::string common =

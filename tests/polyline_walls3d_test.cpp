@@ -263,11 +263,7 @@ TEST(PolylineWalls3D, ASlantedRetainingWallIsStruckPassively) {
     ASSERT_NE(p, nullptr) << wall;
     EXPECT_GT(p->impacts(), 0) << wall;
   }
-  for (const auto& e : r.model.elements) {
-    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
-    if (!p || p->episodes() == 0) continue;
-    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
-  }
+  test::expect_every_episode_passive(r.model);
   EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3);
   ModelConfig tight = c;
   tight.analysis.tolerance = 1e-5;
@@ -286,11 +282,7 @@ TEST(PolylineWalls3D, RubberAndFlexibleWallsAlongAPolyline) {
   const PolygonContact* rubber = contact(r.model, "building/base|wall west bumper");
   ASSERT_NE(rubber, nullptr);
   EXPECT_GT(rubber->impacts(), 0);
-  for (const auto& e : r.model.elements) {
-    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
-    if (!p || p->episodes() == 0) continue;
-    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
-  }
+  test::expect_every_episode_passive(r.model);
   EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3);
   const ModelConfig flexible = load_text(building(std::string(kRetaining) + ", model: flexible}"));
   const Outcome f = run(flexible, pulse_at(std::numbers::pi), 8.0);
@@ -322,11 +314,7 @@ TEST(PolylineWalls3D, EachWallItsOwnThicknessAndModel) {
   const PolygonContact* north = contact(r.model, "building/base|wall north");
   ASSERT_NE(north, nullptr);
   EXPECT_GT(north->impacts(), 0);
-  for (const auto& e : r.model.elements) {
-    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
-    if (!p || p->episodes() == 0) continue;
-    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label();
-  }
+  test::expect_every_episode_passive(r.model);
   EXPECT_LT(std::abs(r.result.energy.relative_error), 1e-3);
   const std::string line =
       "{follow: polyline, polyline: [[-8.45 m, -11 m], [-8.45 m, 8.65 m], [11 m, 9.65 m]], ";

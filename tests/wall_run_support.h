@@ -3,6 +3,8 @@
 // model (its elements' episodes), and a contact by its label.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 
@@ -57,6 +59,20 @@ inline const PolygonContact* polygon_contact(const Model& m, const std::string& 
   for (const auto& e : m.elements)
     if (e->label() == label) return dynamic_cast<const PolygonContact*>(e.get());
   return nullptr;
+}
+
+// Every 3D contact of the model that had an episode is passive in each: its largest net work on
+// the structures over one is <= 1e-9 of that episode's gross work (the round-off of the gross
+// work bounds what "passive" can resolve). Returns how many contacts had an episode.
+inline int expect_every_episode_passive(const Model& m, const std::string& where = "") {
+  int struck = 0;
+  for (const auto& e : m.elements) {
+    const auto* p = dynamic_cast<const PolygonContact*>(e.get());
+    if (!p || p->episodes() == 0) continue;
+    ++struck;
+    EXPECT_LE(p->max_episode_net_work_relative(), 1e-9) << p->label() << where;
+  }
+  return struck;
 }
 
 }  // namespace isopound::test
