@@ -15,6 +15,7 @@ namespace isopound {
 namespace {
 
 using detail::kCollinearSine;
+using detail::turn_sine;
 
 Vec2 unit(Vec2 v) {
   const double l = std::hypot(v.x, v.y);
@@ -32,12 +33,9 @@ Vec2 offset_corner(Vec2 p, Vec2 n1, Vec2 n2, double a1, double a2) {
 std::vector<Vec2> corners_of(const SimplePolygon& plan) {
   const int n = plan.size();
   std::vector<Vec2> corner;
-  for (int i = 0; i < n; ++i) {
-    const Vec2 e_in = plan[i] - plan[(i + n - 1) % n], e_out = plan[(i + 1) % n] - plan[i];
-    const double sine =
-        cross(e_in, e_out) / (std::hypot(e_in.x, e_in.y) * std::hypot(e_out.x, e_out.y));
-    if (std::abs(sine) > kCollinearSine) corner.push_back(plan[i]);
-  }
+  for (int i = 0; i < n; ++i)
+    if (std::abs(turn_sine(plan[(i + n - 1) % n], plan[i], plan[(i + 1) % n])) > kCollinearSine)
+      corner.push_back(plan[i]);
   return corner;
 }
 
@@ -134,12 +132,9 @@ std::vector<int> polyline_corners(std::span<const Vec2> line) {
         throw InvalidPolygon(i, detail::describe_vertex(i, line[i]) + " repeats the one before it");
     }
     if (at.size() >= 2) {
-      const Vec2 e_in = line[at.back()] - line[at[at.size() - 2]],
-                 e_out = line[i] - line[at.back()];
-      const double sine =
-          cross(e_in, e_out) / (std::hypot(e_in.x, e_in.y) * std::hypot(e_out.x, e_out.y));
-      if (std::abs(sine) <= kCollinearSine) {
-        if (dot(e_in, e_out) < 0.0)
+      const Vec2 p = line[at[at.size() - 2]], q = line[at.back()], r = line[i];
+      if (std::abs(turn_sine(p, q, r)) <= kCollinearSine) {
+        if (dot(q - p, r - q) < 0.0)
           throw InvalidPolygon(at.back(), detail::describe_vertex(at.back(), line[at.back()]) +
                                               ": the line turns back along itself");
         at.back() = i;  // straight through: one run
@@ -159,6 +154,15 @@ std::vector<std::pair<Vec2, Vec2>> polyline_runs(std::span<const Vec2> line) {
   std::vector<std::pair<Vec2, Vec2>> runs;
   for (std::size_t k = 0; k + 1 < at.size(); ++k) runs.emplace_back(line[at[k]], line[at[k + 1]]);
   return runs;
+}
+
+bool lies_left_of(std::span<const Vec2> polygon, std::span<const Vec2> line) {
+  double nearest = std::numeric_limits<double>::infinity(), side = 0.0;
+  for (std::size_t k = 0; k + 1 < line.size(); ++k)
+    for (const Vec2& p : polygon)
+      if (const double d = detail::point_segment_distance_sq(p, line[k], line[k + 1]); d < nearest)
+        nearest = d, side = cross(line[k + 1] - line[k], p - line[k]);
+  return side >= 0.0;
 }
 
 std::vector<MoatWall> polyline_walls(std::span<const Vec2> line, double thickness,

@@ -56,6 +56,10 @@ std::vector<MoatWall> polyline_walls(std::span<const Vec2> line,
 // The straight runs of `line` (collinear points dropped), start and end point of each in the
 // order drawn, as polyline_walls gives their walls; throws as it does.
 std::vector<std::pair<Vec2, Vec2>> polyline_runs(std::span<const Vec2> line);
+// Whether `polygon` lies to the left of the open polyline `line` as drawn: the side its vertex
+// nearest the line lies on, at the run that vertex is nearest (on the line: left). The side a
+// polyline's walls do not stand on (walls: {follow: polyline}).
+bool lies_left_of(std::span<const Vec2> polygon, std::span<const Vec2> line);
 
 // A straight wall's extent across its normal n (unit, from the slab into the wall): [lo, hi] of
 // t·x over its corners, t = (−n_y, n_x), and its face, the least n·x of its corners.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -23,6 +24,13 @@ inline std::string describe_vertex(int i, Vec2 p) {
   out.precision(12);
   out << "vertex " << i << " (" << p.x << ", " << p.y << ")";
   return out.str();
+}
+
+// Sine of the turn at q (p -> q -> r), > 0 left, relative to the two edges' lengths (|sin| below
+// kCollinearSine: straight through).
+inline double turn_sine(Vec2 p, Vec2 q, Vec2 r) {
+  const Vec2 e_in = q - p, e_out = r - q;
+  return cross(e_in, e_out) / (std::hypot(e_in.x, e_in.y) * std::hypot(e_out.x, e_out.y));
 }
 
 // Squared distance from p to the segment ab.

@@ -16,6 +16,7 @@ namespace {
 
 using detail::kCollinearSine;
 using detail::kRepeatedFraction;
+using detail::turn_sine;
 // Two non-adjacent edges closer than this fraction of the plan's size touch: the outline is not
 // simple (a drawing's separate rooms joined at a point, or a notch closed to nothing).
 constexpr double kTouchingFraction = 1e-9;
@@ -40,12 +41,6 @@ double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (properly_cross(a, b, c, d)) return 0.0;
   return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d),
                    point_segment_distance(c, a, b), point_segment_distance(d, a, b)});
-}
-
-// Sine of the turn at q (p -> q -> r), > 0 left, relative to the two edges' lengths.
-double turn_sine(Vec2 p, Vec2 q, Vec2 r) {
-  const Vec2 e_in = q - p, e_out = r - q;
-  return cross(e_in, e_out) / (length(e_in) * length(e_out));
 }
 
 // Strictly convex (every turn left beyond the collinear tolerance), counter-clockwise.

@@ -297,22 +297,13 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
                                        ? "each wall's gap is its clearance from the slab at rest, "
                                          "measured (isopound-pre lists them)"
                                        : "its walls end where the polyline ends"));
-    if (const auto sides = node.find("sides")) {
-      if (sides->is_sequence()) {
-        w.outline_sides = read_face_names(*sides, "no sides: give all or e.g. [east, north-east]");
-      } else {
-        sides->choice<int>({{"all", 0}});
-      }
-    }
     w.present = {true, true, true, true};
   } else if (node.has("polyline")) {
     node.fail_at_key("polyline", "only used with follow: polyline (walls along it)");
   }
-  if (w.follow == W::Follow::kOutline) {
-    // One wall per straight run of the slab's outline (geometry/moat.h), at the one gap or a gap
-    // per face, rigid or flexible (model), with bumpers by face (bumper.sides).
-    // sides: all, or the faces of a partial moat (checked against the outline with the plan,
-    // check_outline_sides).
+  if (w.by_face()) {
+    // sides: all, or the faces of a partial moat (checked against the outline's or polyline's
+    // faces with the plan, check_moat_faces).
     if (const auto sides = node.find("sides")) {
       if (sides->is_sequence()) {
         w.outline_sides = read_face_names(*sides, "no sides: give all or e.g. [east, north-east]");
@@ -322,8 +313,12 @@ MoatWalls3DConfig read_walls3d(const InputNode& node) {
     } else {
       node.note_default("sides", "all");
     }
+  }
+  if (w.follow == W::Follow::kOutline) {
+    // One wall per straight run of the slab's outline (geometry/moat.h), at the one gap or a gap
+    // per face, rigid or flexible (model), with bumpers by face (bumper.sides).
     // gap: one length for every wall, or a map by face (checked against the outline's faces
-    // with the plan, check_outline_sides).
+    // with the plan, check_moat_faces).
     const InputNode gap = node.required("gap");
     if (gap.is_map()) {
       for (const auto& entry : gap.yaml()) {

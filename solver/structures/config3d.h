@@ -143,7 +143,7 @@ struct MoatWalls3DConfig {
   // pounding3d.h, moat_faces), a partial moat; empty: a wall on every run.
   std::vector<std::string> outline_sides;
   // follow: outline with `gap: {east: .., north-east: ..}`: each face's gap (every wall's face is
-  // given: check_outline_sides; a face without a wall may be left out, its neighbours' mitres
+  // given: check_moat_faces; a face without a wall may be left out, its neighbours' mitres
   // then take the least given gap); empty: gap[0] for every wall.
   std::map<std::string, double> outline_gaps;
   std::array<bool, 4> present{};                  // no side: no walls

@@ -74,21 +74,6 @@ struct WallShape {
   int side = -1;        // MoatWalls3DConfig::Side of a box wall, else -1
 };
 
-// The slab (plan_B) lies to the left of `line` as drawn: decided at the run nearest the slab, by
-// the side its nearest vertex is on (a polyline that crosses the slab is refused by its walls'
-// clearance: check_moat_faces).
-bool slab_left_of(const std::vector<Vec2>& line, const std::vector<Vec2>& plan_B) {
-  double nearest = std::numeric_limits<double>::infinity(), side = 0.0;
-  for (std::size_t k = 0; k + 1 < line.size(); ++k)
-    for (const Vec2& p : plan_B) {
-      const Vec2 a = line[k], e = line[k + 1] - a;
-      const double s = std::clamp(dot(p - a, e) / dot(e, e), 0.0, 1.0);
-      const Vec2 d = p - (a + s * e);
-      if (dot(d, d) < nearest) nearest = dot(d, d), side = cross(e, p - a);
-    }
-  return side >= 0.0;
-}
-
 // Every wall of the building, before `sides` selects among the outline's or polyline's.
 std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
   using Follow = MoatWalls3DConfig::Follow;
@@ -124,10 +109,9 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
     walls = following_moat(slab, gaps, thicknesses, w.extension);
   } else {
     // The walls on the polyline's side away from the slab, listed and named in the order drawn
-    // (by the compass point of the normal into each), each its face's thickness; each gap its
-    // clearance at rest.
+    // (by the compass point of the normal into each), each its face's thickness (gaps: below).
     const std::span<const Vec2> line(w.polyline);
-    const bool walls_left = !slab_left_of(w.polyline, plan);
+    const bool walls_left = !lies_left_of(plan, line);
     std::map<std::string, int> faces;  // how many walls face each compass point so far
     std::vector<double> thicknesses;
     for (const auto& [start, end] : polyline_runs(line)) {
@@ -137,27 +121,29 @@ std::vector<WallShape> all_wall_shapes(const Building3DConfig& b) {
       thicknesses.push_back(w.thickness_of(names.back()));
     }
     walls = polyline_walls(line, thicknesses, walls_left);
-    for (const MoatWall& m : walls) {
-      const Vec2 run = m.p_WE - m.p_WS;
-      const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run, n{d.y, -d.x};
-      const NormalClearance c = normal_clearance(plan, m.outline.vertices(), n);
-      gaps.push_back(
-          std::isfinite(c.clearance)
-              ? c.clearance
-              : plan_separation(std::span<const Vec2>(plan), m.outline.vertices()).distance);
-    }
   }
   for (std::size_t k = 0; k < walls.size(); ++k) {
     const MoatWall& m = walls[k];
     const Vec2 run = m.p_WE - m.p_WS;
     const Vec2 d = (1.0 / std::hypot(run.x, run.y)) * run, n{d.y, -d.x};
     const WallExtent along = wall_extent(m.outline.vertices(), n);  // t = d
+    // A polyline's wall: its gap is its clearance at rest along n (nothing of the slab in front
+    // of it: the distance between them).
+    double gap = 0.0;
+    if (w.follow == Follow::kPolyline) {
+      const NormalClearance c = normal_clearance(plan, m.outline.vertices(), n);
+      gap = std::isfinite(c.clearance)
+                ? c.clearance
+                : plan_separation(std::span<const Vec2>(plan), m.outline.vertices()).distance;
+    } else {
+      gap = gaps[k];
+    }
     // From the vertex of least y (then x), as a box wall's outline starts.
     const std::span<const Vec2> v = m.outline.vertices();
     const auto first = std::min_element(v.begin(), v.end(), starts_face_before);
     std::vector<Vec2> outline(first, v.end());
     outline.insert(outline.end(), v.begin(), first);
-    out.push_back({std::move(outline), n, gaps[k], along.hi - along.lo, names[k], -1});
+    out.push_back({std::move(outline), n, gap, along.hi - along.lo, names[k], -1});
   }
   if (w.follow == Follow::kPolyline) return out;
   // In the order of box walls (east, west, north, south), then the other faces along the
