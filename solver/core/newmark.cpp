@@ -12,6 +12,7 @@
 #include <string>
 
 #include "solver/core/constants.h"
+#include "solver/core/diagonal_update.h"
 #include "solver/core/sized_dispatch.h"
 #include "solver/core/small_llt.h"
 #include "solver/core/small_lu.h"
@@ -105,9 +106,12 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   const int n_a = static_cast<int>(element_dofs_.size());
   const int n_s = static_cast<int>(linear_dofs_.size());
   use_blocks_ = settings.block_elimination && declared && n_a > 0 && n_s >= kMinLinearDofs;
-  // With the block elimination (a large linear part), the error estimate takes the elements'
-  // stiffness products when all provide them; small models keep the assembled tangent.
-  stiffness_products_ = use_blocks_;
+  // Every element on one DOF (a single isolator to the ground): the tangent is K_hat but for that
+  // diagonal entry.
+  if (declared && n_a == 1) single_element_dof_ = element_dofs_[0];
+  // The error estimate takes the elements' stiffness products when all provide them (the
+  // assembled tangent times e, to round-off): no n x n tangent to assemble after every step.
+  stiffness_products_ = true;
   for (const auto& e : model.elements)
     stiffness_products_ = stiffness_products_ && e->has_stiffness_product();
   if (use_blocks_) {
@@ -189,6 +193,21 @@ void NewmarkStepper::fill_effective_linear(double h, EffectiveLinear& e) {
   e.k_hat += (4.0 / (h * h)) * model_.mass;
   e.k_hat_rows.assign(e.k_hat);
   e.blocks = false;
+  e.k_hat_factored = false;
+  const Eigen::Index n = e.k_hat.rows();
+  if (single_element_dof_ >= 0 && !use_blocks_ && !use_lu_ && n <= SmallLlt::kMaxSize) {
+    e.k_hat_factor = e.k_hat;
+    e.k_hat_factored = SmallLlt::factor(e.k_hat_factor, e.k_hat_inverse_pivots.data());
+    if (!e.k_hat_factored) return;
+    e.k_hat_inverse.resize(n, n);  // sized once (reserve_step_sizes)
+    for (Eigen::Index j = 0; j < n; ++j) {
+      du_.setZero();
+      du_[j] = 1.0;
+      SmallLlt::solve(e.k_hat_factor, e.k_hat_inverse_pivots.data(), du_);
+      e.k_hat_inverse.col(j) = du_;
+    }
+    e.k_hat_inverse_rows.assign(e.k_hat_inverse);
+  }
   if (!use_blocks_) return;
   // Blocks gathered by plain loops (Eigen's indexed views copy a std::vector index: allocations).
   const auto gather = [&](const std::vector<int>& rows, const std::vector<int>& cols,
@@ -241,6 +260,11 @@ void NewmarkStepper::reserve_step_sizes(int count) {
   for (EffectiveLinear* e = &k_hat_uncached_; count >= 0; --count) {
     e->k_hat.resize(n, n);
     e->k_hat_rows.reserve(n, n);
+    if (n <= SmallLlt::kMaxSize) {
+      e->k_hat_factor.resize(n, n);
+      e->k_hat_inverse.resize(n, n);
+      e->k_hat_inverse_rows.reserve(n, n);
+    }
     if (use_blocks_) {
       e->k_ss_inv_rows.reserve(n_s, n_s);
       e->k_as_rows.reserve(n_a, n_s);
@@ -288,7 +312,14 @@ void NewmarkStepper::solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::Mat
 }
 
 template <int kSize>
-bool NewmarkStepper::solve_llt() {
+bool NewmarkStepper::solve_llt(const EffectiveLinear& linear) {
+  if (linear.k_hat_factored && single_element_dof_ >= 0) {
+    // The elements added to one diagonal entry of K_hat alone.
+    const int j = single_element_dof_;
+    if (solve_diagonal_update(linear.k_hat_inverse_rows, linear.k_hat_inverse, j,
+                              k_tangent_(j, j) - linear.k_hat(j, j), r_, du_))
+      return true;
+  }
   if (k_tangent_.rows() <= SmallLlt::kMaxSize) {
     const RememberedFactor* known = nullptr;
     for (const RememberedFactor& f : factors_)
@@ -297,14 +328,14 @@ bool NewmarkStepper::solve_llt() {
     if (!known) {
       RememberedFactor& f = factors_[static_cast<std::size_t>(next_factor_)];
       copy<kSize * kSize>(k_tangent_, f.factor);  // the same size every time
-      f.set = SmallLlt::factor(f.factor);
+      f.set = SmallLlt::factor(f.factor, f.inverse_pivots.data());
       if (!f.set) return false;
       copy<kSize * kSize>(k_tangent_, f.matrix);
       next_factor_ = (next_factor_ + 1) % kRememberedFactors;
       known = &f;
     }
     copy<kSize>(r_, du_);
-    SmallLlt::solve(known->factor, du_);
+    SmallLlt::solve(known->factor, known->inverse_pivots.data(), du_);
     return true;
   }
   llt_.compute(k_tangent_);
@@ -386,7 +417,7 @@ StepOutcome NewmarkStepper::try_step_sized(double h, GroundAcceleration ag1, boo
       batches_.add_tangents(k_tangent_, c_v);
       if (use_lu_) {
         solve_lu(k_tangent_, lu_, r_, du_);
-      } else if (!solve_llt<kSize>()) {  // not positive definite: LDL^T
+      } else if (!solve_llt<kSize>(linear)) {  // not positive definite: LDL^T
         ldlt_.compute(k_tangent_);
         du_ = ldlt_.solve(r_);
       }

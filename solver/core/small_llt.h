@@ -1,8 +1,15 @@
-// Cholesky factorisation A = L L^T of a small symmetric positive definite matrix, and its solve:
-// the operations of Eigen's LLT (3.4, SSE2 packets of two doubles) for sizes up to 8, in the same
-// order, so that every result is the same to the bit; without its L1 norm, dispatch and product
-// set-up, which cost more than the arithmetic at the sizes of a 2D building (4 x 4 for three
-// storeys), factored every Newton iteration.
+// Cholesky factorisation A = L L^T of a small symmetric positive definite matrix, and its solve,
+// for sizes up to 8: the stepper factors K_hat (4 x 4 for three storeys) every Newton iteration
+// of a nonlinear isolator, where Eigen's L1 norm, dispatch and product set-up cost more than the
+// arithmetic.
+//
+// The factor is Eigen's LLT (3.4, SSE2 packets of two doubles) to the bit, the same operations
+// in the same order. The solve is Eigen's but for one choice: it multiplies by the pivots'
+// reciprocals, kept with the factor, instead of dividing by the pivots. The 2n divisions lay on
+// the solve's dependency chain (a division costs ~13 cycles, a product 3); a product by a
+// rounded reciprocal rounds twice, so x differs from Eigen's solve by a few ulps (relative
+// 1e-15), far inside the Newton tolerance (since 2026-11-30; before, every result was Eigen's
+// to the bit).
 #pragma once
 
 #include <Eigen/Dense>
@@ -20,11 +27,14 @@ struct SmallLlt {
   // In place: the lower triangle of a (n x n, column-major, n <= kMaxSize) becomes L (the upper
   // triangle is not read and keeps its values). False at a pivot that is not > 0, as Eigen's
   // NumericalIssue (a NaN pivot passes, as there).
-  static bool factor(Eigen::MatrixXd& a) { return dispatch<Factor>(a.rows(), a.data(), nullptr); }
+  // inverse_pivots (n entries) receives 1 / L_kk for solve().
+  static bool factor(Eigen::MatrixXd& a, double* inverse_pivots) {
+    return dispatch<Factor>(a.rows(), a.data(), inverse_pivots, nullptr);
+  }
 
-  // b <- (L L^T)^-1 b with the factor of factor().
-  static void solve(const Eigen::MatrixXd& l, Eigen::VectorXd& b) {
-    dispatch<Solve>(l.rows(), l.data(), b.data());
+  // b <- (L L^T)^-1 b with the factor and the reciprocals of factor().
+  static void solve(const Eigen::MatrixXd& l, const double* inverse_pivots, Eigen::VectorXd& b) {
+    dispatch<Solve>(l.rows(), l.data(), inverse_pivots, b.data());
   }
 
  private:
@@ -32,7 +42,7 @@ struct SmallLlt {
   // same for every size).
   struct Factor {
     template <int n>
-    static bool run(double* a, double*) {
+    static bool run(double* a, double* inverse_pivots, double*) {
       const auto at = [a](int i, int j) -> double& { return a[i + j * n]; };
 #pragma GCC unroll 8
       for (int k = 0; k < n; ++k) {
@@ -46,6 +56,7 @@ struct SmallLlt {
         if (x <= 0.0) return false;
         x = std::sqrt(x);
         at(k, k) = x;
+        inverse_pivots[k] = 1.0 / x;
         const int below = n - k - 1;
         if (k > 0 && below == 1) {
           // One row left: Eigen's product falls back to an inner product, dst += -1 * dot.
@@ -68,14 +79,14 @@ struct SmallLlt {
 
   struct Solve {
     template <int n>
-    static bool run(const double* l, double* b) {
+    static bool run(const double* l, const double* inverse_pivots, double* b) {
       const auto at = [l](int i, int j) { return l[i + j * n]; };
       // L y = b, forward by columns. (Both loops unrolled whole: lane_sum's counts become
       // constants; GCC keeps the backward loop otherwise.)
 #pragma GCC unroll 8
       for (int i = 0; i < n; ++i) {
         if (b[i] == 0.0) continue;
-        b[i] /= at(i, i);
+        b[i] *= inverse_pivots[i];
         for (int s = i + 1; s < n; ++s) b[s] -= b[i] * at(s, i);
       }
       // L^T x = y, backward by rows of L^T (columns of L): each row's sum as Eigen's vectorised
@@ -84,20 +95,20 @@ struct SmallLlt {
       for (int i = n - 1; i >= 0; --i) {
         const int count = n - 1 - i;
         if (count > 0) b[i] -= lane_sum(&l[(i + 1) + i * n], &b[i + 1], count);
-        if (b[i] != 0.0) b[i] /= at(i, i);
+        b[i] *= inverse_pivots[i];
       }
       return true;
     }
   };
 
-  template <typename Op, typename Matrix>
-  static bool dispatch(Eigen::Index n, Matrix* a, double* b) {
+  template <typename Op, typename Matrix, typename Pivots>
+  static bool dispatch(Eigen::Index n, Matrix* a, Pivots* inverse_pivots, double* b) {
     // n = 0: nothing to do (callers keep Eigen beyond kMaxSize)
     return dispatch_size(n, [&]<int kN>() {
       if constexpr (kN == 0)
         return true;
       else
-        return Op::template run<kN>(a, b);
+        return Op::template run<kN>(a, inverse_pivots, b);
     });
   }
 

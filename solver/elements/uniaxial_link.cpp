@@ -28,6 +28,17 @@ void UniaxialLink::add_tangent(Eigen::MatrixXd& K, double) const {
   }
 }
 
+void UniaxialLink::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  const double k = law_->tangent();
+  if (i_ == kGround) {
+    y[j_] += k * x[j_];
+    return;
+  }
+  const double kd = k * (x[j_] - x[i_]);
+  y[j_] += kd;
+  y[i_] -= kd;
+}
+
 double UniaxialLink::power(const Eigen::VectorXd& v) const {
   const double rate = i_ == kGround ? v[j_] : v[j_] - v[i_];
   return law_->force() * rate;

@@ -26,6 +26,8 @@ class UniaxialLink : public Element {
   void set_trial(const Eigen::VectorXd& u, const Eigen::VectorXd& v) override;
   void add_force(Eigen::VectorXd& f) const override;
   void add_tangent(Eigen::MatrixXd& K, double velocity_factor) const override;
+  bool has_stiffness_product() const override { return true; }
+  void add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const override;
   double power(const Eigen::VectorXd& v) const override;
   double stored_energy() const override { return law_->stored_energy(); }
   void commit() override { law_->commit(); }
