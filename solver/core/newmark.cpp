@@ -106,9 +106,13 @@ NewmarkStepper::NewmarkStepper(Model& model, const NewtonSettings& settings)
   const int n_a = static_cast<int>(element_dofs_.size());
   const int n_s = static_cast<int>(linear_dofs_.size());
   use_blocks_ = settings.block_elimination && declared && n_a > 0 && n_s >= kMinLinearDofs;
-  // Every element on one DOF (a single isolator to the ground): the tangent is K_hat but for that
-  // diagonal entry.
-  if (declared && n_a == 1) single_element_dof_ = element_dofs_[0];
+  // Every element on one DOF (a single isolator to the ground) of a small symmetric model: the
+  // tangent is K_hat but for that diagonal entry, solved from K_hat's inverse (formed with the
+  // scratch factor below).
+  if (declared && n_a == 1 && !use_blocks_ && !use_lu_ && n <= SmallLlt::kMaxSize) {
+    single_element_dof_ = element_dofs_[0];
+    k_hat_factor_.setZero(n, n);
+  }
   // The error estimate takes the elements' stiffness products when all provide them (the
   // assembled tangent times e, to round-off): no n x n tangent to assemble after every step.
   stiffness_products_ = true;
@@ -193,17 +197,17 @@ void NewmarkStepper::fill_effective_linear(double h, EffectiveLinear& e) {
   e.k_hat += (4.0 / (h * h)) * model_.mass;
   e.k_hat_rows.assign(e.k_hat);
   e.blocks = false;
-  e.k_hat_factored = false;
-  const Eigen::Index n = e.k_hat.rows();
-  if (single_element_dof_ >= 0 && !use_blocks_ && !use_lu_ && n <= SmallLlt::kMaxSize) {
-    e.k_hat_factor = e.k_hat;
-    e.k_hat_factored = SmallLlt::factor(e.k_hat_factor, e.k_hat_inverse_pivots.data());
-    if (!e.k_hat_factored) return;
+  e.k_hat_inverted = false;
+  if (single_element_dof_ >= 0) {
+    const Eigen::Index n = e.k_hat.rows();
+    k_hat_factor_ = e.k_hat;
+    e.k_hat_inverted = SmallLlt::factor(k_hat_factor_, k_hat_inverse_pivots_.data());
+    if (!e.k_hat_inverted) return;
     e.k_hat_inverse.resize(n, n);  // sized once (reserve_step_sizes)
     for (Eigen::Index j = 0; j < n; ++j) {
       du_.setZero();
       du_[j] = 1.0;
-      SmallLlt::solve(e.k_hat_factor, e.k_hat_inverse_pivots.data(), du_);
+      SmallLlt::solve(k_hat_factor_, k_hat_inverse_pivots_.data(), du_);
       e.k_hat_inverse.col(j) = du_;
     }
     e.k_hat_inverse_rows.assign(e.k_hat_inverse);
@@ -260,8 +264,7 @@ void NewmarkStepper::reserve_step_sizes(int count) {
   for (EffectiveLinear* e = &k_hat_uncached_; count >= 0; --count) {
     e->k_hat.resize(n, n);
     e->k_hat_rows.reserve(n, n);
-    if (n <= SmallLlt::kMaxSize) {
-      e->k_hat_factor.resize(n, n);
+    if (single_element_dof_ >= 0) {
       e->k_hat_inverse.resize(n, n);
       e->k_hat_inverse_rows.reserve(n, n);
     }
@@ -313,7 +316,7 @@ void NewmarkStepper::solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::Mat
 
 template <int kSize>
 bool NewmarkStepper::solve_llt(const EffectiveLinear& linear) {
-  if (linear.k_hat_factored && single_element_dof_ >= 0) {
+  if (linear.k_hat_inverted) {
     // The elements added to one diagonal entry of K_hat alone.
     const int j = single_element_dof_;
     if (solve_diagonal_update(linear.k_hat_inverse_rows, linear.k_hat_inverse, j,

@@ -113,15 +113,13 @@ class NewmarkStepper {
     // The matrices the iterations multiply by (the same products, without the zeros).
     CompressedRows k_hat_rows, k_ss_inv_rows, k_as_rows, k_ss_inv_sa_rows;
     bool blocks = false;  // the block terms are set (else: the full factorisation)
-    // Small models whose elements all act on one DOF (a single isolator to the ground: every 2D
-    // isolated building without contacts): K_hat's inverse, from its Cholesky factor, when K_hat
-    // is positive definite (k_hat_factored). The tangent differs from K_hat in that DOF's
-    // diagonal entry alone and is solved from it by solve_diagonal_update, without a
-    // factorisation.
-    Eigen::MatrixXd k_hat_factor, k_hat_inverse;
-    CompressedRows k_hat_inverse_rows;
-    std::array<double, SmallLlt::kMaxSize> k_hat_inverse_pivots{};
-    bool k_hat_factored = false;
+    // Small models whose elements all act on one DOF (single_element_dof_: a single isolator to
+    // the ground, every 2D isolated building without contacts): K_hat's inverse, when K_hat is
+    // positive definite (k_hat_inverted). The tangent differs from K_hat in that DOF's diagonal
+    // entry alone and is solved from it by solve_diagonal_update, without a factorisation.
+    Eigen::MatrixXd k_hat_inverse;
+    CompressedRows k_hat_inverse_rows;  // the same matrix, for its product
+    bool k_hat_inverted = false;
   };
   const EffectiveLinear& effective_linear(double h, bool cache);
   // try_step for kSize DOFs (0: any number).
@@ -135,7 +133,7 @@ class NewmarkStepper {
   void solve_lu(Eigen::MatrixXd& a, Eigen::PartialPivLU<Eigen::MatrixXd>& eigen_lu,
                 const Eigen::VectorXd& b, Eigen::VectorXd& x);
   // du_ = k_tangent_^-1 r_: from K_hat's inverse when the elements act on one DOF
-  // (EffectiveLinear::k_hat_factored), else by Cholesky, SmallLlt up to its size (Eigen's LLT
+  // (EffectiveLinear::k_hat_inverted), else by Cholesky, SmallLlt up to its size (Eigen's LLT
   // factor, the solve by the pivots' reciprocals), llt_ beyond; false
   // (k_tangent_ unchanged) when not positive definite.
   template <int kSize>  // kSize > 0: the DOF count, known at compile time (0: any)
@@ -185,7 +183,10 @@ class NewmarkStepper {
   bool use_blocks_ = false;
   bool stiffness_products_ = false;  // error_norm from Element::add_stiffness_product
   std::vector<int> element_dofs_, linear_dofs_;
-  int single_element_dof_ = -1;                    // >= 0: every element acts on this DOF alone
+  // >= 0: every element acts on this DOF alone (a small symmetric model): see k_hat_inverted.
+  int single_element_dof_ = -1;
+  Eigen::MatrixXd k_hat_factor_;  // scratch: K_hat's Cholesky factor while its inverse is formed
+  std::array<double, SmallLlt::kMaxSize> k_hat_inverse_pivots_{};
   Eigen::MatrixXd k_elements_;                     // the elements' tangent (nonzero only on a x a)
   Eigen::MatrixXd schur_;                          // S0 + E
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;  // beyond SmallLu::kMaxSize

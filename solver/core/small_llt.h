@@ -1,7 +1,7 @@
 // Cholesky factorisation A = L L^T of a small symmetric positive definite matrix, and its solve,
-// for sizes up to 8: the stepper factors K_hat (4 x 4 for three storeys) every Newton iteration
-// of a nonlinear isolator, where Eigen's L1 norm, dispatch and product set-up cost more than the
-// arithmetic.
+// for sizes up to 8: the stepper factors a 2D model's tangent (4 x 4 for three storeys) every
+// Newton iteration of a nonlinear element, where Eigen's L1 norm, dispatch and product set-up
+// cost more than the arithmetic.
 //
 // The factor is Eigen's LLT (3.4, SSE2 packets of two doubles) to the bit, the same operations
 // in the same order. The solve is Eigen's but for one choice: it multiplies by the pivots'
