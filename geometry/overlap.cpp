@@ -121,6 +121,8 @@ void finish_overlap(const ConvexPolygon& a, const ConvexPolygon& b, Vec2 origin,
       if (length > 0.0) {
         out.t_AB = {chord.x / length, chord.y / length};
         out.n_AB = {out.t_AB.y + 0.0, -out.t_AB.x + 0.0};  // + 0.0: no negative zeros
+        out.chord_entry = entry;
+        out.chord_exit = exit;
         have_chord = true;
       }
     }
@@ -196,6 +198,7 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
       0.5 * (std::max(a.box_min().y, b.box_min().y) + std::min(a.box_max().y, b.box_max().y))};
 
   VertexArray<kMaxOverlapVertices> vertex_O;  // overlap vertices, shifted, unordered
+  OverlapVertexSource source[kMaxOverlapVertices];
   int count = 0;
   signed char id_a[kMax], id_b[kMax];  // overlap vertex at A's (B's) vertex, or −1
   signed char own_b[kMax];             // 1 when B's vertex j is not also one of A's vertices
@@ -205,6 +208,7 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
     id_a[i] = -1;
     if (inside) {
       id_a[i] = static_cast<signed char>(count);
+      source[count] = {OverlapVertexKind::kVertexOfA, static_cast<signed char>(i), -1};
       vertex_O[count++] = a[i] - origin;
     }
   }
@@ -226,6 +230,7 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
       if (count == kMaxOverlapVertices) return false;
       id_b[j] = static_cast<signed char>(count);
       own_b[j] = 1;
+      source[count] = {OverlapVertexKind::kVertexOfB, -1, static_cast<signed char>(j)};
       vertex_O[count++] = b[j] - origin;
     }
   }
@@ -257,6 +262,8 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
       }
       if (count == kMaxOverlapVertices) return false;
       const int id = count;
+      source[count] = {OverlapVertexKind::kCrossing, static_cast<signed char>(i),
+                       static_cast<signed char>(j)};
       vertex_O[count++] =
           crossing_point(a[i] - origin, a[i1] - origin, b[j] - origin, b[j1] - origin);
       // A's edge enters B where its start vertex is outside B's edge line; likewise for B.
@@ -325,6 +332,7 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
     for (int v = 0; k < count; ++k) {
       if (v < 0 || (k > 0 && v == 0)) return false;
       ordered[k] = vertex_O[v];
+      out.sources[k] = source[v];
       edge_on_a[k] = on_a[v];
       v = next[v];
       if (k == count - 1 && v != 0) return false;
@@ -350,6 +358,7 @@ bool overlap_fast(const ConvexPolygon& a, const ConvexPolygon& b, Overlap& out) 
   }
   finish_overlap(a, b, origin, std::span<const Vec2>(ordered.data(), count),
                  std::span<const bool>(edge_on_a, count), area, p_OC, out);
+  out.sources_known = count > 2;
   return true;
 }
 

@@ -25,6 +25,16 @@ enum class OverlapCase {
 };
 std::string_view to_string(OverlapCase c);  // "separated", "touching", "two_crossings", ...
 
+// Where a vertex of A ∩ B comes from: A's vertex `a`, B's vertex `b`, or the crossing of A's edge
+// a → a+1 with B's edge b → b+1 (indices into the polygons as given, −1 where unused). With the
+// sources a caller can follow the same vertices as the polygons move (a derivative of the overlap
+// with its topology held).
+enum class OverlapVertexKind : signed char { kVertexOfA, kVertexOfB, kCrossing };
+struct OverlapVertexSource {
+  OverlapVertexKind kind;
+  signed char a, b;
+};
+
 // The overlap A ∩ B as a plain value. Lengths in metres, plan frame W.
 struct Overlap {
   OverlapCase kind = OverlapCase::kSeparated;
@@ -54,6 +64,12 @@ struct Overlap {
   // Vertices of A ∩ B, counter-clockwise: vertex_count of them (0 separated, 1–2 touching).
   int vertex_count = 0;
   VertexArray<kMaxOverlapVertices> vertices;  // the first vertex_count are set
+  // kTwoCrossings: P1 and P2 are vertices[chord_entry] and vertices[chord_exit]; else −1.
+  int chord_entry = -1, chord_exit = -1;
+  // The fast path (overlap_of) only: each vertex's source, the first vertex_count (unset when
+  // sources_known is false: the exact path, a touching or separated pair).
+  bool sources_known = false;
+  std::array<OverlapVertexSource, kMaxOverlapVertices> sources;
 };
 
 // Overlap on the fast path: bounding-box rejection, then topology (which vertex is inside, which

@@ -317,12 +317,6 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   PeakBands displacement_peaks = bands_of(res.displacement);
   PeakBands velocity_peaks = bands_of(res.velocity);
   PeakBands acceleration_peaks = bands_of(res.absolute_acceleration);
-  PeakBands output_peaks([&] {
-    std::vector<Peak*> peaks;
-    for (auto& element : res.element_outputs)
-      for (Peak& peak : element) peaks.push_back(&peak);
-    return peaks;
-  }());
 
   // Energy terms (trapezoidal rule on the powers).
   Eigen::VectorXd work(n);
@@ -339,6 +333,33 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
   if (sink || step_sink) scope = RecordScope{};
   const bool shears = scope.story_shears || scope.base_shears;
   const bool absolute = scope.accelerations || shears || scope.probes;
+  // Element output peaks: every one, or the caller's subset (its values gathered from the
+  // scratch by their positions there).
+  std::vector<int> output_positions;
+  PeakBands output_peaks([&] {
+    std::vector<Peak*> peaks;
+    if (scope.element_output_subset.empty()) {
+      for (auto& element : res.element_outputs)
+        for (Peak& peak : element) peaks.push_back(&peak);
+      return peaks;
+    }
+    std::vector<std::pair<int, int>> subset = scope.element_output_subset;
+    std::sort(subset.begin(), subset.end());
+    subset.erase(std::unique(subset.begin(), subset.end()), subset.end());
+    std::vector<int> first(res.element_outputs.size() + 1, 0);
+    for (std::size_t e = 0; e < res.element_outputs.size(); ++e)
+      first[e + 1] = first[e] + static_cast<int>(res.element_outputs[e].size());
+    for (const auto& [e, k] : subset) {
+      if (e < 0 || e >= static_cast<int>(res.element_outputs.size()) || k < 0 ||
+          k >= static_cast<int>(res.element_outputs[e].size()))
+        throw std::logic_error("run_analysis: no element output " + std::to_string(e) + "." +
+                               std::to_string(k) + " to record");
+      output_positions.push_back(first[e] + k);
+      peaks.push_back(&res.element_outputs[e][k]);
+    }
+    return peaks;
+  }());
+  std::vector<double> subset_values(output_positions.size());
 
   // Storey and base shears of the committed state (work: the absolute accelerations).
   const auto record_shears = [&](double t) {
@@ -448,7 +469,13 @@ AnalysisResult run_analysis(Model& model, const GroundMotion& motion, const RunO
     if (scope.probes) probe_recorder.record(u.data(), work.data(), t, res.probes);
     if (scope.element_outputs) {
       stepper.batches().outputs(output_scratch.data());
-      output_peaks.record(output_scratch.data(), t);
+      if (output_positions.empty()) {
+        output_peaks.record(output_scratch.data(), t);
+      } else {
+        for (std::size_t k = 0; k < output_positions.size(); ++k)
+          subset_values[k] = output_scratch[output_positions[k]];
+        output_peaks.record(subset_values.data(), t);
+      }
     }
     if (scope.energy) record_energy(ag, h);
 

@@ -5,6 +5,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/core/analysis_config.h"
@@ -138,6 +139,9 @@ struct RecordScope {
   bool element_outputs = true;  // element_outputs
   bool probes = true;           // probes
   bool energy = true;           // energy
+  // With element_outputs: the (element, output) peaks to record; empty: every one. The others
+  // stay at zero.
+  std::vector<std::pair<int, int>> element_output_subset;
 };
 
 struct RunOptions {

@@ -139,10 +139,21 @@ ConvexPolygon PolygonContact::place(const PolygonBody& body, double u, double v,
 
 ConvexPolygon PolygonContact::placed(const PolygonBody& body, double u, double v,
                                      double theta) const {
-  Trig& t = trig_[&body == &a_ ? 0 : 1];
-  if (theta != t.theta || std::signbit(theta) != std::signbit(t.theta))
-    t = {theta, std::cos(theta), std::sin(theta)};
-  return body.shape.placed({u, v, theta}, body.p_WO, t.cos, t.sin);
+  const auto same = [](double a, double b) { return a == b && std::signbit(a) == std::signbit(b); };
+  const int index = &body == &a_ ? 0 : 1;
+  SharedPlacement* shared = shared_placement_[index].get();
+  if (shared && shared->valid && same(shared->u, u) && same(shared->v, v) &&
+      same(shared->theta, theta))
+    return shared->polygon;
+  Trig& t = trig_[index];
+  if (!same(theta, t.theta)) t = {theta, std::cos(theta), std::sin(theta)};
+  if (!shared) return body.shape.placed({u, v, theta}, body.p_WO, t.cos, t.sin);
+  shared->polygon = body.shape.placed({u, v, theta}, body.p_WO, t.cos, t.sin);
+  shared->valid = true;
+  shared->u = u;
+  shared->v = v;
+  shared->theta = theta;
+  return shared->polygon;
 }
 
 void PolygonContact::gather(const Eigen::VectorXd& x, Vec6& q) const {
@@ -163,6 +174,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.q = q;
   out.qdot = qdot;
   out.witness_valid = false;
+  out.differentiable = false;
   out.speed = -1.0;
   out.force.fill(0.0);
   out.area = out.indentation = out.width = 0.0;
@@ -195,7 +207,7 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   out.started = !freeze && !C.closed && overlapping;
   out.slipping = out.started ? false : C.slipping;
   if (!out.closed) return open();
-  bool at_surface = false;
+  bool at_surface = false, own_shape = overlapping;
   const double sliver = kSurfaceSliver * length_scale_;
   const double actual_area = ov.area;
   const double overlap_width = length(ov.p_WP2 - ov.p_WP1);
@@ -208,7 +220,10 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
     // continuous where the overlap reaches the sliver's depth too.)
     const double deeper_by = cfg_.continuous_force ? sliver - ov.area / overlap_width : sliver;
     const Overlap shape = overlap_at(pa, q, -deeper_by * ov.n_AB);
-    if (shape.area > 0.0) ov = shape;
+    if (shape.area > 0.0) {
+      ov = shape;
+      own_shape = false;
+    }
   }
   if (!overlapping) {
     // Frozen closed at the contact surface (a step cut to end at an onset or a separation ends
@@ -301,6 +316,17 @@ void PolygonContact::evaluate(const Vec6& q, const Vec6& qdot, bool freeze, Stat
   const Vec2 f_B = out.normal * ov.n_AB - out.tangential * ov.t_AB;  // on B
   // f_e is the restoring force (−the force on the body).
   out.force = {f_B.x, f_B.y, cross(r_A, f_B), -f_B.x, -f_B.y, -cross(r_B, f_B)};
+
+  // What differentiate() follows: the area law of this overlap's own two-crossings shape.
+  const bool strip = cfg_.strip_compression_W.x != 0.0 || cfg_.strip_compression_W.y != 0.0;
+  if (cfg_.analytic_tangent && own_shape && !law_ && !plan_pair_ && !strip && ov.sources_known &&
+      ov.kind == OverlapCase::kTwoCrossings && ov.chord_entry >= 0) {
+    out.differentiable = true;
+    out.topology_count = ov.vertex_count;
+    out.chord_entry = ov.chord_entry;
+    out.chord_exit = ov.chord_exit;
+    std::copy_n(ov.sources.begin(), ov.vertex_count, out.topology.begin());
+  }
 }
 
 void PolygonContact::compute_witness(State& s) const {
@@ -427,6 +453,33 @@ void PolygonContact::add_force(Eigen::VectorXd& f) const {
 // return map and clamps included (accurate to ~1e-8 relative away from their switches).
 void PolygonContact::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
   if (!trial_.closed) return;  // (closed at A_c = 0: the damping limit still has a tangent)
+  if (trial_.differentiable) {
+    // Column j: the derivative along (e_j, velocity_factor e_j), three DOFs at a time.
+    std::array<Vec6, 3> dq{}, dqdot{}, df{};
+    std::array<int, 3> column{};
+    int count = 0;
+    const auto flush = [&] {
+      for (int k = count; k < 3; ++k) dq[k].fill(0.0), dqdot[k].fill(0.0);
+      if (!differentiate<3>(dq, dqdot, df)) return false;
+      for (int k = 0; k < count; ++k)
+        for (int i = 0; i < kDofs; ++i)
+          if (dof_[i] >= 0) K(dof_[i], dof_[column[k]]) += df[k][i];
+      count = 0;
+      dq = {};
+      dqdot = {};
+      return true;
+    };
+    bool done = true;
+    for (int j = 0; j < kDofs && done; ++j) {
+      if (dof_[j] < 0) continue;
+      dq[count][j] = 1.0;
+      dqdot[count][j] = velocity_factor;
+      column[count++] = j;
+      if (count == 3) done = flush();
+    }
+    if (done && count > 0) done = flush();
+    if (done) return;
+  }
   const double eps_u = std::clamp(1e-3 * trial_.indentation, 1e-10, 1e-7);
   State plus, minus;
   for (int j = 0; j < kDofs; ++j) {
@@ -449,6 +502,16 @@ void PolygonContact::add_tangent(Eigen::MatrixXd& K, double velocity_factor) con
 // ε (a rotation scaled by the body size); y += (f(+) − f(−)) / (2s) on the element's DOFs.
 void PolygonContact::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   if (!trial_.closed) return;
+  if (trial_.differentiable) {
+    std::array<Vec6, 1> dq{}, dqdot{}, df{};
+    for (int j = 0; j < kDofs; ++j)
+      if (dof_[j] >= 0) dq[0][j] = x[dof_[j]];
+    if (differentiate<1>(dq, dqdot, df)) {
+      for (int i = 0; i < kDofs; ++i)
+        if (dof_[i] >= 0) y[dof_[i]] += df[0][i];
+      return;
+    }
+  }
   Vec6 dx{};
   double size = 0.0;
   for (int j = 0; j < kDofs; ++j) {

@@ -18,6 +18,16 @@
 
 namespace isopound {
 
+// The last placement of one body's outline, shared by the contacts of that body (a slab and its
+// four moat walls place the same slab at the same trial): computed by the first, copied by the
+// rest. Exactly what each would compute (a pure function of (u, v, θ)).
+struct SharedPlacement {
+  explicit SharedPlacement(const ConvexPolygon& outline) : polygon(outline) {}
+  bool valid = false;
+  double u = 0.0, v = 0.0, theta = 0.0;
+  ConvexPolygon polygon;
+};
+
 // One body of a polygon contact: a rigid diaphragm with DOFs (u, v, θ) taken at the point O, or
 // a fixed body (all three DOF indices −1), or any subset (a missing DOF stays at 0).
 struct PolygonBody {
@@ -75,6 +85,12 @@ struct PolygonContactConfig {
   // normal force pulse (kForcePulses: an onset of overlap, and a closed contact whose F_N was
   // clamped at 0 loading again while approaching), or overlap onsets only (kOnsets).
   ImpactCount impact_count = ImpactCount::kForcePulses;
+  // The Newton tangent and the error estimate's stiffness product (THEORY-notes, "3D contact
+  // tangent"): true, by forward-mode differentiation of the force law on the trial's branch,
+  // its overlap's topology held (exact to round-off), wherever the law is the area law of two
+  // convex outlines crossing at two points; elsewhere (and false) by central differences of
+  // the force law.
+  bool analytic_tangent = true;
   // Option: one of the ten 2D impact laws along the normal with δ_N as the penetration
   // (its k in N/m); null = the area law k_N A_c + c_N δ̇_N.
   std::shared_ptr<const ImpactLaw> normal_law;
@@ -112,6 +128,12 @@ class PolygonContact final : public Element {
   // size and bounding boxes); the DOFs and p_WO as the pair's.
   PolygonContact(std::string label, PolygonBody a, PolygonBody b, const PolygonContactConfig& cfg,
                  std::shared_ptr<PlanPair> pair, int slot);
+
+  // Body `body` (0: A, 1: B) shares its placements with the other contacts holding `shared`:
+  // they must have the same DOFs, p_WO and shape.
+  void share_placement(int body, std::shared_ptr<SharedPlacement> shared) {
+    shared_placement_[body] = std::move(shared);
+  }
 
   void begin_step(double h, bool freeze_status) override {
     h_ = h;
@@ -179,6 +201,9 @@ class PolygonContact final : public Element {
   // The trial state's status, approach rate δ̇_N (m/s, > 0 closing) and penetration depth (m,
   // −separation: continuous in the placement, 0 at touch; without the witness's rate).
   bool trial_closed() const { return trial_.closed; }
+  // Whether add_tangent and add_stiffness_product differentiate the trial's force law (the
+  // option analytic_tangent, at a two-crossings overlap of the area law), not difference it.
+  bool trial_tangent_analytic() const { return trial_.closed && trial_.differentiable; }
   double trial_approach_rate() const { return trial_.rate_n; }
   double trial_depth() const;
   // The friction status of the trials from now on: the return map's (kFree), or forced to stick
@@ -235,10 +260,23 @@ class PolygonContact final : public Element {
     bool witness_valid = false;
     mutable double speed = -1.0;  // speed_bound(qdot) once asked (speed_of), else < 0
     ImpactPhase phase;            // the normal law's memory of this contact (option normal_law)
+    // The force is the area law of this overlap itself (two crossings, no sliver's shape), whose
+    // vertices' sources (topology_count of them) let differentiate() follow it.
+    bool differentiable = false;
+    int topology_count = 0, chord_entry = -1, chord_exit = -1;
+    std::array<OverlapVertexSource, kMaxOverlapVertices> topology;
   };
 
   // The force law at (q, qdot) from the committed state; `out` gets everything but work.
   void evaluate(const Vec6& q, const Vec6& qdot, bool freeze, State& out) const;
+  // Directional derivatives of the trial's force f_e along N directions (dq_k, dqdot_k) of
+  // (q, qdot): df_k, by forward-mode differentiation of the force law on the trial's branch
+  // (stick or slip, clamp, triangle rule) with its overlap's topology held
+  // (polygon_contact_tangent.cpp). False, and nothing written, where the trial is not
+  // State::differentiable or the option is off.
+  template <int N>
+  bool differentiate(const std::array<Vec6, N>& dq, const std::array<Vec6, N>& dqdot,
+                     std::array<Vec6, N>& df) const;
   void gather(const Eigen::VectorXd& x, Vec6& q) const;
   // The body's outline placed by (u, v, θ); a fixed body (no DOF) stays where it is.
   ConvexPolygon place(const PolygonBody& body, double u, double v, double theta) const;
@@ -313,10 +351,11 @@ class PolygonContact final : public Element {
   struct Trig {
     double theta = 0.0, cos = 1.0, sin = 0.0;  // cos θ, sin θ as std::cos, std::sin give them
   };
-  mutable std::array<Trig, 2> trig_{};  // of a_ and b_
-  double contact_step_ = 1e300;         // s, the contact step from the current contact's onset
-  int steps_in_contact_ = 0;            // accepted steps since the current contact began
-  double rate_change_ = 0.0;  // bound of |δ̈| over the last accepted step (kinematic), m/s²
+  mutable std::array<Trig, 2> trig_{};                                // of a_ and b_
+  std::array<std::shared_ptr<SharedPlacement>, 2> shared_placement_;  // of a_ and b_, or null
+  double contact_step_ = 1e300;  // s, the contact step from the current contact's onset
+  int steps_in_contact_ = 0;     // accepted steps since the current contact began
+  double rate_change_ = 0.0;     // bound of |δ̈| over the last accepted step (kinematic), m/s²
   mutable bool approach_cached_ = false;  // approach_limit() of the committed state is known
   mutable double approach_limit_ = 1e300;
   Event pending_ = Event::kNone;

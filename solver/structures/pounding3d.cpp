@@ -561,6 +561,7 @@ void add_slab_bumper(Model& model, const ModelConfig& config, const SiteBody& ot
 void add_pounding3d(Model& model, const ModelConfig& config) {
   if (!config.contact3d.pounding) return;
   const std::vector<SiteBody> bodies = site_bodies(config);
+  std::vector<std::shared_ptr<SharedPlacement>> placements(bodies.size());
   for (const ContactPair3D& pair : contact_pairs3d(bodies, config.contact3d)) {
     const auto body = [&](const SiteBody& s) {
       return PolygonBody{find_dof(model, s.dof_label_u),
@@ -575,7 +576,16 @@ void add_pounding3d(Model& model, const ModelConfig& config) {
     const PolygonContactConfig law = pair_law(config, a.mass, b.mass);
     const int first = static_cast<int>(model.elements.size());
     if (a.convex() && b.convex()) {
-      model.elements.push_back(std::make_unique<PolygonContact>(pair.label, body(a), body(b), law));
+      auto contact = std::make_unique<PolygonContact>(pair.label, body(a), body(b), law);
+      // A moving body's placement is shared by its convex pairs (the same DOFs, O and outline).
+      for (const int side : {0, 1}) {
+        const int index = side == 0 ? pair.a : pair.b;
+        const PolygonBody p = body(bodies[index]);
+        if (p.dof_u < 0 && p.dof_v < 0 && p.dof_theta < 0) continue;
+        if (!placements[index]) placements[index] = std::make_shared<SharedPlacement>(p.shape);
+        contact->share_placement(side, placements[index]);
+      }
+      model.elements.push_back(std::move(contact));
     } else {
       // One contact per part of the overlap (plan_pair.h): slots "A|B", "A|B #2", ...
       const auto moves = [](const SiteBody& s) { return !s.dof_label_u.empty(); };

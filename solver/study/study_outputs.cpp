@@ -499,7 +499,7 @@ ResolvedOutput resolve_output(const OutputSelector& s, const Model& model) {
 RecordScope record_scope_of(const std::vector<ResolvedOutput>& outputs) {
   // The fields evaluate_output reads, branch by branch; displacements, drifts and the final
   // displacement are always recorded.
-  RecordScope scope{false, false, false, false, false, false, false};
+  RecordScope scope{false, false, false, false, false, false, false, {}};
   for (const ResolvedOutput& r : outputs) {
     switch (r.kind) {
       case OutputSelector::Kind::kEnergy:
@@ -517,12 +517,16 @@ RecordScope record_scope_of(const std::vector<ResolvedOutput>& outputs) {
           scope.accelerations = scope.accelerations || r.quantity == 2;
         } else if (r.quantity == kStoryHystereticEnergy) {
           scope.element_outputs = true;
+          for (const int link : r.story_links)
+            scope.element_output_subset.push_back({link, kStoryLinkEnergyOutput});
         } else {
           scope.story_shears = scope.story_shears || r.quantity == 2;
         }
         break;
       case OutputSelector::Kind::kElement:
         scope.element_outputs = true;
+        for (std::size_t j = 0; j < r.indices.size(); ++j)
+          scope.element_output_subset.push_back({r.indices[j], r.element_outputs[j]});
         break;
     }
   }
