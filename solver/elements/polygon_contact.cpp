@@ -1,5 +1,6 @@
 // 3D polygon contact element: overlap-area normal force with Kelvin–Voigt damping, tangential
-// spring with a Coulomb return map, Hermite-witness events, tangent by central differences.
+// spring with a Coulomb return map, Hermite-witness events; tangent by forward-mode
+// differentiation (polygon_contact_tangent.cpp) or, where that does not apply, central differences.
 #include "solver/elements/polygon_contact.h"
 
 #include <algorithm>
