@@ -448,10 +448,12 @@ void PolygonContact::add_force(Eigen::VectorXd& f) const {
     if (dof_[k] >= 0) f[dof_[k]] += trial_.force[k];
 }
 
-// Pseudocode: column j of df/du + velocity_factor df/dv is the central difference of the force
-// law along (u, v) ± ε (e_j, velocity_factor e_j), ε ~ 1e-3 δ_N within [1e-10, 1e-7] m (a
-// rotation scaled by the body size): the derivative of the discrete law actually applied,
-// return map and clamps included (accurate to ~1e-8 relative away from their switches).
+// Pseudocode: column j of df/du + velocity_factor df/dv is the derivative of the force law along
+// (e_j, velocity_factor e_j) on the trial's branch: by differentiate() (three columns a pass)
+// where the trial is State::differentiable; else the central difference along (u, v) ±
+// ε (e_j, velocity_factor e_j), ε ~ 1e-3 δ_N within [1e-10, 1e-7] m (a rotation scaled by the
+// body size), return map and clamps included (accurate to ~1e-8 relative away from switches).
+// differentiate() fails for a trial or succeeds for every column, so K never gets both.
 void PolygonContact::add_tangent(Eigen::MatrixXd& K, double velocity_factor) const {
   if (!trial_.closed) return;  // (closed at A_c = 0: the damping limit still has a tangent)
   if (trial_.differentiable) {
@@ -499,8 +501,9 @@ void PolygonContact::add_tangent(Eigen::MatrixXd& K, double velocity_factor) con
   }
 }
 
-// Pseudocode: the displacements move by ± s x, s such that the largest DOF moves by add_tangent's
-// ε (a rotation scaled by the body size); y += (f(+) − f(−)) / (2s) on the element's DOFs.
+// Pseudocode: where the trial is differentiable, y += df/du x by differentiate() along x. Else
+// the displacements move by ± s x, s such that the largest DOF moves by add_tangent's ε (a
+// rotation scaled by the body size); y += (f(+) − f(−)) / (2s) on the element's DOFs.
 void PolygonContact::add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   if (!trial_.closed) return;
   if (trial_.differentiable) {

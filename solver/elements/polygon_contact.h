@@ -154,9 +154,10 @@ class PolygonContact final : public Element {
     return true;
   }
   bool symmetric_tangent() const override { return false; }
-  // y += K x (stiffness, velocity factor 0) by one central difference along x: what add_tangent's
-  // columns give times x, to their truncation error, with 2 force evaluations instead of 2 per
-  // DOF (the stepper's error estimate).
+  // y += K x (stiffness, velocity factor 0), the stepper's error estimate: the derivative along
+  // x by differentiate() where add_tangent differentiates, else one central difference along x
+  // (2 force evaluations instead of 2 per DOF, equal to add_tangent's columns times x to their
+  // truncation error).
   bool has_stiffness_product() const override { return true; }
   void add_stiffness_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const override;
   double power(const Eigen::VectorXd& v) const override;
